@@ -1,0 +1,47 @@
+# Two commands do everything: `make report` and `make test` (README).
+# Both build .venv from the pinned versions in requirements.lock when it is missing.
+PYTHON ?= python3.11
+VENV   := .venv
+PY     := $(VENV)/bin/python
+STAMP  := $(VENV)/.installed
+
+export MPLBACKEND := Agg
+export PYTHONHASHSEED := 0
+
+.PHONY: all venv test test-fast report bench lab lint clean
+
+all: test
+
+venv: $(STAMP)
+
+$(STAMP): requirements.lock pyproject.toml
+	@command -v $(PYTHON) >/dev/null || { echo "need $(PYTHON) on PATH (or make PYTHON=/path/to/python3.11)"; exit 2; }
+	$(PYTHON) -m venv $(VENV)
+	$(PY) -m pip install --quiet --upgrade pip==25.2
+	$(PY) -m pip install --quiet -r requirements.lock
+	$(PY) -m pip install --quiet --no-deps --no-build-isolation -e .
+	$(PY) -m ipykernel install --sys-prefix --name python3 --display-name "Python 3 (analysis)" >/dev/null
+	@touch $(STAMP)
+
+# The whole suite: unit, property and cross-check tests, then every notebook under nbval.
+test: $(STAMP)
+	$(PY) -m pytest -n 2 tests
+	$(PY) -m pytest -n 2 --nbval --nbval-sanitize-with tests/nbval_sanitize.cfg notebooks
+
+test-fast: $(STAMP)
+	$(PY) -m pytest -n 2 -x tests
+
+report: $(STAMP)
+	$(PY) -m analysis report --out build/report
+
+bench: $(STAMP)
+	$(PY) benchmarks/run.py --out build/bench.json
+
+lab: $(STAMP)
+	$(VENV)/bin/jupyter lab notebooks
+
+lint: $(STAMP)
+	$(VENV)/bin/ruff check src tests benchmarks
+
+clean:
+	rm -rf build .pytest_cache .hypothesis
