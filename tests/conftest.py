@@ -1,0 +1,30 @@
+"""Shared test configuration: deterministic Hypothesis, headless matplotlib, seeded RNG."""
+
+import os
+
+os.environ.setdefault("MPLBACKEND", "Agg")
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, settings
+
+# Derandomized so CI results do not depend on the run; raise the example count locally
+# with HYPOTHESIS_PROFILE=thorough.
+settings.register_profile(
+    "ci", derandomize=True, max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow]
+)
+settings.register_profile("thorough", max_examples=5000, deadline=None)
+settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
+
+
+@pytest.fixture
+def rng() -> np.random.Generator:
+    """A seeded generator; every random test draws from it."""
+    return np.random.default_rng(20161)
+
+
+@pytest.fixture(scope="session")
+def arm():
+    from analysis.arm import paper_arm
+
+    return paper_arm()
