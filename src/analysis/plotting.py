@@ -50,8 +50,8 @@ def figure_dir() -> Path:
     return Path(env) if env else Path(__file__).resolve().parents[2] / "build" / "figures"
 
 
-def save_figure(fig: mpl.figure.Figure, stem: str) -> list[str]:
-    """Save ``fig`` as ``<stem>.svg`` and ``<stem>.png`` in :func:`figure_dir`.
+def save_figure(fig: mpl.figure.Figure, stem: str, folder: str | Path | None = None) -> list[str]:
+    """Save ``fig`` as ``<stem>.svg`` and ``<stem>.png`` in ``folder`` (default :func:`figure_dir`).
 
     ``stem`` starts with the notebook number (``"05-workspace-xz"``). Returns the file
     names (not absolute paths, so notebook outputs do not depend on the machine).
@@ -59,7 +59,7 @@ def save_figure(fig: mpl.figure.Figure, stem: str) -> list[str]:
     """
     if not stem[:2].isdigit():
         raise ValueError(f"figure stem {stem!r} must start with the notebook number, e.g. '05-workspace'")
-    out = figure_dir()
+    out = Path(folder) if folder is not None else figure_dir()
     out.mkdir(parents=True, exist_ok=True)
     names = []
     for ext, meta in (("svg", {"Date": None}), ("png", {"Software": None})):
