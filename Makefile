@@ -26,7 +26,7 @@ $(STAMP): requirements.lock pyproject.toml
 # The whole suite: unit, property and cross-check tests, then every notebook under nbval.
 test: $(STAMP)
 	$(PY) -m pytest -n 2 tests
-	$(PY) -m pytest -n 2 --nbval --nbval-sanitize-with tests/nbval_sanitize.cfg notebooks
+	$(PY) -m pytest -n 2 --dist loadfile --nbval --nbval-sanitize-with tests/nbval_sanitize.cfg notebooks
 
 test-fast: $(STAMP)
 	$(PY) -m pytest -n 2 -x tests

@@ -125,8 +125,10 @@ class IKSolutions(NamedTuple):
 
     @property
     def reachable(self) -> npt.NDArray[np.bool_]:
-        """Targets inside the reachable shell (base-axis targets included)."""
-        return self.outside_mm <= 0.0
+        """Targets inside the reachable shell within the tolerance ``solve`` used (base-axis
+        targets included): consistent with ``status`` and ``ok``. (``outside_mm <= 0``
+        would call a target 5e-7 mm outside "unreachable" although it is solved.)"""
+        return (self.status != Status.OUT_OF_REACH) & (self.status != Status.INSIDE_REACH)
 
     def branch(self, name: str) -> npt.NDArray[np.float64]:
         """Angles of one branch, shape (..., 3)."""
@@ -156,6 +158,11 @@ def _wrap(angle: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
     """Wrap to (-pi, pi]."""
     out = np.mod(angle + np.pi, 2.0 * np.pi) - np.pi
     return np.where(out == -np.pi, np.pi, out)
+
+
+def _mm(distance: float) -> str:
+    """3 decimals, or 3 significant digits below 1e-3 mm (never "0.000 mm beyond")."""
+    return f"{distance:.3f}" if abs(distance) >= 1e-3 else f"{distance:.3g}"
 
 
 def _fmt(p) -> str:
@@ -191,7 +198,7 @@ class Arm:
         --------
         Table 4 row 1, corrected angles (45, 10.21, -155.13) deg, lands on (100, 100, 600):
 
-        >>> paper_arm().fk(np.radians([45.0, 10.2051, -155.1303])).round(2).tolist()
+        >>> paper_arm().fk(np.radians([45.0, 10.2087, -155.1291])).round(2).tolist()
         [100.0, 100.0, 600.0]
         """
         q = np.asarray(q, dtype=float)
@@ -218,7 +225,8 @@ class Arm:
         """Positional Jacobian dP/dq [mm/rad], shape (..., 3, 3); column j is dP/dtheta_j.
 
         Derivative of eq. 2's P column. Singular on the base axis (r = 0) and with the
-        elbow stretched or folded (sin theta3 = 0): det J = L2 L3 sin(theta3) r.
+        elbow stretched or folded (sin theta3 = 0): det J = -L2 L3 sin(theta3) r
+        with r = L2 cos(theta2) + L3 cos(theta2 + theta3) (checked in sympy by the tests).
         """
         q = np.asarray(q, dtype=float)
         L2, L3 = self.params.L2, self.params.L3
@@ -278,6 +286,7 @@ class Arm:
         """
         names = _branch_names(branches)
         p = as_points(p)
+        _check_options(theta1_on_axis, tol)
         L1, L2, L3 = self.params.L1, self.params.L2, self.params.L3
         x, y = p[..., 0], p[..., 1]
         z = p[..., 2] - L1
@@ -288,7 +297,6 @@ class Arm:
             phi = np.where(on_axis, np.asarray(theta1_on_axis, dtype=float), phi)
         D = np.hypot(rho, z)
         outside = np.maximum(D - (L2 + L3), abs(L2 - L3) - D)
-        reachable = outside <= tol
         status = np.full(p.shape[:-1], Status.OK, dtype=np.int8)
         status[on_axis & (theta1_on_axis is None)] = Status.BASE_AXIS
         status[D - (L2 + L3) > tol] = Status.OUT_OF_REACH
@@ -377,19 +385,20 @@ class Arm:
     def check_target(self, p: npt.ArrayLike, *, tol: float = DEFAULT_TOL_MM, allow_axis: bool = False) -> None:
         """Raise :class:`UnreachableError` or :class:`BaseAxisError` for one bad target."""
         p = as_points(p)
+        _check_options(None, tol)
         P = self.params
         D = float(np.linalg.norm(p - self.shoulder))
         sh = _fmt(self.shoulder)
         if D - P.reach_outer > tol:
             raise UnreachableError(
-                f"target {_fmt(p)} mm is {D - P.reach_outer:.3f} mm beyond the reach of "
+                f"target {_fmt(p)} mm is {_mm(D - P.reach_outer)} mm beyond the reach of "
                 f"{P.reach_outer:g} mm (L2 + L3) around the shoulder at {sh} mm "
                 f"(it is {D:.3f} mm away)",
                 p, D - P.reach_outer, P.reach_outer,
             )
         if P.reach_inner - D > tol:
             raise UnreachableError(
-                f"target {_fmt(p)} mm is {P.reach_inner - D:.3f} mm inside the inner reach "
+                f"target {_fmt(p)} mm is {_mm(P.reach_inner - D)} mm inside the inner reach "
                 f"radius of {P.reach_inner:g} mm (|L2 - L3|) around the shoulder at {sh} mm "
                 f"(it is {D:.3f} mm away)",
                 p, P.reach_inner - D, P.reach_inner,
@@ -402,6 +411,16 @@ class Arm:
                 f"(CLI: --theta1-on-axis DEG)",
                 p,
             )
+
+
+def _check_options(theta1_on_axis, tol) -> None:
+    """Reject options that would otherwise turn into silent NaN or wrong statuses."""
+    if not (isinstance(tol, (int, float, np.floating, np.integer)) and np.isfinite(tol) and tol >= 0):
+        raise ValueError(f"tol = {tol!r} mm: the tolerance must be a finite number >= 0 mm")
+    if theta1_on_axis is not None:
+        t = np.asarray(theta1_on_axis, dtype=float)
+        if not np.isfinite(t).all():
+            raise ValueError(f"theta1_on_axis = {theta1_on_axis!r} rad is not finite")
 
 
 def _branch_names(branches: str | Sequence[str]) -> tuple[str, ...]:

@@ -7,6 +7,7 @@ No link length is written anywhere else in the code: :func:`load_table3` reads
 from __future__ import annotations
 
 import math
+import numbers
 import os
 from dataclasses import dataclass
 from pathlib import Path
@@ -56,15 +57,21 @@ class ArmParams:
     def __post_init__(self) -> None:
         for name in ("L1", "L2", "L3"):
             value = getattr(self, name)
-            if not isinstance(value, (int, float)) or not math.isfinite(value):
+            # numbers.Real admits NumPy scalars (pandas/NumPy reads); bool is not a length
+            if not _is_real(value) or not math.isfinite(value):
                 raise ValueError(f"{name} = {value!r} mm is not a finite number")
+            object.__setattr__(self, name, float(value))
         if self.L1 < 0:
             raise ValueError(f"L1 = {self.L1} mm is negative; the waist height must be >= 0 mm")
         for name in ("L2", "L3"):
             if getattr(self, name) <= 0:
                 raise ValueError(f"{name} = {getattr(self, name)} mm: link lengths must be > 0 mm")
-        ppr = tuple(self.pulses_per_rev)
-        if len(ppr) != 3 or any(int(p) != p or p <= 0 for p in ppr):
+        ppr = self.pulses_per_rev
+        if hasattr(ppr, "tolist"):  # a NumPy array or scalar
+            ppr = ppr.tolist()
+        if isinstance(ppr, (list, tuple)):
+            ppr = tuple(ppr)
+        if not isinstance(ppr, tuple) or len(ppr) != 3 or not all(_is_positive_whole(p) for p in ppr):
             raise ValueError(f"pulses_per_rev = {ppr!r}: need three positive whole numbers")
         object.__setattr__(self, "pulses_per_rev", tuple(int(p) for p in ppr))
 
@@ -105,6 +112,14 @@ class ArmParams:
         return ArmParams(**{**self.__dict__, **changes})
 
 
+def _is_real(value) -> bool:
+    return isinstance(value, numbers.Real) and not isinstance(value, bool)
+
+
+def _is_positive_whole(p) -> bool:
+    return _is_real(p) and math.isfinite(p) and p > 0 and int(p) == p
+
+
 def load_table3(path: str | Path | None = None) -> ArmParams:
     """Read ``data/table3.csv`` (the paper's Table 3 verbatim plus pulses per rev).
 
@@ -114,7 +129,8 @@ def load_table3(path: str | Path | None = None) -> ArmParams:
     """
     path = Path(path) if path is not None else data_dir() / "table3.csv"
     df = pd.read_csv(path)
-    need = ["link", "alpha_deg", "a_mm", "d_mm", "cos_alpha", "sin_alpha", "pulses_per_rev"]
+    need = ["link", "alpha_deg", "a_mm", "d_mm", "cos_alpha", "sin_alpha", "pulses_per_rev",
+            "step_angle_deg", "resolution_deg"]
     missing = [c for c in need if c not in df.columns]
     if missing:
         raise ValueError(f"{path}: missing column(s) {', '.join(missing)}")

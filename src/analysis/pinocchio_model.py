@@ -96,9 +96,16 @@ class PinocchioArm:
         pin.framesForwardKinematics(self.model, self.data, q)
         return self.data.oMf[self.tool_id].homogeneous.copy()
 
+    def _check(self, q: npt.ArrayLike) -> npt.NDArray[np.float64]:
+        q = np.asarray(q, dtype=float)
+        if q.ndim == 0 or q.shape[-1] != self.model.nq:
+            nq = self.model.nq
+            raise ValueError(f"configurations have shape {q.shape}; expected (..., {nq})")
+        return q
+
     def fk(self, q: npt.ArrayLike) -> npt.NDArray[np.float64]:
         """Tool positions [mm] for configurations (..., n): a Python loop over points."""
-        q = np.asarray(q, dtype=float)
+        q = self._check(q)
         flat = q.reshape(-1, self.model.nq)
         out = np.empty((flat.shape[0], 3))
         for k, qk in enumerate(flat):
@@ -108,7 +115,7 @@ class PinocchioArm:
 
     def jacobian(self, q: npt.ArrayLike) -> npt.NDArray[np.float64]:
         """Positional Jacobian of the tool point [mm/rad], world-aligned, (..., 3, n)."""
-        q = np.asarray(q, dtype=float)
+        q = self._check(q)
         flat = q.reshape(-1, self.model.nq)
         out = np.empty((flat.shape[0], 3, self.model.nv))
         for k, qk in enumerate(flat):

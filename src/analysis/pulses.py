@@ -21,7 +21,10 @@ Rounding = Literal["half-away", "half-even"]
 def round_half_away(x: npt.ArrayLike) -> npt.NDArray[np.float64]:
     """Round to nearest, ties away from zero (S7-200 ROUND on positive halves)."""
     x = np.asarray(x, dtype=float)
-    return np.copysign(np.floor(np.abs(x) + 0.5), x)
+    # trunc + exact fractional part: floor(|x| + 0.5) would round 0.49999999999999994 up,
+    # because |x| + 0.5 rounds to 1.0 in float64 before the floor.
+    whole = np.trunc(x)
+    return whole + np.where(np.abs(x - whole) >= 0.5, np.sign(x), 0.0)
 
 
 def angles_to_pulses(
@@ -45,15 +48,13 @@ def angles_to_pulses(
     --------
     Table 4 row 1, front-up (45, 10.21, -155.13) deg -> (500, 113, -1724) pulses:
 
-    >>> angles_to_pulses(np.radians([45.0, 10.2051, -155.1303])).tolist()
+    >>> angles_to_pulses(np.radians([45.0, 10.2087, -155.1291])).tolist()
     [500, 113, -1724]
     """
     theta = np.asarray(theta, dtype=float)
     if not np.isfinite(theta).all():
         raise ValueError("joint angles contain NaN or inf; only solved angles convert to pulses")
-    ppr = np.asarray(pulses_per_rev, dtype=float)
-    if (ppr <= 0).any():
-        raise ValueError(f"pulses_per_rev = {pulses_per_rev!r} must be positive")
+    ppr = _check_ppr(pulses_per_rev)
     exact = np.degrees(theta) / 360.0 * ppr
     if rounding == "half-away":
         return round_half_away(exact).astype(np.int64)
@@ -64,4 +65,14 @@ def angles_to_pulses(
 
 def pulses_to_angles(c: npt.ArrayLike, pulses_per_rev: npt.ArrayLike = 4000) -> npt.NDArray[np.float64]:
     """Joint angles [rad] commanded by whole pulse counts (inverse of eqs. 20-22)."""
-    return np.radians(np.asarray(c, dtype=float) * 360.0 / np.asarray(pulses_per_rev, dtype=float))
+    c = np.asarray(c, dtype=float)
+    if not np.isfinite(c).all():
+        raise ValueError("pulse counts contain NaN or inf")
+    return np.radians(c * 360.0 / _check_ppr(pulses_per_rev))
+
+
+def _check_ppr(pulses_per_rev: npt.ArrayLike) -> npt.NDArray[np.float64]:
+    ppr = np.asarray(pulses_per_rev, dtype=float)
+    if not (np.isfinite(ppr) & (ppr > 0)).all():
+        raise ValueError(f"pulses_per_rev = {pulses_per_rev!r} must be finite and positive")
+    return ppr
