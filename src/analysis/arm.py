@@ -308,7 +308,7 @@ class Arm:
         # broadcast targets (..., 1) against branches (B,)
         r = rsign * rho[..., None]
         t1 = _wrap(phi[..., None] + np.where(rsign > 0, 0.0, np.pi))
-        t3 = -usign * rsign * t3_mag[..., None]
+        t3 = _wrap(-usign * rsign * t3_mag[..., None])  # folded elbow: -pi -> pi
         zb = z[..., None]
         k = L2 * np.cos(t3) + L3
         s = L2 * np.sin(t3)
