@@ -175,7 +175,7 @@ def _solve_kernel(p, L1, L2, L3, tol, theta, ok, status, outside):  # pragma: no
         t1f = _wrap_scalar(phi) if good else nan
         t1b = _wrap_scalar(phi + math.pi) if good else nan
         pos = t3m if good else nan
-        neg = -t3m if good else nan
+        neg = _wrap_scalar(-t3m) if good else nan  # folded elbow: -pi -> pi, as Arm.solve
         theta[i, 0, 0] = t1f
         theta[i, 0, 1] = _wrap_scalar(t23u + t3m) if good else nan  # eq. 19
         theta[i, 0, 2] = neg
@@ -232,7 +232,7 @@ def _quant_kernel(p, L1, L2, L3, ppr, tol, pulses, err, ok):  # pragma: no cover
         ok[i] = good
         phi = _atan2(yi, xi)
         c3 = min(max((D * D - L2 * L2 - L3 * L3) / (2.0 * L2 * L3), -1.0), 1.0)
-        t3 = -_acos(c3)
+        t3 = _wrap_scalar(-_acos(c3))  # folded elbow: -pi -> pi, as Arm.solve
         k = L2 * c3 + L3
         s0 = L2 * math.sqrt((1.0 - c3) * (1.0 + c3))
         t23 = _atan2(z * k - rho * s0, rho * k + z * s0)
