@@ -162,3 +162,9 @@ def test_bad_params_file_exit_2(tmp_path, capsys):
 def test_every_command_has_help(capsys, command):
     code, out, _ = run(capsys, command, "--help")
     assert code == 0 and "usage:" in out
+
+
+def test_errata_subcommand_passes_options_through(capsys):
+    """`python -m analysis errata --check`: the committed register matches the audit."""
+    code, out, _ = run(capsys, "errata", "--check")
+    assert code == 0 and "up to date" in out

@@ -213,6 +213,10 @@ def build_parser() -> argparse.ArgumentParser:
     if _add_stl is not None:
         _add_stl(sub)
 
+    p = sub.add_parser("errata", add_help=False,
+                       help="the errata register: --check, --write, --write-readme (see errata --help)")
+    p.set_defaults(func=None)  # dispatched in main() before parsing
+
     p = sub.add_parser("report", help="execute every notebook, export figures and build/report/index.html")
     p.add_argument("--out", type=Path, default=Path("build/report"), help="output folder (default build/report)")
     p.add_argument("--notebooks", nargs="*", type=Path, help="only these notebooks (default: all in notebooks/)")
@@ -221,6 +225,11 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
+    argv = list(sys.argv[1:] if argv is None else argv)
+    if argv[:1] == ["errata"]:  # its options belong to analysis.errata, passed through whole
+        from . import errata
+
+        return errata.main(argv[1:])
     parser = build_parser()
     args = parser.parse_args(argv)
     try:

@@ -1,0 +1,166 @@
+"""Execute generated AWL on awlsim (PyPI ``awlsim``, GPL-2.0-or-later, used as a tool).
+
+One program load, then one OB1 cycle per target: write Px, Py, Pz into the input
+addresses, ``runCycle()``, read c1..c3 and the reach flag back (stl_reference.md 2.3).
+The M area (2048 bytes by default) is read and written directly, big-endian.
+
+awlsim evaluates REAL operations in Python doubles and rounds every accumulator store to
+float32, like a CPU's REAL arithmetic. RND rounds ties to even (S7-300), the S7-200 ROUND
+halves away from zero: a float32 value of exactly k + 0.5 is the only place they differ.
+"""
+
+from __future__ import annotations
+
+import struct
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+
+from .memmap import MemoryMap
+
+__all__ = ["AwlRunner", "RunResult", "run_targets"]
+
+
+def _awlsim():
+    """Import awlsim lazily (it is a test/verification dependency); clear error if missing."""
+    try:
+        # awlsim's modules must be imported in this order (common, core, compiler), as
+        # its own awlsim-test does; a different order leaves names undefined in core.cpu
+        import awlsim_loader.common  # noqa: I001
+        import awlsim_loader.core
+        import awlsim_loader.awlcompiler  # noqa: F401
+        from awlsim.awlcompiler import AwlParser
+        from awlsim.common.cpuconfig import S7CPUConfig
+        from awlsim.common.sources import AwlSource
+        from awlsim.core.main import AwlSim
+    except ImportError as exc:  # pragma: no cover - depends on the environment
+        raise ImportError(
+            "awlsim is needed to execute PLC code: pip install awlsim==0.77.1"
+        ) from exc
+    return AwlParser, S7CPUConfig, AwlSource, AwlSim
+
+
+@dataclass(frozen=True)
+class RunResult:
+    """Pulses read back from the PLC for N targets.
+
+    Attributes
+    ----------
+    pulses : ndarray of int64, shape (N, 3)
+        c1, c2, c3 after the cycle (unchanged from before the cycle if not reachable).
+    reachable : ndarray of bool, shape (N,)
+    reals : ndarray, shape (N, K), optional
+        REAL work values read after each cycle (e.g. the unrounded pulse values).
+    """
+
+    pulses: npt.NDArray[np.int64]
+    reachable: npt.NDArray[np.bool_]
+    reals: npt.NDArray[np.float64] | None = None
+
+
+class AwlRunner:
+    """A loaded awlsim CPU running one AWL program.
+
+    Parameters
+    ----------
+    source : str
+        Complete AWL source (OBs, FCs).
+    mmap : MemoryMap
+        Where the inputs/outputs are (byte offsets; V or M notation both map to M).
+    first_scan : bool
+        Run one OB1 cycle right after loading (the first scan), so that the first
+        :meth:`solve` target is not overwritten by first-scan initialisation.
+    """
+
+    def __init__(
+        self, source: str, mmap: MemoryMap, name: str = "program", *, first_scan: bool = True
+    ) -> None:
+        AwlParser, S7CPUConfig, AwlSource, AwlSim = _awlsim()
+        self.mmap = mmap
+        self.sim = AwlSim()
+        cpu = self.sim.getCPU()
+        cpu.getConf().setConfiguredMnemonics(S7CPUConfig.MNEMONICS_EN)
+        parser = AwlParser()
+        parser.parseSource(AwlSource.fromBytes(name, source.encode("utf-8")))
+        self.sim.reset()
+        self.sim.load(parser.getParseTree())
+        self.sim.build()
+        self.sim.startup()
+        self.mem = cpu.flags.getDataBytes()
+        if first_scan:
+            self.cycle()  # the first scan (SM0.1 / OB100 networks) runs before any test input
+
+    # --- memory access ------------------------------------------------------------------
+    def write_real(self, byte: int, value: float) -> None:
+        self.mem[byte : byte + 4] = struct.pack(">f", value)
+
+    def read_real(self, byte: int) -> float:
+        return struct.unpack(">f", bytes(self.mem[byte : byte + 4]))[0]
+
+    def write_dint(self, byte: int, value: int) -> None:
+        self.mem[byte : byte + 4] = struct.pack(">i", value)
+
+    def read_dint(self, byte: int) -> int:
+        return struct.unpack(">i", bytes(self.mem[byte : byte + 4]))[0]
+
+    def read_bit(self, byte: int, bit: int) -> bool:
+        return bool(self.mem[byte] >> bit & 1)
+
+    def write_bit(self, byte: int, bit: int, value: bool) -> None:
+        if value:
+            self.mem[byte] |= 1 << bit
+        else:
+            self.mem[byte] &= ~(1 << bit) & 0xFF
+
+    def cycle(self) -> None:
+        self.sim.runCycle()
+
+    @property
+    def stopped(self) -> bool:
+        """True once translated S7-200 code hit a NaN in a REAL compare (CPU STOP)."""
+        from .translate import STOP_BIT
+
+        return self.read_bit(*STOP_BIT)
+
+    # --- one target per cycle -------------------------------------------------------------
+    def solve(
+        self, targets: npt.ArrayLike, sentinel: int | None = None, reals: tuple[int, ...] = ()
+    ) -> RunResult:
+        """Run one OB1 cycle per target and read the pulses back.
+
+        Parameters
+        ----------
+        targets : array_like, shape (N, 3)
+            Px, Py, Pz [mm]; written as float32 REALs (NaN/inf allowed: the program
+            must reject them).
+        sentinel : int, optional
+            Written to c1..c3 before each cycle, so that "unchanged" is observable.
+        reals : tuple of int
+            Byte offsets of REAL double words to read after each cycle.
+        """
+        t = np.asarray(targets, dtype=float).reshape(-1, 3)
+        ins = [self.mmap.inputs[k] for k in ("px", "py", "pz")]
+        outs = [self.mmap.outputs[k] for k in ("c1", "c2", "c3")]
+        rbyte, rbit = self.mmap.outputs["reachable"]
+        pulses = np.zeros((len(t), 3), dtype=np.int64)
+        ok = np.zeros(len(t), dtype=bool)
+        extra = np.full((len(t), len(reals)), np.nan)
+        for n, p in enumerate(t):  # one PLC scan per target: this loop IS the test harness
+            for b, v in zip(ins, p, strict=True):
+                self.write_real(b, float(v))
+            if sentinel is not None:
+                for b in outs:
+                    self.write_dint(b, sentinel)
+            self.cycle()
+            pulses[n] = [self.read_dint(b) for b in outs]
+            ok[n] = self.read_bit(rbyte, rbit)
+            extra[n] = [self.read_real(b) for b in reals]
+        return RunResult(pulses, ok, extra if reals else None)
+
+
+def run_targets(
+    source: str, mmap: MemoryMap, targets: npt.ArrayLike, sentinel: int | None = None
+) -> RunResult:
+    """Load ``source`` once and solve ``targets`` (see :meth:`AwlRunner.solve`)."""
+    return AwlRunner(source, mmap).solve(targets, sentinel=sentinel)

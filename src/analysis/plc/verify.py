@@ -1,0 +1,252 @@
+"""Targets and comparison for executing the generated PLC programs against Python.
+
+The Python reference is :meth:`analysis.arm.Arm.solve` (float64) followed by
+:func:`analysis.pulses.angles_to_pulses` with the dialect's tie rule; on the base axis
+both use theta1 = 0. A PLC pulse count may differ from the reference only where the
+exact (float64) pulse value lies so close to a half pulse that float32 arithmetic lands
+on the other side; :func:`compare` counts those cases and reports how close they were.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+import pandas as pd
+
+from ..arm import Arm
+from ..params import data_dir
+from ..pulses import angles_to_pulses
+from .runner import RunResult
+
+__all__ = [
+    "Comparison",
+    "compare",
+    "half_pulse_targets",
+    "pulse_value_bytes",
+    "reference_pulses",
+    "sweep_targets",
+    "table4_targets",
+]
+
+
+def table4_targets() -> npt.NDArray[np.float64]:
+    """The ten Table 4 targets (x, y, z) [mm], shape (10, 3)."""
+    t4 = pd.read_csv(data_dir() / "table4.csv")
+    return t4[["x_mm", "y_mm", "z_mm"]].to_numpy(dtype=float)
+
+
+def half_pulse_targets(arm: Arm, n: int, rng: np.random.Generator) -> npt.NDArray[np.float64]:
+    """Targets whose front-up pulse value for one joint lies within 1e-3 pulse of k + 1/2.
+
+    Joint angles are drawn in the front-up range (theta3 < 0), one joint (cycling
+    c1, c2, c3) is moved to ``(k + 1/2 + delta) * 360 / ppr`` deg with |delta| in
+    [1e-7, 1e-3] pulse, and the target is its forward kinematics. These are the targets
+    where float32 PLC arithmetic can legitimately round the other way.
+    """
+    ppr = np.asarray(arm.params.pulses_per_rev, dtype=float)
+    q = np.stack(
+        [rng.uniform(-np.pi, np.pi, n), rng.uniform(-1.2, 1.2, n), rng.uniform(-2.8, -0.3, n)],
+        axis=1,
+    )
+    j = np.arange(n) % 3
+    c = q[np.arange(n), j] / (2 * np.pi) * ppr[j]
+    delta = rng.choice([-1.0, 1.0], n) * 10.0 ** rng.uniform(-7, -3, n)
+    q[np.arange(n), j] = (np.floor(c) + 0.5 + delta) * 2 * np.pi / ppr[j]
+    return arm.fk(q)
+
+
+def sweep_targets(
+    arm: Arm, n_random: int = 700, seed: int = 20160501, n_half: int = 150
+) -> pd.DataFrame:
+    """Test targets across the workspace, labelled by kind.
+
+    Kinds: ``table4`` (10), ``random`` (uniform in a box around the reach shell, about
+    half reachable), ``outer-1mm``/``inner-1mm`` (within 1 mm of the outer/inner reach
+    sphere, both sides, distances 1e-3 .. 1 mm), ``axis`` (0 to 1 mm from the base
+    axis, including exactly on it), ``half-pulse`` (:func:`half_pulse_targets`),
+    ``bad`` (NaN/inf coordinates), ``huge`` (finite, squares overflow float32).
+
+    Returns
+    -------
+    DataFrame
+        Columns ``kind, x_mm, y_mm, z_mm``.
+    """
+    rng = np.random.default_rng(seed)
+    P = arm.params
+    sh = arm.shoulder
+    R = P.reach_outer
+    parts = [("table4", table4_targets())]
+    box = rng.uniform(-1.1 * R, 1.1 * R, size=(n_random, 3)) + sh
+    parts.append(("random", box))
+
+    def sphere_pts(radius_fn, n):
+        d = rng.normal(size=(n, 3))
+        d /= np.linalg.norm(d, axis=1, keepdims=True)
+        off = rng.choice([-1.0, 1.0], n) * 10.0 ** rng.uniform(-3, 0, n)
+        return sh + d * radius_fn(off)[:, None]
+
+    parts.append(("outer-1mm", sphere_pts(lambda off: R + off, 120)))
+    parts.append(("inner-1mm", sphere_pts(lambda off: P.reach_inner + off, 80)))
+    n_ax = 100
+    rho = np.concatenate([[0.0] * 5, 10.0 ** rng.uniform(-3, 0, n_ax - 5)])
+    phi = rng.uniform(-np.pi, np.pi, n_ax)
+    zr = rng.uniform(-(R - 1), R - 1, n_ax)
+    zr = np.where(np.abs(zr) < P.reach_inner + 1, np.sign(zr + 1e-9) * (P.reach_inner + 1), zr)
+    axis = np.stack([rho * np.cos(phi), rho * np.sin(phi), P.L1 + zr], axis=1)
+    parts.append(("axis", axis))
+    parts.append(("half-pulse", half_pulse_targets(arm, n_half, rng)))
+    bad = np.array([[np.nan, 100, 600], [100, np.inf, 600], [100, 100, -np.inf]])
+    parts.append(("bad", bad))
+    # finite but huge: squares overflow float32 unless the program checks the box first
+    parts.append(
+        ("huge", np.array([[1e20, -1e20, 960.0], [3e38, 0.0, 660.0], [-1e30, 1e30, -1e30]]))
+    )
+    rows = [pd.DataFrame(p, columns=["x_mm", "y_mm", "z_mm"]).assign(kind=k) for k, p in parts]
+    df = pd.concat(rows, ignore_index=True)
+    return df[["kind", "x_mm", "y_mm", "z_mm"]]
+
+
+def reference_pulses(
+    arm: Arm, targets: npt.ArrayLike, branch: str = "front-up", rounding: str = "half-away"
+) -> tuple[npt.NDArray, npt.NDArray, npt.NDArray]:
+    """Python pulses for targets (N, 3) given as float32 REALs, as the PLC sees them.
+
+    Returns
+    -------
+    pulses : ndarray of int64, shape (N, 3)   (0 where not reachable)
+    ok : ndarray of bool, shape (N,)
+    exact : ndarray, shape (N, 3)
+        Unrounded pulse values theta_deg / 360 * ppr (NaN where not reachable).
+    """
+    t = np.asarray(targets, dtype=float)
+    t32 = t.astype(np.float32).astype(float)  # the PLC stores the target as REAL
+    finite = np.isfinite(t32).all(axis=1)
+    safe = np.where(finite[:, None], t32, 0.0)
+    sol = arm.solve(safe, [branch], theta1_on_axis=0.0)
+    ok = sol.ok[:, 0] & finite
+    theta = np.where(ok[:, None], sol.theta[:, 0, :], 0.0)
+    ppr = np.asarray(arm.params.pulses_per_rev, dtype=float)
+    exact = np.where(ok[:, None], np.degrees(theta) / 360.0 * ppr, np.nan)
+    pulses = np.where(ok[:, None], angles_to_pulses(theta, ppr, rounding=rounding), 0)
+    return pulses, ok, exact
+
+
+@dataclass(frozen=True)
+class Comparison:
+    """PLC vs Python over N targets."""
+
+    n: int
+    n_reachable: int
+    flag_mismatch: int
+    unchanged_ok: bool
+    pulse_mismatch: int
+    max_abs_diff: int
+    mismatch_table: pd.DataFrame
+    max_real_error: float = float("nan")
+    all_explained: bool | None = None
+
+    @property
+    def float32_ties(self) -> int | None:
+        """Mismatches where the PLC's float32 value is exactly k + 1/2 (the tie rule decides)."""
+        t = self.mismatch_table
+        if t["plc_real"].isna().all():
+            return None
+        return int((t["plc_real"] - (np.minimum(t["python"], t["plc"]) + 0.5) == 0).sum())
+
+    def summary(self) -> dict:
+        return {
+            "targets": self.n,
+            "reachable": self.n_reachable,
+            "reach-flag mismatches": self.flag_mismatch,
+            "outputs unchanged when unreachable": self.unchanged_ok,
+            "pulse mismatches": self.pulse_mismatch,
+            "max |PLC - Python| [pulses]": self.max_abs_diff,
+            "max |float32 - exact| before ROUND [pulses]": self.max_real_error,
+            "mismatches all straddle a half pulse": self.all_explained,
+            "of which float32 value exactly k + 1/2": self.float32_ties,
+        }
+
+
+def compare(
+    result: RunResult,
+    targets: pd.DataFrame,
+    arm: Arm,
+    branch: str = "front-up",
+    rounding: str = "half-away",
+    sentinel: int = -999_999,
+) -> Comparison:
+    """Compare PLC results (run with ``sentinel`` in the outputs) with the Python reference.
+
+    The mismatch table lists each differing joint value with the exact pulse value and
+    its distance to the nearest half pulse (``dist_half``), the quantity that explains why
+    float32 and float64 round to different integers. If ``result.reals`` holds the PLC's
+    unrounded pulse values (the REALs fed to ROUND, see :func:`pulse_value_bytes`), the
+    table also gives them (``plc_real``), and ``all_explained`` says whether every mismatch
+    is a straddle: the float32 value and the exact value lie on opposite sides of the
+    same half pulse.
+    """
+    xyz = targets[["x_mm", "y_mm", "z_mm"]].to_numpy(dtype=float)
+    ref, ok, exact = reference_pulses(arm, xyz, branch, rounding)
+    flag_mm = int((result.reachable != ok).sum())
+    unchanged = bool((result.pulses[~result.reachable] == sentinel).all())
+    both = ok & result.reachable
+    diff = np.where(both[:, None], result.pulses - ref, 0)
+    rows = []
+    for i, j in zip(*np.nonzero(diff), strict=True):
+        x = exact[i, j]
+        rows.append(
+            {
+                "kind": targets["kind"].iloc[i],
+                "x_mm": xyz[i, 0],
+                "y_mm": xyz[i, 1],
+                "z_mm": xyz[i, 2],
+                "joint": f"c{j + 1}",
+                "python": int(ref[i, j]),
+                "plc": int(result.pulses[i, j]),
+                "exact": x,
+                "dist_half": abs(abs(x - np.trunc(x)) - 0.5),
+                "plc_real": result.reals[i, j] if result.reals is not None else np.nan,
+            }
+        )
+    table = pd.DataFrame(
+        rows,
+        columns=[
+            "kind",
+            "x_mm",
+            "y_mm",
+            "z_mm",
+            "joint",
+            "python",
+            "plc",
+            "exact",
+            "dist_half",
+            "plc_real",
+        ],
+    )
+    max_err, explained = float("nan"), None
+    if result.reals is not None:
+        err = np.abs(result.reals - exact)[both]
+        max_err = float(err.max()) if err.size else 0.0
+        half = (np.minimum(table["python"], table["plc"]) + 0.5).to_numpy(dtype=float)
+        explained = bool(((table["exact"] - half) * (table["plc_real"] - half) <= 0).all())
+    return Comparison(
+        len(xyz),
+        int(ok.sum()),
+        flag_mm,
+        unchanged,
+        int((diff != 0).sum()),
+        int(np.abs(diff).max()) if diff.size else 0,
+        table,
+        max_err,
+        explained,
+    )
+
+
+def pulse_value_bytes(program, mmap) -> tuple[int, int, int]:
+    """Byte offsets of the unrounded pulse values (theta * ppr / 2 pi, REAL) in ``program``."""
+    from .emit import allocate
+
+    work = allocate(program, mmap)
+    return tuple(work[k] for k in ("t1", "t2", "t3"))
