@@ -5,7 +5,9 @@ VENV   := .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed
 
-export MPLBACKEND := Agg
+# Tests draw off-screen (tests/conftest.py sets Agg); notebook kernels use the inline
+# backend, whose figure outputs are part of what nbval compares.
+NB_BACKEND := module://matplotlib_inline.backend_inline
 export PYTHONHASHSEED := 0
 
 .PHONY: all venv test test-fast report bench lab lint clean
@@ -25,20 +27,20 @@ $(STAMP): requirements.lock pyproject.toml
 
 # The whole suite: unit, property and cross-check tests, then every notebook under nbval.
 test: $(STAMP)
-	$(PY) -m pytest -n 2 tests
-	$(PY) -m pytest -n 2 --dist loadfile --nbval --nbval-sanitize-with tests/nbval_sanitize.cfg notebooks
+	MPLBACKEND=Agg $(PY) -m pytest -n 2 tests
+	MPLBACKEND=$(NB_BACKEND) $(PY) -m pytest -n 2 --dist loadfile --nbval --nbval-sanitize-with tests/nbval_sanitize.cfg notebooks
 
 test-fast: $(STAMP)
 	$(PY) -m pytest -n 2 -x tests
 
 report: $(STAMP)
-	$(PY) -m analysis report --out build/report
+	MPLBACKEND=$(NB_BACKEND) $(PY) -m analysis report --out build/report
 
 bench: $(STAMP)
 	$(PY) benchmarks/run.py --out build/bench.json
 
 lab: $(STAMP)
-	$(VENV)/bin/jupyter lab notebooks
+	MPLBACKEND=$(NB_BACKEND) $(VENV)/bin/jupyter lab notebooks
 
 lint: $(STAMP)
 	$(VENV)/bin/ruff check src tests benchmarks
