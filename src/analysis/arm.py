@@ -289,20 +289,18 @@ class Arm:
         _check_options(theta1_on_axis, tol)
         L1, L2, L3 = self.params.L1, self.params.L2, self.params.L3
         x, y = p[..., 0], p[..., 1]
-        z = p[..., 2] - L1
-        rho = np.hypot(x, y)
+        z, rho, D, D2 = _distances(p, L1)
         on_axis = rho <= tol
         phi = np.arctan2(y, x)
         if theta1_on_axis is not None:
             phi = np.where(on_axis, np.asarray(theta1_on_axis, dtype=float), phi)
-        D = np.hypot(rho, z)
         outside = np.maximum(D - (L2 + L3), abs(L2 - L3) - D)
         status = np.full(p.shape[:-1], Status.OK, dtype=np.int8)
         status[on_axis & (theta1_on_axis is None)] = Status.BASE_AXIS
         status[D - (L2 + L3) > tol] = Status.OUT_OF_REACH
         status[abs(L2 - L3) - D > tol] = Status.INSIDE_REACH
 
-        c3 = np.clip((D * D - L2 * L2 - L3 * L3) / (2.0 * L2 * L3), -1.0, 1.0)
+        c3 = np.clip((D2 - L2 * L2 - L3 * L3) / (2.0 * L2 * L3), -1.0, 1.0)  # eqs. 9-10
         t3_mag = np.arccos(c3)
         rsign, usign = (np.array([_BRANCH_SIGNS[n][k] for n in names]) for k in (0, 1))
         # broadcast targets (..., 1) against branches (B,)
@@ -387,7 +385,7 @@ class Arm:
         p = as_points(p)
         _check_options(None, tol)
         P = self.params
-        D = float(np.linalg.norm(p - self.shoulder))
+        _, rho, D, _ = (float(v) for v in _distances(p, P.L1))  # exactly as solve() decides
         sh = _fmt(self.shoulder)
         if D - P.reach_outer > tol:
             raise UnreachableError(
@@ -403,7 +401,6 @@ class Arm:
                 f"(it is {D:.3f} mm away)",
                 p, P.reach_inner - D, P.reach_inner,
             )
-        rho = float(np.hypot(p[0], p[1]))
         if rho <= tol and not allow_axis:
             raise BaseAxisError(
                 f"target {_fmt(p)} mm lies on the base axis (distance {rho:.3g} mm <= tolerance "
@@ -411,6 +408,20 @@ class Arm:
                 f"(CLI: --theta1-on-axis DEG)",
                 p,
             )
+
+
+def _distances(p: npt.NDArray[np.float64], L1: float):
+    """``(z, rho, D, D^2)`` of targets relative to the shoulder: z = Pz - L1 (eq. 8),
+    rho = |(Px, Py)|, D = |(rho, z)|.
+
+    The squares are summed directly (no hypot) because eqs. 9-10 need D^2, not a rounded
+    D squared again; :mod:`analysis.fastik` repeats these operations bit for bit, and
+    :meth:`Arm.check_target` uses them so that it and :meth:`Arm.solve` always agree.
+    """
+    x, y, z = p[..., 0], p[..., 1], p[..., 2] - L1
+    rho2 = x * x + y * y
+    D2 = rho2 + z * z
+    return z, np.sqrt(rho2), np.sqrt(D2), D2
 
 
 def _check_options(theta1_on_axis, tol) -> None:

@@ -152,8 +152,10 @@ def _solve_kernel(p, L1, L2, L3, tol, theta, ok, status, outside):  # pragma: no
         xi = p[i, 0]
         yi = p[i, 1]
         z = p[i, 2] - L1
-        rho = math.hypot(xi, yi)  # as Arm.solve: bit-equal D, so c3 is too
-        D = math.hypot(rho, z)
+        rho2 = xi * xi + yi * yi  # as Arm.solve, operation for operation: bit-equal c3
+        rho = math.sqrt(rho2)
+        D2 = rho2 + z * z
+        D = math.sqrt(D2)
         outside[i] = max(D - router, rinner - D)
         st = _AXIS if rho <= tol else _OK
         st = _OUT if D - router > tol else st
@@ -161,7 +163,7 @@ def _solve_kernel(p, L1, L2, L3, tol, theta, ok, status, outside):  # pragma: no
         status[i] = st
         good = st == _OK
         phi = _atan2(yi, xi)
-        c3 = (D * D - L2 * L2 - L3 * L3) / (2.0 * L2 * L3)  # eqs. 9-10
+        c3 = (D2 - L2 * L2 - L3 * L3) / (2.0 * L2 * L3)  # eqs. 9-10
         c3 = min(max(c3, -1.0), 1.0)
         t3m = _acos(c3)
         # cos(+-t3m) = c3 and sin(+-t3m) = +-sqrt((1 - c3)(1 + c3)): k is shared by all
@@ -226,12 +228,14 @@ def _quant_kernel(p, L1, L2, L3, ppr, tol, pulses, err, ok):  # pragma: no cover
         yi = p[i, 1]
         zi = p[i, 2]
         z = zi - L1
-        rho = math.hypot(xi, yi)  # as Arm.solve: bit-equal D, so c3 is too
-        D = math.hypot(rho, z)
+        rho2 = xi * xi + yi * yi  # as Arm.solve, operation for operation: bit-equal c3
+        rho = math.sqrt(rho2)
+        D2 = rho2 + z * z
+        D = math.sqrt(D2)
         good = not (rho <= tol or D - router > tol or rinner - D > tol)
         ok[i] = good
         phi = _atan2(yi, xi)
-        c3 = min(max((D * D - L2 * L2 - L3 * L3) / (2.0 * L2 * L3), -1.0), 1.0)
+        c3 = min(max((D2 - L2 * L2 - L3 * L3) / (2.0 * L2 * L3), -1.0), 1.0)
         t3 = _wrap_scalar(-_acos(c3))  # folded elbow: -pi -> pi, as Arm.solve
         k = L2 * c3 + L3
         s0 = L2 * math.sqrt((1.0 - c3) * (1.0 + c3))
