@@ -40,6 +40,9 @@ def test_build_report_executes_and_collects_figures(tmp_path):
     assert "42" in outputs and "99-line.svg" in outputs
     # the source notebook is the nbval reference: it must not be modified
     assert nbformat.read(src / "99_demo.ipynb", as_version=4).cells[1].outputs == []
+    # the audit tables travel with the report, as HTML and CSV
+    assert "Table 4, row by row" in text and "Errata register" in text
+    assert (out / "tables" / "table4_audit.csv").exists() and (out / "tables" / "errata.csv").exists()
 
 
 def test_notebook_paths_lists_numbered_notebooks(tmp_path):

@@ -6,6 +6,7 @@
     build/report/notebooks/NN_*.html   each notebook, freshly executed, as HTML
     build/report/notebooks/NN_*.ipynb  the executed notebooks themselves
     build/report/figures/*.svg|png     every figure the notebooks saved (save_figure)
+    build/report/tables/*.csv          Table 4 explained and the errata register
 
 The stored notebooks in ``notebooks/`` are not modified: they are the nbval references.
 """
@@ -83,17 +84,24 @@ def build_report(out: str | Path = "build/report", notebooks: list[Path] | None 
     return index
 
 
-def _audit_summary_html() -> str:
-    """The errata register as an HTML table, if the audit module is present."""
-    try:
-        from . import errata
-    except ImportError:
-        return ""
-    try:
-        df = errata.load()
-    except (FileNotFoundError, ValueError) as exc:
-        return f"<p>errata register unavailable: {html.escape(str(exc))}</p>"
-    return "<h2>Errata register</h2>\n" + df.to_html(index=False, escape=True, border=0, classes="errata")
+def _tables_html(out: Path) -> str:
+    """Table 4 explained and the errata register, as HTML and as CSV files under tables/."""
+    from . import errata, table4
+
+    tables = out / "tables"
+    tables.mkdir(exist_ok=True)
+    t4 = table4.report_table()
+    reg = errata.load()
+    t4.to_csv(tables / "table4_audit.csv")
+    reg.to_csv(tables / "errata.csv", index=False)
+    return (
+        '<h2>Table 4, row by row</h2>\n<p>(<a href="tables/table4_audit.csv">CSV</a>; '
+        "details in notebook 03)</p>\n"
+        + t4.to_html(escape=True, border=0, classes="errata")
+        + '\n<h2>Errata register</h2>\n<p>(<a href="tables/errata.csv">CSV</a>; every row has '
+        "the test that proves it, column <code>check</code>)</p>\n"
+        + reg.to_html(index=False, escape=True, border=0, classes="errata")
+    )
 
 
 def _index_html(entries: list[tuple[str, str]], figures: list[Path], out: Path) -> str:
@@ -126,6 +134,6 @@ files the notebooks saved.</p>
 </ul>
 <h2>Figures</h2>
 {figs}
-{_audit_summary_html()}
+{_tables_html(out)}
 </body></html>
 """
