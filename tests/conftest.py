@@ -11,7 +11,11 @@ from hypothesis import HealthCheck, settings
 # Derandomized so CI results do not depend on the run; raise the example count locally
 # with HYPOTHESIS_PROFILE=thorough.
 settings.register_profile(
-    "ci", derandomize=True, max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow]
+    "ci",
+    derandomize=True,
+    max_examples=300,
+    deadline=None,
+    suppress_health_check=[HealthCheck.too_slow],
 )
 settings.register_profile("thorough", max_examples=5000, deadline=None)
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))

@@ -28,7 +28,9 @@ def test_module_entry_point_runs_as_documented():
     """`python -m analysis ik 100 100 600 --json` in a real subprocess (the README command)."""
     proc = subprocess.run(
         [sys.executable, "-m", "analysis", "ik", "100", "100", "600", "--json"],
-        capture_output=True, text=True, check=False,
+        capture_output=True,
+        text=True,
+        check=False,
     )
     assert proc.returncode == 0, proc.stderr
     doc = json.loads(proc.stdout)
@@ -58,7 +60,9 @@ def test_ik_inside_inner_radius(capsys):
 def test_ik_base_axis_needs_theta1(capsys):
     code, _, err = run(capsys, "ik", "0", "0", "900")
     assert code == 2 and "base axis" in err and "--theta1-on-axis" in err
-    code, out, _ = run(capsys, "ik", "0", "0", "900", "--theta1-on-axis", "30", "--json", "--branch", "all")
+    code, out, _ = run(
+        capsys, "ik", "0", "0", "900", "--theta1-on-axis", "30", "--json", "--branch", "all"
+    )
     assert code == 0
     sols = json.loads(out)["solutions"]
     assert [s["branch"] for s in sols] == list(BRANCHES)
@@ -97,7 +101,7 @@ def test_fk_text_and_json(capsys):
     ],
 )
 def test_bad_arguments_exit_2_one_line(capsys, argv, needle):
-    code, out, err = run(capsys, *argv)
+    code, _, err = run(capsys, *argv)
     assert code == 2
     assert needle in err
     assert err.strip().count("\n") == 0 or "usage:" in err  # argparse prints usage + one error line
@@ -106,11 +110,30 @@ def test_bad_arguments_exit_2_one_line(capsys, argv, needle):
 
 def test_batch_table4_all_branches(tmp_path, capsys, arm):
     out_csv = tmp_path / "out.csv"
-    code, _, err = run(capsys, "ik", "--input", str(data_dir() / "table4.csv"), "--output", str(out_csv), "--branch", "all")
+    code, _, err = run(
+        capsys,
+        "ik",
+        "--input",
+        str(data_dir() / "table4.csv"),
+        "--output",
+        str(out_csv),
+        "--branch",
+        "all",
+    )
     assert code == 0, err
     df = pd.read_csv(out_csv)
     assert len(df) == 10 * 4
-    assert list(df.columns[-9:]) == ["branch", "reachable", "theta1_deg", "theta2_deg", "theta3_deg", "c1", "c2", "c3", "status"]
+    assert list(df.columns[-9:]) == [
+        "branch",
+        "reachable",
+        "theta1_deg",
+        "theta2_deg",
+        "theta3_deg",
+        "c1",
+        "c2",
+        "c3",
+        "status",
+    ]
     # the input's own printed-angle columns are kept, renamed, not overwritten
     assert "input_theta2_deg" in df.columns
     row8 = df[df["row"] == 8]
@@ -120,7 +143,9 @@ def test_batch_table4_all_branches(tmp_path, capsys, arm):
     assert not ok[["theta1_deg", "theta2_deg", "theta3_deg", "c1", "c2", "c3"]].isna().any().any()
     # every batch solution lands on its target (FK independent of the CSV path)
     p = arm.fk(np.radians(ok[["theta1_deg", "theta2_deg", "theta3_deg"]].to_numpy()))
-    np.testing.assert_allclose(p, ok[["x_mm", "y_mm", "z_mm"]].to_numpy(), atol=1e-6)  # 10 significant digits in the CSV
+    np.testing.assert_allclose(
+        p, ok[["x_mm", "y_mm", "z_mm"]].to_numpy(), atol=1e-6
+    )  # 10 significant digits in the CSV
     fu = ok[ok["branch"] == "front-up"].set_index("row")
     assert fu.loc[1, ["c1", "c2", "c3"]].tolist() == [500, 113, -1724]
 
@@ -146,7 +171,9 @@ def test_batch_bad_csv_exit_2(tmp_path, capsys, content, needle):
 
 
 def test_batch_missing_file(tmp_path, capsys):
-    code, _, err = run(capsys, "ik", "--input", str(tmp_path / "nope.csv"), "--output", str(tmp_path / "o.csv"))
+    code, _, err = run(
+        capsys, "ik", "--input", str(tmp_path / "nope.csv"), "--output", str(tmp_path / "o.csv")
+    )
     assert code == 2 and "no such file" in err
 
 

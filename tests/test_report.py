@@ -10,7 +10,9 @@ from analysis.report import build_report, notebook_paths
 def _notebook(path, code: str, title: str) -> None:
     nb = nbformat.v4.new_notebook(
         cells=[nbformat.v4.new_markdown_cell(f"# {title}"), nbformat.v4.new_code_cell(code)],
-        metadata={"kernelspec": {"name": "python3", "display_name": "Python 3", "language": "python"}},
+        metadata={
+            "kernelspec": {"name": "python3", "display_name": "Python 3", "language": "python"}
+        },
     )
     nbformat.write(nb, path)
 
@@ -42,7 +44,9 @@ def test_build_report_executes_and_collects_figures(tmp_path):
     assert nbformat.read(src / "99_demo.ipynb", as_version=4).cells[1].outputs == []
     # the audit tables travel with the report, as HTML and CSV
     assert "Table 4, row by row" in text and "Errata register" in text
-    assert (out / "tables" / "table4_audit.csv").exists() and (out / "tables" / "errata.csv").exists()
+    assert (out / "tables" / "table4_audit.csv").exists() and (
+        out / "tables" / "errata.csv"
+    ).exists()
 
 
 def test_notebook_paths_lists_numbered_notebooks(tmp_path):

@@ -150,7 +150,9 @@ def as_points(p: npt.ArrayLike, name: str = "target") -> npt.NDArray[np.float64]
     if bad.any():
         idx = np.argwhere(bad)[0]
         where = "" if arr.ndim == 1 else f" at index {tuple(int(i) for i in idx[:-1])}"
-        raise ValueError(f"{name}{where} has a non-finite coordinate: {arr[tuple(idx[:-1])].tolist()}")
+        raise ValueError(
+            f"{name}{where} has a non-finite coordinate: {arr[tuple(idx[:-1])].tolist()}"
+        )
     return arr
 
 
@@ -375,12 +377,16 @@ class Arm:
         """
         p = as_points(p)
         if p.shape != (3,):
-            raise ValueError(f"ik takes one target of shape (3,), got {p.shape}; use solve() for batches")
+            raise ValueError(
+                f"ik takes one target of shape (3,), got {p.shape}; use solve() for batches"
+            )
         self.check_target(p, tol=tol, allow_axis=theta1_on_axis is not None)
         sol = self.solve(p, branches, theta1_on_axis=theta1_on_axis, tol=tol)
         return {name: sol.theta[i] for i, name in enumerate(sol.branches)}
 
-    def check_target(self, p: npt.ArrayLike, *, tol: float = DEFAULT_TOL_MM, allow_axis: bool = False) -> None:
+    def check_target(
+        self, p: npt.ArrayLike, *, tol: float = DEFAULT_TOL_MM, allow_axis: bool = False
+    ) -> None:
         """Raise :class:`UnreachableError` or :class:`BaseAxisError` for one bad target."""
         p = as_points(p)
         _check_options(None, tol)
@@ -392,14 +398,18 @@ class Arm:
                 f"target {_fmt(p)} mm is {_mm(D - P.reach_outer)} mm beyond the reach of "
                 f"{P.reach_outer:g} mm (L2 + L3) around the shoulder at {sh} mm "
                 f"(it is {D:.3f} mm away)",
-                p, D - P.reach_outer, P.reach_outer,
+                p,
+                D - P.reach_outer,
+                P.reach_outer,
             )
         if P.reach_inner - D > tol:
             raise UnreachableError(
                 f"target {_fmt(p)} mm is {_mm(P.reach_inner - D)} mm inside the inner reach "
                 f"radius of {P.reach_inner:g} mm (|L2 - L3|) around the shoulder at {sh} mm "
                 f"(it is {D:.3f} mm away)",
-                p, P.reach_inner - D, P.reach_inner,
+                p,
+                P.reach_inner - D,
+                P.reach_inner,
             )
         if rho <= tol and not allow_axis:
             raise BaseAxisError(
@@ -426,7 +436,9 @@ def _distances(p: npt.NDArray[np.float64], L1: float):
 
 def _check_options(theta1_on_axis, tol) -> None:
     """Reject options that would otherwise turn into silent NaN or wrong statuses."""
-    if not (isinstance(tol, (int, float, np.floating, np.integer)) and np.isfinite(tol) and tol >= 0):
+    if not (
+        isinstance(tol, (int, float, np.floating, np.integer)) and np.isfinite(tol) and tol >= 0
+    ):
         raise ValueError(f"tol = {tol!r} mm: the tolerance must be a finite number >= 0 mm")
     if theta1_on_axis is not None:
         t = np.asarray(theta1_on_axis, dtype=float)
@@ -440,7 +452,9 @@ def _branch_names(branches: str | Sequence[str]) -> tuple[str, ...]:
     names = tuple(branches)
     unknown = [b for b in names if b not in BRANCHES]
     if unknown or not names:
-        raise ValueError(f"unknown branch {unknown or names!r}; expected 'all' or from {', '.join(BRANCHES)}")
+        raise ValueError(
+            f"unknown branch {unknown or names!r}; expected 'all' or from {', '.join(BRANCHES)}"
+        )
     return names
 
 

@@ -23,7 +23,17 @@ from .pulses import angles_to_pulses
 __all__ = ["main"]
 
 INPUT_COLUMNS = ("x_mm", "y_mm", "z_mm")
-OUTPUT_COLUMNS = ("branch", "reachable", "theta1_deg", "theta2_deg", "theta3_deg", "c1", "c2", "c3", "status")
+OUTPUT_COLUMNS = (
+    "branch",
+    "reachable",
+    "theta1_deg",
+    "theta2_deg",
+    "theta3_deg",
+    "c1",
+    "c2",
+    "c3",
+    "status",
+)
 _STATUS_TEXT = {
     Status.OK: "ok",
     Status.OUT_OF_REACH: "out-of-reach",
@@ -67,8 +77,10 @@ def _cmd_fk(args: argparse.Namespace) -> int:
     if args.json:
         print(json.dumps({"theta_deg": theta_deg, "position_mm": p.tolist()}))
     else:
-        print(f"theta = ({', '.join(f'{t:.2f}' for t in theta_deg)}) deg -> "
-              f"P = ({', '.join(f'{v:.3f}' for v in p)}) mm")
+        print(
+            f"theta = ({', '.join(f'{t:.2f}' for t in theta_deg)}) deg -> "
+            f"P = ({', '.join(f'{v:.3f}' for v in p)}) mm"
+        )
     return 0
 
 
@@ -86,8 +98,10 @@ def _cmd_ik(args: argparse.Namespace) -> int:
         return _ik_batch(args)
     given = [v for v in (args.x, args.y, args.z) if v is not None]
     if len(given) != 3:
-        raise UsageError(f"give a target X Y Z (mm; got {len(given)} of 3 coordinates), "
-                         "or --input IN.csv --output OUT.csv")
+        raise UsageError(
+            f"give a target X Y Z (mm; got {len(given)} of 3 coordinates), "
+            "or --input IN.csv --output OUT.csv"
+        )
     return _ik_single(args)
 
 
@@ -99,11 +113,13 @@ def _ik_single(args: argparse.Namespace) -> int:
     ppr = arm.params.pulses_per_rev
     out = []
     for name, theta in sols.items():
-        out.append({
-            "branch": name,
-            "theta_deg": np.degrees(theta).tolist(),
-            "pulses": angles_to_pulses(theta, ppr).tolist(),
-        })
+        out.append(
+            {
+                "branch": name,
+                "theta_deg": np.degrees(theta).tolist(),
+                "pulses": angles_to_pulses(theta, ppr).tolist(),
+            }
+        )
     if args.json:
         print(json.dumps({"target": target, "reachable": True, "solutions": out}))
     else:
@@ -124,13 +140,17 @@ def _read_targets(path: Path) -> pd.DataFrame:
         raise UsageError(f"{path}: not a readable CSV ({str(exc).splitlines()[0]})") from None
     missing = [c for c in INPUT_COLUMNS if c not in df.columns]
     if missing:
-        raise UsageError(f"{path}: missing column(s) {', '.join(missing)} (have: {', '.join(df.columns)})")
+        raise UsageError(
+            f"{path}: missing column(s) {', '.join(missing)} (have: {', '.join(df.columns)})"
+        )
     for col in INPUT_COLUMNS:
         values = pd.to_numeric(df[col].str.strip(), errors="coerce")
         bad = values.isna() | ~np.isfinite(values.to_numpy(dtype=float, na_value=np.nan))
         if bad.any():
             i = int(np.flatnonzero(bad.to_numpy())[0])
-            raise UsageError(f"{path} line {i + 2} column {col}: {df[col].iloc[i]!r} is not a finite number")
+            raise UsageError(
+                f"{path} line {i + 2} column {col}: {df[col].iloc[i]!r} is not a finite number"
+            )
         df[col] = values.astype(float)
     return df
 
@@ -163,9 +183,11 @@ def _ik_batch(args: argparse.Namespace) -> int:
     args.output.parent.mkdir(parents=True, exist_ok=True)
     out.to_csv(args.output, index=False, float_format="%.10g")
     n_ok = int(sol.ok.any(axis=-1).sum())
-    print(f"{n} targets, {n_ok} solved, {int((~sol.reachable).sum())} unreachable, "
-          f"{int((sol.status == Status.BASE_AXIS).sum())} on the base axis -> {args.output}",
-          file=sys.stderr)
+    print(
+        f"{n} targets, {n_ok} solved, {int((~sol.reachable).sum())} unreachable, "
+        f"{int((sol.status == Status.BASE_AXIS).sum())} on the base axis -> {args.output}",
+        file=sys.stderr,
+    )
     return 0
 
 
@@ -189,20 +211,36 @@ def build_parser() -> argparse.ArgumentParser:
     _common(p)
     p.set_defaults(func=_cmd_fk)
 
-    p = sub.add_parser("ik", help="target (mm) -> joint angles (deg) and pulses, eqs. 6-22",
-                       description="Closed-form IK (corrected eqs. 6-19) and pulses (eqs. 20-22).")
+    p = sub.add_parser(
+        "ik",
+        help="target (mm) -> joint angles (deg) and pulses, eqs. 6-22",
+        description="Closed-form IK (corrected eqs. 6-19) and pulses (eqs. 20-22).",
+    )
     p.add_argument("x", nargs="?", type=_finite, metavar="X", help="target x in mm")
     p.add_argument("y", nargs="?", type=_finite, metavar="Y", help="target y in mm")
     p.add_argument("z", nargs="?", type=_finite, metavar="Z", help="target z in mm")
-    p.add_argument("--branch", default="front-up", choices=[*BRANCHES, "all"],
-                   help="IK branch (default front-up, the paper's)")
+    p.add_argument(
+        "--branch",
+        default="front-up",
+        choices=[*BRANCHES, "all"],
+        help="IK branch (default front-up, the paper's)",
+    )
     p.add_argument("--json", action="store_true", help="machine-readable output (single target)")
     p.add_argument("--input", type=Path, help="batch: CSV with columns x_mm,y_mm,z_mm")
     p.add_argument("--output", type=Path, help="batch: output CSV (one row per target and branch)")
-    p.add_argument("--theta1-on-axis", type=_finite, metavar="DEG",
-                   help="waist angle to use for targets on the base axis (else they have no solution)")
-    p.add_argument("--tol", type=_finite, default=DEFAULT_TOL_MM,
-                   help=f"distance tolerance in mm at the reach boundary and base axis (default {DEFAULT_TOL_MM:g})")
+    p.add_argument(
+        "--theta1-on-axis",
+        type=_finite,
+        metavar="DEG",
+        help="waist angle to use for targets on the base axis (else they have no solution)",
+    )
+    p.add_argument(
+        "--tol",
+        type=_finite,
+        default=DEFAULT_TOL_MM,
+        help="distance tolerance in mm at the reach boundary and base axis "
+        f"(default {DEFAULT_TOL_MM:g})",
+    )
     _common(p)
     p.set_defaults(func=_cmd_ik)
 
@@ -213,13 +251,28 @@ def build_parser() -> argparse.ArgumentParser:
     if _add_stl is not None:
         _add_stl(sub)
 
-    p = sub.add_parser("errata", add_help=False,
-                       help="the errata register: --check, --write, --write-readme (see errata --help)")
+    p = sub.add_parser(
+        "errata",
+        add_help=False,
+        help="the errata register: --check, --write, --write-readme (see errata --help)",
+    )
     p.set_defaults(func=None)  # dispatched in main() before parsing
 
-    p = sub.add_parser("report", help="execute every notebook, export figures and build/report/index.html")
-    p.add_argument("--out", type=Path, default=Path("build/report"), help="output folder (default build/report)")
-    p.add_argument("--notebooks", nargs="*", type=Path, help="only these notebooks (default: all in notebooks/)")
+    p = sub.add_parser(
+        "report", help="execute every notebook, export figures and build/report/index.html"
+    )
+    p.add_argument(
+        "--out",
+        type=Path,
+        default=Path("build/report"),
+        help="output folder (default build/report)",
+    )
+    p.add_argument(
+        "--notebooks",
+        nargs="*",
+        type=Path,
+        help="only these notebooks (default: all in notebooks/)",
+    )
     p.set_defaults(func=_cmd_report)
     return parser
 

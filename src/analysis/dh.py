@@ -97,8 +97,12 @@ def link_transform(
     >>> T[:3, 3].round(9).tolist()
     [0.0, 0.0, 660.0]
     """
-    theta, d, a, alpha = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (theta, d, a, alpha)))
-    rows = _link_elements(np.cos(theta), np.sin(theta), np.cos(alpha), np.sin(alpha), a, d, convention)
+    theta, d, a, alpha = np.broadcast_arrays(
+        *(np.asarray(v, dtype=float) for v in (theta, d, a, alpha))
+    )
+    rows = _link_elements(
+        np.cos(theta), np.sin(theta), np.cos(alpha), np.sin(alpha), a, d, convention
+    )
     out = np.zeros((*theta.shape, 4, 4))
     for i, row in enumerate(rows):
         for j, value in enumerate(row):
@@ -111,7 +115,9 @@ def link_transform_sym(theta, d, a, alpha, convention: Convention = "standard") 
     """Symbolic (SymPy) homogeneous transform of one D-H link; same formula as
     :func:`link_transform`. Pass exact angles (``sp.pi / 2``) to get exact 0 and 1."""
     theta, d, a, alpha = (sp.sympify(v) for v in (theta, d, a, alpha))
-    rows = _link_elements(sp.cos(theta), sp.sin(theta), sp.cos(alpha), sp.sin(alpha), a, d, convention)
+    rows = _link_elements(
+        sp.cos(theta), sp.sin(theta), sp.cos(alpha), sp.sin(alpha), a, d, convention
+    )
     return sp.Matrix([*[[sp.sympify(v) for v in r] for r in rows], [0, 0, 0, 1]])
 
 
@@ -150,7 +156,9 @@ class DHRow:
             if isinstance(value, (int, float)) and not math.isfinite(value):
                 raise ValueError(f"D-H row {self.name or '?'}: {label} = {value} is not finite")
         if self.kind not in ("revolute", "fixed"):
-            raise ValueError(f"D-H row {self.name or '?'}: kind {self.kind!r} is not 'revolute' or 'fixed'")
+            raise ValueError(
+                f"D-H row {self.name or '?'}: kind {self.kind!r} is not 'revolute' or 'fixed'"
+            )
 
 
 @dataclass(frozen=True)
@@ -167,7 +175,9 @@ class DHTable:
 
     def __post_init__(self) -> None:
         if self.convention not in CONVENTIONS:
-            raise ValueError(f"unknown D-H convention {self.convention!r}; expected one of {CONVENTIONS}")
+            raise ValueError(
+                f"unknown D-H convention {self.convention!r}; expected one of {CONVENTIONS}"
+            )
         if not self.rows:
             raise ValueError("a D-H table needs at least one row")
         object.__setattr__(self, "rows", tuple(self.rows))
@@ -221,7 +231,11 @@ class DHTable:
             alpha = _exact_angle(row.alpha) if exact else row.alpha
             offset = _exact_angle(row.theta_offset) if exact else row.theta_offset
             theta = offset + next(it) if row.kind == "revolute" else offset
-            out.append(link_transform_sym(theta, _exact(row.d, exact), _exact(row.a, exact), alpha, self.convention))
+            out.append(
+                link_transform_sym(
+                    theta, _exact(row.d, exact), _exact(row.a, exact), alpha, self.convention
+                )
+            )
         return out
 
     @classmethod

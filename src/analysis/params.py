@@ -26,7 +26,8 @@ def data_dir() -> Path:
     path = Path(env) if env else Path(__file__).resolve().parents[2] / "data"
     if not path.is_dir():
         raise FileNotFoundError(
-            f"data folder {path} not found; run from a checkout of the project or set ANALYSIS_DATA_DIR"
+            f"data folder {path} not found; run from a checkout of the project "
+            "or set ANALYSIS_DATA_DIR"
         )
     return path
 
@@ -71,7 +72,11 @@ class ArmParams:
             ppr = ppr.tolist()
         if isinstance(ppr, (list, tuple)):
             ppr = tuple(ppr)
-        if not isinstance(ppr, tuple) or len(ppr) != 3 or not all(_is_positive_whole(p) for p in ppr):
+        if (
+            not isinstance(ppr, tuple)
+            or len(ppr) != 3
+            or not all(_is_positive_whole(p) for p in ppr)
+        ):
             raise ValueError(f"pulses_per_rev = {ppr!r}: need three positive whole numbers")
         object.__setattr__(self, "pulses_per_rev", tuple(int(p) for p in ppr))
 
@@ -129,8 +134,17 @@ def load_table3(path: str | Path | None = None) -> ArmParams:
     """
     path = Path(path) if path is not None else data_dir() / "table3.csv"
     df = pd.read_csv(path)
-    need = ["link", "alpha_deg", "a_mm", "d_mm", "cos_alpha", "sin_alpha", "pulses_per_rev",
-            "step_angle_deg", "resolution_deg"]
+    need = [
+        "link",
+        "alpha_deg",
+        "a_mm",
+        "d_mm",
+        "cos_alpha",
+        "sin_alpha",
+        "pulses_per_rev",
+        "step_angle_deg",
+        "resolution_deg",
+    ]
     missing = [c for c in need if c not in df.columns]
     if missing:
         raise ValueError(f"{path}: missing column(s) {', '.join(missing)}")
@@ -141,7 +155,10 @@ def load_table3(path: str | Path | None = None) -> ArmParams:
         raise ValueError(f"{path}: alpha_deg = {alpha}; the closed-form IK needs [90, 0, 0]")
     for _, row in df.iterrows():
         rad = math.radians(float(row["alpha_deg"]))
-        if abs(math.cos(rad) - row["cos_alpha"]) > 1e-12 or abs(math.sin(rad) - row["sin_alpha"]) > 1e-12:
+        if (
+            abs(math.cos(rad) - row["cos_alpha"]) > 1e-12
+            or abs(math.sin(rad) - row["sin_alpha"]) > 1e-12
+        ):
             raise ValueError(f"{path}: link {row['link']}: cos/sin columns disagree with alpha")
     a, d = df["a_mm"].astype(float).tolist(), df["d_mm"].astype(float).tolist()
     if a[0] != 0.0 or d[1] != 0.0 or d[2] != 0.0:

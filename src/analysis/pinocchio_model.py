@@ -56,14 +56,21 @@ def build_model(table: DHTable) -> pin.Model:
     for i, row in enumerate(table.rows):
         if table.convention == "standard":
             if row.kind == "revolute":
-                parent = model.addJoint(parent, pin.JointModelRZ(), pending * _rz(row.theta_offset), row.name or f"joint{i + 1}")
+                parent = model.addJoint(
+                    parent,
+                    pin.JointModelRZ(),
+                    pending * _rz(row.theta_offset),
+                    row.name or f"joint{i + 1}",
+                )
                 pending = _standard_fixed(row)
             else:
                 pending = pending * _rz(row.theta_offset) * _standard_fixed(row)
         else:
             fixed = _modified_fixed(row) * _rz(row.theta_offset)
             if row.kind == "revolute":
-                parent = model.addJoint(parent, pin.JointModelRZ(), pending * fixed, row.name or f"joint{i + 1}")
+                parent = model.addJoint(
+                    parent, pin.JointModelRZ(), pending * fixed, row.name or f"joint{i + 1}"
+                )
                 pending = pin.SE3.Identity()
             else:
                 pending = pending * fixed
@@ -119,6 +126,8 @@ class PinocchioArm:
         flat = q.reshape(-1, self.model.nq)
         out = np.empty((flat.shape[0], 3, self.model.nv))
         for k, qk in enumerate(flat):
-            J = pin.computeFrameJacobian(self.model, self.data, qk, self.tool_id, pin.LOCAL_WORLD_ALIGNED)
+            J = pin.computeFrameJacobian(
+                self.model, self.data, qk, self.tool_id, pin.LOCAL_WORLD_ALIGNED
+            )
             out[k] = J[:3]
         return out.reshape(*q.shape[:-1], 3, self.model.nv)

@@ -58,7 +58,9 @@ def save_figure(fig: mpl.figure.Figure, stem: str, folder: str | Path | None = N
     SVGs carry no date, so re-running a notebook reproduces them byte for byte.
     """
     if not stem[:2].isdigit():
-        raise ValueError(f"figure stem {stem!r} must start with the notebook number, e.g. '05-workspace'")
+        raise ValueError(
+            f"figure stem {stem!r} must start with the notebook number, e.g. '05-workspace'"
+        )
     out = Path(folder) if folder is not None else figure_dir()
     out.mkdir(parents=True, exist_ok=True)
     names = []

@@ -63,7 +63,9 @@ def angles_to_pulses(
     raise ValueError(f"unknown rounding {rounding!r}; expected 'half-away' or 'half-even'")
 
 
-def pulses_to_angles(c: npt.ArrayLike, pulses_per_rev: npt.ArrayLike = 4000) -> npt.NDArray[np.float64]:
+def pulses_to_angles(
+    c: npt.ArrayLike, pulses_per_rev: npt.ArrayLike = 4000
+) -> npt.NDArray[np.float64]:
     """Joint angles [rad] commanded by whole pulse counts (inverse of eqs. 20-22)."""
     c = np.asarray(c, dtype=float)
     if not np.isfinite(c).all():

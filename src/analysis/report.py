@@ -48,7 +48,10 @@ def execute_notebook(path: Path, timeout: int = 1800) -> nbformat.NotebookNode:
     """Execute a notebook top to bottom in a fresh kernel, with its folder as cwd."""
     nb = nbformat.read(path, as_version=4)
     client = NotebookClient(
-        nb, timeout=timeout, kernel_name="python3", resources={"metadata": {"path": str(path.parent)}}
+        nb,
+        timeout=timeout,
+        kernel_name="python3",
+        resources={"metadata": {"path": str(path.parent)}},
     )
     client.execute()
     return nb
@@ -123,7 +126,8 @@ body {{ font-family: sans-serif; max-width: 70em; margin: 2em auto; line-height:
 figure {{ display: inline-block; margin: 0.5em; width: 30em; vertical-align: top; }}
 figure img {{ width: 100%; }}
 table.errata {{ border-collapse: collapse; font-size: 0.85em; }}
-table.errata td, table.errata th {{ border: 1px solid #ccc; padding: 0.2em 0.4em; vertical-align: top; }}
+table.errata td, table.errata th {{ border: 1px solid #ccc; padding: 0.2em 0.4em;
+  vertical-align: top; }}
 </style></head><body>
 <h1>Audit of Li Feng et al. (2016), a 3R material grabbing robot</h1>
 <p>Every notebook below was executed top to bottom for this report; the figures are the
