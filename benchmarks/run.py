@@ -2,10 +2,11 @@
 
 All measurements run in one process, one after the other, on the same seeded data:
 
-- ours: ``analysis.arm.Arm`` (numpy) and ``analysis.fastik`` (Numba, both cores), batch
+- ours: ``analysis.kinematics.arm.Arm`` (numpy) and ``analysis.kinematics.fastik`` (Numba, both
+cores), batch
   calls over ``--n`` points;
 - peers: a per-point loop over Pinocchio's ``framesForwardKinematics``
-  (``analysis.pinocchio_model.PinocchioArm``) and a per-point loop of the same closed
+  (``analysis.kinematics.pinocchio_model.PinocchioArm``) and a per-point loop of the same closed
   form (eqs. 2, 6-19) in plain Python ``math``, over ``--n-peer`` points.
 
 Each rate is the best of ``--repeat`` timed runs (after one warm-up call that also
@@ -31,11 +32,11 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "src"))
 
-from analysis import fastik
-from analysis import workspace as W
-from analysis.arm import paper_arm
-from analysis.pinocchio_model import PinocchioArm
-from analysis.pulses import angles_to_pulses, pulses_to_angles
+from analysis.kinematics import fastik
+from analysis.kinematics.arm import paper_arm
+from analysis.kinematics.pinocchio_model import PinocchioArm
+from analysis.kinematics.pulses import angles_to_pulses, pulses_to_angles
+from analysis.studies import workspace as W
 
 CPU_RATES: dict[int, float] = {}  # id(fn) -> points per CPU-second (all threads summed)
 
@@ -157,19 +158,19 @@ def main(argv=None) -> int:
     shell, box = "targets in the reachable shell", "targets in the bounding cube"
     rows = [
         (
-            "batch FK, numba (analysis.fastik.fk)",
+            "batch FK, numba (analysis.kinematics.fastik.fk)",
             "numba_fk",
             "Pinocchio FK per-point loop",
             "pinocchio_fk_loop",
         ),
         (
-            "batch FK, numpy (analysis.arm.Arm.fk)",
+            "batch FK, numpy (analysis.kinematics.arm.Arm.fk)",
             "numpy_fk",
             "Pinocchio FK per-point loop",
             "pinocchio_fk_loop",
         ),
         (
-            "batch FK, numba (analysis.fastik.fk)",
+            "batch FK, numba (analysis.kinematics.fastik.fk)",
             "numba_fk",
             "plain-Python math FK loop",
             "python_fk_loop",

@@ -29,6 +29,6 @@ def rng() -> np.random.Generator:
 
 @pytest.fixture(scope="session")
 def arm():
-    from analysis.arm import paper_arm
+    from analysis.kinematics.arm import paper_arm
 
     return paper_arm()

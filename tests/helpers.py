@@ -4,7 +4,7 @@ Failures print both arrays and the worst offender, so a red test says where and 
 much, not only that something differs.
 
 The elementary transforms below (``rot_x``, ``rot_z``, ``trans``) are written out here on
-purpose, independently of :mod:`analysis.dh`: the D-H tests compose them as
+purpose, independently of :mod:`analysis.kinematics.dh`: the D-H tests compose them as
 ``Rz Tz Tx Rx`` (standard) and ``Rx Tx Rz Tz`` (modified) and hold the library's single
 formula against that product.
 """

@@ -7,8 +7,8 @@ AWL), :mod:`.memmap` (MAP.json), :mod:`.motion` (PTO networks), :mod:`.translate
 :mod:`.paper_listings` (the paper's own STL executed), :mod:`.cli` (``stl`` command).
 """
 
-from .emit import emit_s7200, emit_s7300
-from .ir import Program, build_program
-from .memmap import MemoryMap, default_map
+from analysis.plc.emit import emit_s7200, emit_s7300
+from analysis.plc.ir import Program, build_program
+from analysis.plc.memmap import MemoryMap, default_map
 
 __all__ = ["MemoryMap", "Program", "build_program", "default_map", "emit_s7200", "emit_s7300"]

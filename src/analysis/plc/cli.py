@@ -10,12 +10,12 @@ import argparse
 import sys
 from pathlib import Path
 
-from ..arm import BRANCHES
-from ..params import load_table3
-from .emit import allocate, emit_s7200, emit_s7300
-from .ir import build_program
-from .memmap import DIALECTS, MemoryMap, default_map
-from .motion import motion_networks
+from analysis.kinematics.arm import BRANCHES
+from analysis.kinematics.params import load_table3
+from analysis.plc.emit import allocate, emit_s7200, emit_s7300
+from analysis.plc.ir import build_program
+from analysis.plc.memmap import DIALECTS, MemoryMap, default_map
+from analysis.plc.motion import motion_networks
 
 __all__ = ["add_parser", "cmd_stl", "generate"]
 
@@ -64,7 +64,7 @@ def cmd_stl(args: argparse.Namespace) -> int:
 
 
 def add_parser(subparsers) -> None:
-    """Register ``stl`` on the lead's ``analysis.cli`` subparsers."""
+    """Register ``stl`` on the lead's ``analysis.app.cli`` subparsers."""
     p = subparsers.add_parser(
         "stl",
         help="generate the PLC program (S7-200 STL or S7-300 AWL) and its memory map",

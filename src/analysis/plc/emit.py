@@ -17,8 +17,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .ir import CMP, Program, Subroutine
-from .memmap import MemoryMap, default_map
+from analysis.plc.ir import CMP, Program, Subroutine
+from analysis.plc.memmap import MemoryMap, default_map
 
 __all__ = ["allocate", "emit_s7200", "emit_s7200_subroutines", "emit_s7300", "fmt_real"]
 

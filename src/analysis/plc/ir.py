@@ -1,6 +1,6 @@
 """Intermediate representation of the corrected IK program (paper Figures 3-6, eqs. 6-22).
 
-One program, generated from :class:`analysis.params.ArmParams` (Table 3: L1, L2, L3,
+One program, generated from :class:`analysis.kinematics.params.ArmParams` (Table 3: L1, L2, L3,
 pulses per revolution), feeds both emitters (S7-200 STL and S7-300 AWL). The IR is
 three-address REAL arithmetic, REAL compare-and-jump, a finiteness test on the raw bits
 (so no REAL compare ever sees a NaN: a NaN in a REAL compare stops an S7-200 CPU), bit
@@ -25,16 +25,18 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from ..arm import BRANCHES
-from ..params import ArmParams
-from .approx import ATAN_DEGREE, SQRT3, TAN_PI_12, atan_coefficients
+from analysis.kinematics.arm import BRANCHES
+from analysis.kinematics.params import ArmParams
+from analysis.plc.approx import ATAN_DEGREE, SQRT3, TAN_PI_12, atan_coefficients
 
 __all__ = ["CMP", "Instr", "Program", "Subroutine", "build_program"]
 
 CMP = ("<", "<=", ">", ">=", "==", "<>")
 ARITH = ("add", "sub", "mul", "div")
 UNARY = ("mov", "sqrt", "sin", "cos", "atan", "acos", "round")
-BASE_AXIS_TOL_MM = 1e-6  # = analysis.arm.DEFAULT_TOL_MM: closer to the axis -> theta1 := 0
+BASE_AXIS_TOL_MM = (
+    1e-6  # = analysis.kinematics.arm.DEFAULT_TOL_MM: closer to the axis -> theta1 := 0
+)
 
 
 @dataclass(frozen=True)
@@ -206,14 +208,14 @@ def acos_subroutine(number: int = 2, atan2_name: str = "ATAN2") -> Subroutine:
 
 
 def build_program(params: ArmParams, branch: str = "front-up", trig: str = "subroutine") -> Program:
-    """The corrected IK program for one branch (eqs. 6-19 as corrected in analysis.arm).
+    """The corrected IK program for one branch (eqs. 6-19 as corrected in analysis.kinematics.arm).
 
     Parameters
     ----------
     params : ArmParams
         Link lengths L1, L2, L3 [mm] and pulses per revolution (Table 3).
     branch : str
-        One of :data:`analysis.arm.BRANCHES` (front-up is the paper's).
+        One of :data:`analysis.kinematics.arm.BRANCHES` (front-up is the paper's).
     trig : {"subroutine", "native"}
         "subroutine": generated ATAN2/ACOS (required on the S7-200); "native": the S7-300
         ATAN/ACOS instructions with quadrant jumps.
@@ -229,7 +231,7 @@ def build_program(params: ArmParams, branch: str = "front-up", trig: str = "subr
     L1, L2, L3 = params.L1, params.L2, params.L3
     ppr = tuple(float(v) for v in params.pulses_per_rev)
     front = branch.startswith("front")
-    # elbow sign as in analysis.arm: theta3 = -usign * rsign * acos(c3)
+    # elbow sign as in analysis.kinematics.arm: theta3 = -usign * rsign * acos(c3)
     rsign = 1.0 if front else -1.0
     usign = 1.0 if branch.endswith("up") else -1.0
     t3sign = -usign * rsign

@@ -28,7 +28,7 @@ cycle time 500 us (1 kHz) by default.
 
 from __future__ import annotations
 
-from .memmap import MemoryMap, default_map
+from analysis.plc.memmap import MemoryMap, default_map
 
 __all__ = ["MOTION_MAP", "motion_networks"]
 

@@ -1,4 +1,5 @@
-"""Run the paper's own STL (Figures 3-6, as transcribed in :data:`analysis.paper.FIGURE_STL`).
+"""Run the paper's own STL (Figures 3-6, as transcribed in
+:data:`analysis.papers.grabber.FIGURE_STL`).
 
 The printed listings are wrapped in one OB1 (Figure 3, 4, 6, 5: Figure 5 reads theta3
 from VD48, which Figure 6 writes), given the ARCTAN/ARCCOS subroutines they call (the
@@ -19,11 +20,11 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from .emit import emit_s7200_subroutines
-from .ir import Instr, Subroutine, acos_subroutine, atan2_subroutine
-from .memmap import default_map
-from .runner import AwlRunner
-from .translate import translate_s7200
+from analysis.plc.emit import emit_s7200_subroutines
+from analysis.plc.ir import Instr, Subroutine, acos_subroutine, atan2_subroutine
+from analysis.plc.memmap import default_map
+from analysis.plc.runner import AwlRunner
+from analysis.plc.translate import translate_s7200
 
 __all__ = ["PaperRun", "figure_text", "paper_program", "run_paper_listings"]
 
@@ -47,7 +48,7 @@ def _arccos_subroutine(number: int = 4) -> Subroutine:
 
 
 def _figure(n: int) -> str:
-    from .. import paper
+    from analysis.papers import grabber as paper
 
     return paper.FIGURE_STL[n]
 

@@ -7,7 +7,7 @@ import numpy as np
 import numpy.typing as npt
 from matplotlib.axes import Axes
 
-from ..pulses import round_half_away
+from analysis.kinematics.pulses import round_half_away
 
 __all__ = ["plot_rounding_margin"]
 

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
-from .memmap import MemoryMap
+from analysis.plc.memmap import MemoryMap
 
 __all__ = ["AwlRunner", "RunResult", "run_targets"]
 
@@ -119,7 +119,7 @@ class AwlRunner:
     @property
     def stopped(self) -> bool:
         """True once translated S7-200 code hit a NaN in a REAL compare (CPU STOP)."""
-        from .translate import STOP_BIT
+        from analysis.plc.translate import STOP_BIT
 
         return self.read_bit(*STOP_BIT)
 

@@ -1,7 +1,7 @@
 """Targets and comparison for executing the generated PLC programs against Python.
 
-The Python reference is :meth:`analysis.arm.Arm.solve` (float64) followed by
-:func:`analysis.pulses.angles_to_pulses` with the dialect's tie rule; on the base axis
+The Python reference is :meth:`analysis.kinematics.arm.Arm.solve` (float64) followed by
+:func:`analysis.kinematics.pulses.angles_to_pulses` with the dialect's tie rule; on the base axis
 both use theta1 = 0. A PLC pulse count may differ from the reference only where the
 exact (float64) pulse value lies so close to a half pulse that float32 arithmetic lands
 on the other side; :func:`compare` counts those cases and reports how close they were.
@@ -15,10 +15,10 @@ import numpy as np
 import numpy.typing as npt
 import pandas as pd
 
-from ..arm import Arm
-from ..params import data_dir
-from ..pulses import angles_to_pulses
-from .runner import RunResult
+from analysis.kinematics.arm import Arm
+from analysis.kinematics.params import data_dir
+from analysis.kinematics.pulses import angles_to_pulses
+from analysis.plc.runner import RunResult
 
 __all__ = [
     "Comparison",
@@ -246,7 +246,7 @@ def compare(
 
 def pulse_value_bytes(program, mmap) -> tuple[int, int, int]:
     """Byte offsets of the unrounded pulse values (theta * ppr / 2 pi, REAL) in ``program``."""
-    from .emit import allocate
+    from analysis.plc.emit import allocate
 
     work = allocate(program, mmap)
     return tuple(work[k] for k in ("t1", "t2", "t3"))

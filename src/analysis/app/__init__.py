@@ -1,0 +1,1 @@
+"""The application: one command line, the report site, the interactive explorer, plotting."""

@@ -1,0 +1,114 @@
+"""One figure style and one way to save figures (SVG + PNG, named after the notebook).
+
+Plot helpers in this package follow ``plot_*(..., ax=None) -> Axes``: they draw on the
+given (or a new) Axes, never call ``plt.show()``, never touch global ``rcParams`` and never
+save. Notebooks and the report builder apply :func:`style` as a context manager and save
+through :func:`save_figure`.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+from collections.abc import Iterator
+from pathlib import Path
+
+import matplotlib as mpl
+import matplotlib.pyplot as plt
+import numpy as np
+import numpy.typing as npt
+
+__all__ = ["STYLE", "figure_dir", "plot_arm", "save_figure", "style"]
+
+STYLE: dict[str, object] = {
+    "figure.figsize": (6.4, 4.8),
+    "figure.dpi": 100,
+    "savefig.dpi": 150,
+    "savefig.bbox": "tight",
+    "font.size": 10,
+    "axes.grid": True,
+    "grid.alpha": 0.3,
+    "axes.spines.top": False,
+    "axes.spines.right": False,
+    "legend.frameon": False,
+    "image.cmap": "viridis",
+    "svg.hashsalt": "analysis",  # stable element ids in SVG output
+    "svg.fonttype": "none",
+}
+
+
+@contextlib.contextmanager
+def style() -> Iterator[None]:
+    """Apply the project's figure style for the duration of a ``with`` block."""
+    with mpl.rc_context(STYLE):
+        yield
+
+
+def figure_dir() -> Path:
+    """Where figures go: ``$ANALYSIS_FIGURE_DIR`` or ``<project>/build/figures``."""
+    env = os.environ.get("ANALYSIS_FIGURE_DIR")
+    return Path(env) if env else Path(__file__).resolve().parents[3] / "build" / "figures"
+
+
+def save_figure(fig: mpl.figure.Figure, stem: str, folder: str | Path | None = None) -> list[str]:
+    """Save ``fig`` as ``<stem>.svg`` and ``<stem>.png`` in ``folder`` (default :func:`figure_dir`).
+
+    ``stem`` starts with the notebook number (``"05-workspace-xz"``). Returns the file
+    names (not absolute paths, so notebook outputs do not depend on the machine).
+    SVGs carry no date, so re-running a notebook reproduces them byte for byte.
+    """
+    if not stem[:2].isdigit():
+        raise ValueError(
+            f"figure stem {stem!r} must start with the notebook number, e.g. '05-workspace'"
+        )
+    out = Path(folder) if folder is not None else figure_dir()
+    out.mkdir(parents=True, exist_ok=True)
+    names = []
+    for ext, meta in (("svg", {"Date": None}), ("png", {"Software": None})):
+        name = f"{stem}.{ext}"
+        with mpl.rc_context({"svg.hashsalt": "analysis"}):
+            fig.savefig(out / name, format=ext, metadata=meta)
+        names.append(name)
+    return names
+
+
+def plot_arm(
+    arm,
+    q: npt.ArrayLike,
+    *,
+    ax: mpl.axes.Axes | None = None,
+    target: npt.ArrayLike | None = None,
+    label: str | None = None,
+    color: str = "C0",
+) -> mpl.axes.Axes:
+    """Draw the arm as a 3D stick figure: base axis, waist, upper arm, forearm.
+
+    Parameters
+    ----------
+    arm : analysis.kinematics.arm.Arm
+    q : array_like, shape (3,)
+        Joint angles [rad].
+    ax : 3D Axes, optional
+        Created (``projection="3d"``) if not given.
+    target : array_like, shape (3,), optional
+        Drawn as a cross, to show where the gripper should be.
+    """
+    if ax is None:
+        ax = plt.figure().add_subplot(projection="3d")
+    q = np.asarray(q, dtype=float)
+    base = np.zeros(3)
+    pts = np.array([base, arm.shoulder, arm.elbow(q), arm.fk(q)])
+    ax.plot(*pts.T, "-o", color=color, lw=3, ms=5, label=label)
+    ax.plot([0, 0], [0, 0], [0, arm.params.L1], color="0.4", lw=6, alpha=0.5)
+    if target is not None:
+        t = np.asarray(target, dtype=float)
+        ax.scatter(*t, marker="x", s=80, color="C3", label="target")
+    ax.set_xlabel("x [mm]")
+    ax.set_ylabel("y [mm]")
+    ax.set_zlabel("z [mm]")
+    reach = arm.params.reach_outer
+    ax.set_xlim(-reach, reach)
+    ax.set_ylim(-reach, reach)
+    ax.set_zlim(0, arm.params.L1 + reach)
+    ax.set_box_aspect((1, 1, (arm.params.L1 + reach) / (2 * reach)))
+    return ax

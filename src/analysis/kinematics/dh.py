@@ -1,0 +1,282 @@
+"""Denavit-Hartenberg link transforms, standard and modified, numeric and symbolic.
+
+One formula per convention, written once (:func:`_link_elements`), serves both the numeric
+path (NumPy, vectorized over any leading shape) and the symbolic path (SymPy matrices),
+so the two cannot drift apart.
+
+Conventions
+-----------
+Standard D-H (Denavit & Hartenberg; the paper's Table 1 and the matrices of section 1.2)::
+
+    A_i = Rz(theta_i) Tz(d_i) Tx(a_i) Rx(alpha_i)
+
+Modified D-H (Craig; seed 001's palletizer, its eq. 8), each row holding
+``(alpha_{i-1}, a_{i-1}, d_i, theta_i)``::
+
+    A_i = Rx(alpha_{i-1}) Tx(a_{i-1}) Rz(theta_i) Tz(d_i)
+
+A row's joint angle is ``theta_i = q_i + theta_offset_i`` for a revolute row; a ``fixed``
+row (a tool frame) has no joint variable and uses ``theta_offset`` alone. Angles are in
+radians, lengths in millimetres. Frames are named ``T_<to>_<from>`` where it matters:
+``T_0_n = A_1 A_2 ... A_n`` maps points of frame n into the base frame 0.
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Literal
+
+import numpy as np
+import numpy.typing as npt
+import sympy as sp
+
+Convention = Literal["standard", "modified"]
+JointKind = Literal["revolute", "fixed"]
+CONVENTIONS: tuple[Convention, ...] = ("standard", "modified")
+
+__all__ = [
+    "CONVENTIONS",
+    "DHRow",
+    "DHTable",
+    "inverse_transform",
+    "link_transform",
+    "link_transform_sym",
+]
+
+
+def _link_elements(ct, st, ca, sa, a, d, convention: Convention) -> list[list]:
+    """The 3x4 upper block of one link transform from cos/sin of theta and alpha.
+
+    Works on any objects supporting ``*``, ``-`` and unary minus: NumPy arrays or SymPy
+    expressions. Returns rows of the top three lines; the last line is ``[0, 0, 0, 1]``.
+    """
+    if convention == "standard":
+        return [
+            [ct, -st * ca, st * sa, a * ct],
+            [st, ct * ca, -ct * sa, a * st],
+            [0 * ct, sa + 0 * ct, ca + 0 * ct, d + 0 * ct],
+        ]
+    if convention == "modified":
+        return [
+            [ct, -st, 0 * ct, a + 0 * ct],
+            [st * ca, ct * ca, -sa + 0 * ct, -d * sa + 0 * ct],
+            [st * sa, ct * sa, ca + 0 * ct, d * ca + 0 * ct],
+        ]
+    raise ValueError(f"unknown D-H convention {convention!r}; expected one of {CONVENTIONS}")
+
+
+def link_transform(
+    theta: npt.ArrayLike,
+    d: npt.ArrayLike,
+    a: npt.ArrayLike,
+    alpha: npt.ArrayLike,
+    convention: Convention = "standard",
+) -> npt.NDArray[np.float64]:
+    """Numeric homogeneous transform of one D-H link (paper section 1.2, matrices A_i).
+
+    Parameters
+    ----------
+    theta, d, a, alpha : array_like, broadcastable
+        Joint angle [rad], offset along z [mm], length along x [mm], twist [rad].
+    convention : {"standard", "modified"}
+
+    Returns
+    -------
+    ndarray, shape (..., 4, 4)
+
+    Examples
+    --------
+    The paper's A_1 at theta_1 = 45 deg (Table 1: alpha = 90 deg, a = 0, d = L1 = 660 mm)
+    maps the origin of frame 1 to the shoulder point (0, 0, 660) mm:
+
+    >>> T = link_transform(np.pi / 4, 660.0, 0.0, np.pi / 2)
+    >>> T[:3, 3].round(9).tolist()
+    [0.0, 0.0, 660.0]
+    """
+    theta, d, a, alpha = np.broadcast_arrays(
+        *(np.asarray(v, dtype=float) for v in (theta, d, a, alpha))
+    )
+    rows = _link_elements(
+        np.cos(theta), np.sin(theta), np.cos(alpha), np.sin(alpha), a, d, convention
+    )
+    out = np.zeros((*theta.shape, 4, 4))
+    for i, row in enumerate(rows):
+        for j, value in enumerate(row):
+            out[..., i, j] = value
+    out[..., 3, 3] = 1.0
+    return out
+
+
+def link_transform_sym(theta, d, a, alpha, convention: Convention = "standard") -> sp.Matrix:
+    """Symbolic (SymPy) homogeneous transform of one D-H link; same formula as
+    :func:`link_transform`. Pass exact angles (``sp.pi / 2``) to get exact 0 and 1."""
+    theta, d, a, alpha = (sp.sympify(v) for v in (theta, d, a, alpha))
+    rows = _link_elements(
+        sp.cos(theta), sp.sin(theta), sp.cos(alpha), sp.sin(alpha), a, d, convention
+    )
+    return sp.Matrix([*[[sp.sympify(v) for v in r] for r in rows], [0, 0, 0, 1]])
+
+
+def inverse_transform(T: npt.ArrayLike) -> npt.NDArray[np.float64]:
+    """Inverse of homogeneous transforms, ``[R p; 0 1]^-1 = [R^T  -R^T p; 0 1]``.
+
+    The closed form behind the paper's A_i^-1 (section 1.2). Shape (..., 4, 4).
+    """
+    T = np.asarray(T, dtype=float)
+    R_t = np.swapaxes(T[..., :3, :3], -1, -2)
+    out = np.zeros_like(T)
+    out[..., :3, :3] = R_t
+    out[..., :3, 3] = -np.einsum("...ij,...j->...i", R_t, T[..., :3, 3])
+    out[..., 3, 3] = 1.0
+    return out
+
+
+@dataclass(frozen=True)
+class DHRow:
+    """One row of a D-H table. Angles in radians, lengths in mm.
+
+    For the modified convention ``alpha`` and ``a`` are the row's ``alpha_{i-1}`` and
+    ``a_{i-1}`` (Craig's table layout).
+    """
+
+    alpha: float
+    a: float
+    d: float
+    theta_offset: float = 0.0
+    kind: JointKind = "revolute"
+    name: str = ""
+
+    def __post_init__(self) -> None:
+        for label in ("alpha", "a", "d", "theta_offset"):
+            value = getattr(self, label)
+            if isinstance(value, (int, float)) and not math.isfinite(value):
+                raise ValueError(f"D-H row {self.name or '?'}: {label} = {value} is not finite")
+        if self.kind not in ("revolute", "fixed"):
+            raise ValueError(
+                f"D-H row {self.name or '?'}: kind {self.kind!r} is not 'revolute' or 'fixed'"
+            )
+
+
+@dataclass(frozen=True)
+class DHTable:
+    """An ordered D-H table of one convention: the single source of the chain geometry.
+
+    The same rows feed :meth:`fk` (NumPy), :meth:`transforms_sym` (SymPy) and
+    :func:`analysis.kinematics.pinocchio_model.build_model` (Pinocchio).
+    """
+
+    rows: tuple[DHRow, ...]
+    convention: Convention = "standard"
+    name: str = field(default="", compare=False)
+
+    def __post_init__(self) -> None:
+        if self.convention not in CONVENTIONS:
+            raise ValueError(
+                f"unknown D-H convention {self.convention!r}; expected one of {CONVENTIONS}"
+            )
+        if not self.rows:
+            raise ValueError("a D-H table needs at least one row")
+        object.__setattr__(self, "rows", tuple(self.rows))
+
+    @property
+    def n_joints(self) -> int:
+        """Number of joint variables (revolute rows)."""
+        return sum(row.kind == "revolute" for row in self.rows)
+
+    def joint_angles(self, q: npt.ArrayLike) -> npt.NDArray[np.float64]:
+        """Per-row theta for joint values ``q`` of shape (..., n_joints) -> (..., n_rows)."""
+        q = np.asarray(q, dtype=float)
+        if q.ndim == 0 or q.shape[-1] != self.n_joints:
+            raise ValueError(f"joint array has shape {q.shape}; expected (..., {self.n_joints})")
+        offsets = np.array([row.theta_offset for row in self.rows])
+        revolute = np.array([row.kind == "revolute" for row in self.rows])
+        theta = np.broadcast_to(offsets, (*q.shape[:-1], len(self.rows))).copy()
+        theta[..., revolute] += q
+        return theta
+
+    def transforms(self, q: npt.ArrayLike) -> npt.NDArray[np.float64]:
+        """Link transforms A_1..A_n, shape (..., n_rows, 4, 4), for joints (..., n_joints)."""
+        theta = self.joint_angles(q)
+        d = np.array([r.d for r in self.rows])
+        a = np.array([r.a for r in self.rows])
+        alpha = np.array([r.alpha for r in self.rows])
+        return link_transform(theta, d, a, alpha, self.convention)
+
+    def fk(self, q: npt.ArrayLike) -> npt.NDArray[np.float64]:
+        """Base-to-last-frame transform ``T_0_n = A_1 ... A_n`` (paper eq. 1), (..., 4, 4)."""
+        A = self.transforms(q)
+        T = A[..., 0, :, :]
+        for i in range(1, len(self.rows)):  # loop over links, never over points
+            T = T @ A[..., i, :, :]
+        return T
+
+    def transforms_sym(self, q: Sequence | None = None, exact: bool = True) -> list[sp.Matrix]:
+        """Symbolic link transforms A_1..A_n.
+
+        ``q`` defaults to symbols theta1..thetan. With ``exact`` the twist angles are
+        rationalised to multiples of pi (90 deg -> pi/2), so cos/sin become exact 0/1.
+        """
+        if q is None:
+            q = sp.symbols(f"theta1:{self.n_joints + 1}", real=True)
+        q = list(q)
+        if len(q) != self.n_joints:
+            raise ValueError(f"{len(q)} joint symbols given; the table has {self.n_joints} joints")
+        it = iter(q)
+        out = []
+        for row in self.rows:
+            alpha = _exact_angle(row.alpha) if exact else row.alpha
+            offset = _exact_angle(row.theta_offset) if exact else row.theta_offset
+            theta = offset + next(it) if row.kind == "revolute" else offset
+            out.append(
+                link_transform_sym(
+                    theta, _exact(row.d, exact), _exact(row.a, exact), alpha, self.convention
+                )
+            )
+        return out
+
+    @classmethod
+    def from_csv(cls, path: str | Path, convention: Convention, name: str = "") -> DHTable:
+        """Read a D-H table CSV with columns ``alpha_deg, a_mm, d_mm`` and optional
+        ``theta_offset_deg``, ``kind`` (revolute|fixed) and ``joint`` (row name)."""
+        path = Path(path)
+        with path.open(newline="", encoding="utf-8") as fh:
+            reader = csv.DictReader(fh)
+            missing = {"alpha_deg", "a_mm", "d_mm"} - set(reader.fieldnames or ())
+            if missing:
+                raise ValueError(f"{path}: missing column(s) {', '.join(sorted(missing))}")
+            rows = []
+            for lineno, rec in enumerate(reader, start=2):
+                try:
+                    rows.append(
+                        DHRow(
+                            alpha=math.radians(float(rec["alpha_deg"])),
+                            a=float(rec["a_mm"]),
+                            d=float(rec["d_mm"]),
+                            theta_offset=math.radians(float(rec.get("theta_offset_deg") or 0.0)),
+                            kind=(rec.get("kind") or "revolute").strip(),
+                            name=(rec.get("joint") or "").strip(),
+                        )
+                    )
+                except ValueError as exc:
+                    raise ValueError(f"{path} line {lineno}: {exc}") from None
+        return cls(tuple(rows), convention, name or path.stem)
+
+
+def _exact(value, exact: bool):
+    if isinstance(value, sp.Basic) or not exact:
+        return sp.sympify(value)
+    return sp.nsimplify(value)
+
+
+def _exact_angle(value):
+    """Radians -> exact multiple of pi where the angle is a whole number of degrees."""
+    if isinstance(value, sp.Basic):
+        return value
+    deg = math.degrees(value)
+    if abs(deg - round(deg)) < 1e-9:
+        return sp.Rational(round(deg), 180) * sp.pi
+    return sp.Float(value)

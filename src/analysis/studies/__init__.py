@@ -1,0 +1,1 @@
+"""Studies built on the kinematics: workspace, quantization, trajectories, companion systems."""
