@@ -101,7 +101,7 @@ def check_solutions(arm: Arm, p, sol: IKSolutions, atol_mm=ATOL_MM):
     """Every ok branch lands on p; NaN exactly where not ok."""
     assert np.isnan(sol.theta[~sol.ok]).all()
     assert np.isfinite(sol.theta[sol.ok]).all()
-    reached = arm.fk(sol.theta)
+    reached = arm.fk(np.where(sol.ok[..., None], sol.theta, 0.0))  # fk refuses NaN
     err = np.linalg.norm(reached - np.asarray(p)[..., None, :], axis=-1)
     assert (err[sol.ok] <= atol_mm).all(), (
         f"max FK(IK(p)) error {err[sol.ok].max():.3e} mm > {atol_mm:g}"

@@ -55,7 +55,8 @@ def test_golden_s7200_has_paper_structure():
 def test_no_link_length_typed_into_emitters():
     p = paper_params().with_(L2=321.0, L3=123.0)
     text = emit_s7200(build_program(p))
-    assert "321.0" in text and str((321.0 + 123.0) ** 2).rstrip("0").rstrip(".") in text
+    # the lengths come from the parameters: L2, L2 + L3 (the reach) and L2^2 + L3^2 (eq. 10)
+    assert "321.0" in text and "444.0" in text and str(321.0**2 + 123.0**2) in text
     assert "310.0" not in text
 
 
@@ -63,7 +64,13 @@ def test_map_json_names_every_address():
     _, mjson = generate("s7-200")
     d = json.loads(mjson)
     assert d["inputs"] == {"px": "VD0", "py": "VD4", "pz": "VD8"}  # Figure 3
-    assert set(d["outputs"]) == {"c1", "c2", "c3", "reachable"}
+    assert d["outputs"] == {
+        "c1": "VD100",
+        "c2": "VD104",
+        "c3": "VD108",
+        "reachable": "V112.0",
+        "status": "VD116",
+    }
     mm = MemoryMap.from_dict(d)
     assert mm == default_map("s7-200")
 

@@ -20,7 +20,7 @@ from analysis.plc.memmap import default_map
 from analysis.plc.paper_listings import figure_text, run_paper_listings
 from analysis.plc.runner import AwlRunner
 from analysis.plc.translate import I_BASE, PLS_LOG, Q_BASE, SM_BASE, translate_s7200
-from analysis.plc.verify import compare, pulse_value_bytes, sweep_targets, table4_targets
+from analysis.plc.verify import compare, sweep_targets, table4_targets
 
 pytest.importorskip("awlsim")
 SENTINEL = -999_999
@@ -31,10 +31,10 @@ def _source(variant: str, branch: str = "front-up", with_program: bool = False):
     P = ARM.params
     if variant.startswith("s7-300"):
         prog = build_program(P, branch, "native" if variant == "s7-300-native" else "subroutine")
-        out = emit_s7300(prog), default_map("s7-300"), "half-even"
+        out = emit_s7300(prog), default_map("s7-300"), "s7-300"
     else:
         prog = build_program(P, branch)
-        out = translate_s7200(emit_s7200(prog)).awl, default_map("s7-200"), "half-away"
+        out = translate_s7200(emit_s7200(prog)).awl, default_map("s7-200"), "s7-200"
     return (*out, prog) if with_program else out
 
 
@@ -56,14 +56,10 @@ def targets():
     ],
 )
 def test_sweep_matches_python(variant, branch, targets):
-    src, mmap, rounding, prog = _source(variant, branch, with_program=True)
+    src, mmap, dialect, prog = _source(variant, branch, with_program=True)
     runner = AwlRunner(src, mmap)
-    res = runner.solve(
-        targets[["x_mm", "y_mm", "z_mm"]].to_numpy(),
-        sentinel=SENTINEL,
-        reals=pulse_value_bytes(prog, mmap),
-    )
-    cmp = compare(res, targets, ARM, branch, rounding, SENTINEL)
+    res = runner.solve(targets[["x_mm", "y_mm", "z_mm"]].to_numpy(), sentinel=SENTINEL)
+    cmp = compare(res, targets, ARM, branch, dialect, SENTINEL, prog.trig)
     assert cmp.n >= 1000
     assert set(targets["kind"]) >= {
         "table4",
@@ -76,6 +72,10 @@ def test_sweep_matches_python(variant, branch, targets):
         "huge",
     }
     assert not runner.stopped  # no REAL compare saw a NaN
+    # the float32 model of the program reproduces awlsim bit for bit (status and pulses)
+    assert cmp.model_exact
+    # the same targets refused, with the same status code, as Python (base axis included)
+    assert cmp.status_mismatch == 0
     assert cmp.flag_mismatch == 0
     assert cmp.unchanged_ok
     # float32 may land on the other side of a half pulse: allowed only within one pulse,
@@ -95,15 +95,15 @@ def test_sweep_matches_python(variant, branch, targets):
 @pytest.mark.parametrize("branch", BRANCHES)
 @pytest.mark.parametrize("variant", ["s7-300-native", "s7-200-translated"])
 def test_table4_and_branches(variant, branch):
-    src, mmap, rounding = _source(variant, branch)
+    src, mmap, dialect = _source(variant, branch)
     t4 = table4_targets()
     pts = np.vstack([t4, [[-150.0, -80.0, 700.0], [0.0, 0.0, 900.0]]])
     import pandas as pd
 
     df = pd.DataFrame(pts, columns=["x_mm", "y_mm", "z_mm"]).assign(kind="t")
     res = AwlRunner(src, mmap).solve(pts, sentinel=SENTINEL)
-    cmp = compare(res, df, ARM, branch, rounding, SENTINEL)
-    assert cmp.flag_mismatch == 0 and cmp.pulse_mismatch == 0
+    cmp = compare(res, df, ARM, branch, dialect, SENTINEL)
+    assert cmp.flag_mismatch == 0 and cmp.pulse_mismatch == 0 and cmp.status_mismatch == 0
     if branch == "front-up":
         assert res.pulses[0].tolist() == [500, 113, -1724]  # (45.00, 10.21, -155.13) deg
         assert not res.reachable[7]  # Table 4 row 8 (200, 500, 600): 无解

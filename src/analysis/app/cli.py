@@ -299,5 +299,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         return int(args.func(args) or 0)
     except (UsageError, UnreachableError, BaseAxisError, ValueError, FileNotFoundError) as exc:
         message = " ".join(str(exc).split())
+        if isinstance(exc, BaseAxisError):
+            message += " (here: --theta1-on-axis DEG)"
         print(f"{parser.prog} {args.command}: error: {message}", file=sys.stderr)
         return 2

@@ -1,90 +1,82 @@
-"""The paper's 3R waist/shoulder/elbow arm: FK, closed-form IK (all branches), Jacobian.
+"""An arm: its description, its closed form, and the numeric kinematics derived from them.
 
-Geometry (Table 1 / Table 3, standard D-H): the waist turns about the vertical base axis;
-the shoulder sits on that axis at height L1; the upper arm (L2) and forearm (L3) move in
-the vertical arm plane at azimuth theta1. Angles in radians, lengths in mm.
+:class:`Arm` ties together one description (``data/arms/<name>.toml``, read by
+:mod:`analysis.kinematics.description`) and one closed form
+(:mod:`analysis.kinematics.arms`). Nothing here is specific to an arm:
 
-Branches
---------
-Four solutions exist for a reachable target off the base axis:
+- forward kinematics and frame origins come from the D-H chain (:func:`chain_frames`, the
+  one formula of :mod:`analysis.kinematics.dh` composed in a math namespace);
+- the Jacobian is that chain differentiated by forward-mode duals
+  (:class:`~analysis.kinematics.ops.DualOps`), not written by hand;
+- :meth:`Arm.solve` runs the closed form and the shared solver body (:func:`solve_body`:
+  statuses, joint limits, NaN where no solution) with numpy, or the compiled kernel
+  generated from the very same body (:mod:`analysis.kinematics.compiled`).
 
-============  ====================================  =========================================
-name          theta1                                elbow
-============  ====================================  =========================================
-front-up      atan2(Py, Px)  (the paper, eq. 6)     above the shoulder-wrist line: theta3 < 0
-front-down    atan2(Py, Px)                         below: theta3 > 0
-back-up       atan2(Py, Px) + pi (wrapped)          above: theta3 > 0
-back-down     atan2(Py, Px) + pi (wrapped)          below: theta3 < 0
-============  ====================================  =========================================
-
-"front-up" is the paper's choice (eq. 6 and Table 4's negative elbow angles). In the back
-branches the arm reaches over the base axis, so the elbow sign flips for the same
-physical elbow-up posture.
-
-Corrected closed form (see the errata register for what the paper printed)::
-
-    theta1 = atan2(Py, Px)                                      (eq. 6, with atan2)
-    r      = cos(theta1) Px + sin(theta1) Py   (= +rho front, -rho back)   (eq. 7)
-    z      = Pz - L1                                                       (eq. 8)
-    cos(theta3) = (r^2 + z^2 - L2^2 - L3^2) / (2 L2 L3)                    (eqs. 9-10)
-    theta3 = -/+ acos(...)                       (eq. 10 gives only the + branch)
-    theta23 = atan2(z (L2 cos theta3 + L3) + r L2 sin theta3,
-                    r (L2 cos theta3 + L3) - z L2 sin theta3)          (eqs. 15-18, atan2)
-    theta2 = theta23 - theta3                                              (eq. 19)
+Angles in radians, lengths in mm; joint arrays have shape ``(..., n)``, targets
+``(..., 3)``.
 """
 
 from __future__ import annotations
 
-import enum
-from collections.abc import Sequence
-from dataclasses import dataclass
+import math
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from functools import cached_property
+from types import ModuleType
 from typing import NamedTuple
 
 import numpy as np
 import numpy.typing as npt
 
-from analysis.kinematics.params import ArmParams, paper_params
+from analysis.kinematics.arms import closed_form
+from analysis.kinematics.description import (
+    MAX_PULSES_PER_REV,
+    ArmDescription,
+    check_pulses_per_rev,
+    load_description,
+)
+from analysis.kinematics.dh import DHTable, chain_frames
+from analysis.kinematics.ops import DualOps, Ops, numpy_ops
+from analysis.kinematics.status import Status
 
 __all__ = [
     "BRANCHES",
     "DEFAULT_TOL_MM",
+    "MAX_JOINT_DEG",
+    "MAX_TOL_MM",
     "Arm",
     "BaseAxisError",
     "IKSolutions",
+    "Params",
     "Status",
     "UnreachableError",
     "as_points",
+    "check_joints",
+    "check_tol",
+    "load_arm",
     "paper_arm",
+    "solve_body",
 ]
 
 BRANCHES: tuple[str, ...] = ("front-up", "front-down", "back-up", "back-down")
+"""The paper's arm's branches (``analysis.kinematics.arms.grabber.BRANCHES``)."""
 DEFAULT_TOL_MM = 1e-6
 """Default distance tolerance [mm]: targets this close outside the reach shell are put on
 the shell (cos theta3 clipped to +-1), and targets this close to the base axis count as on
 it. 1 nm is far below any mechanical meaning and far above float64 round-off at this
 scale (|p| ~ 1e3 mm, eps * |p| ~ 2e-13 mm)."""
-
-_BRANCH_SIGNS = {  # (sign of r = front/back, sign of theta3 relative to -r: up/down)
-    "front-up": (1.0, 1.0),
-    "front-down": (1.0, -1.0),
-    "back-up": (-1.0, 1.0),
-    "back-down": (-1.0, -1.0),
-}
-
-
-class Status(enum.IntEnum):
-    """Why a target has (or has no) solution, per target in batch results."""
-
-    OK = 0
-    OUT_OF_REACH = 1  # farther than L2 + L3 from the shoulder
-    INSIDE_REACH = 2  # nearer than |L2 - L3| to the shoulder
-    BASE_AXIS = 3  # on the waist axis: theta1 undefined (reachable, but caller must choose)
+MAX_TOL_MM = 1.0
+"""Largest accepted tolerance [mm]: a solution "on the shell" may miss the target by up to
+the tolerance, and more than a millimetre would pass a visibly wrong pose as solved."""
+MAX_JOINT_DEG = 3600.0
+"""Largest accepted |joint angle| [deg] (ten turns): beyond it an input is a mistake of unit
+or of digits, not a pose."""
 
 
 class UnreachableError(ValueError):
-    """The target lies outside the reachable shell; ``distance_mm`` says how far."""
+    """The target lies outside the reachable set; ``distance_mm`` says how far."""
 
-    def __init__(self, message: str, target, distance_mm: float, limit_mm: float):
+    def __init__(self, message: str, target, distance_mm: float, limit_mm: float = math.nan):
         super().__init__(message)
         self.target = tuple(float(v) for v in target)
         self.distance_mm = float(distance_mm)
@@ -92,7 +84,7 @@ class UnreachableError(ValueError):
 
 
 class BaseAxisError(ValueError):
-    """The target is on the base (waist) axis, where theta1 is undefined."""
+    """The target is on the base axis, where the waist angle is undefined."""
 
     def __init__(self, message: str, target):
         super().__init__(message)
@@ -100,19 +92,20 @@ class BaseAxisError(ValueError):
 
 
 class IKSolutions(NamedTuple):
-    """Batch IK result for targets of shape (..., 3) and B branches.
+    """Batch IK result for targets of shape (...,) + (3,) and B branches of n joints.
 
     Attributes
     ----------
-    theta : ndarray, shape (..., B, 3)
-        Joint angles [rad], wrapped to (-pi, pi]. NaN exactly where ``ok`` is False.
+    theta : ndarray, shape (..., B, n)
+        Joint angles [rad] (see the closed form for wrapping). NaN exactly where ``ok``
+        is False.
     ok : ndarray of bool, shape (..., B)
-        True where the branch has a solution.
-    status : ndarray of int, shape (...,)
+        True where the branch has a solution within the joint limits.
+    status : ndarray of int8, shape (...,)
         :class:`Status` code per target.
     outside_mm : ndarray, shape (...,)
-        Signed distance outside the reachable shell [mm]: > 0 unreachable (by that
-        much), <= 0 reachable (its magnitude is the margin to the nearer boundary).
+        Signed distance outside the reachable set [mm]: > 0 unreachable (by that much),
+        <= 0 reachable (its magnitude is the margin to the nearer boundary).
     branches : tuple of str
         Branch names along axis -2 of ``theta``.
     """
@@ -125,13 +118,12 @@ class IKSolutions(NamedTuple):
 
     @property
     def reachable(self) -> npt.NDArray[np.bool_]:
-        """Targets inside the reachable shell within the tolerance ``solve`` used (base-axis
-        targets included): consistent with ``status`` and ``ok``. (``outside_mm <= 0``
-        would call a target 5e-7 mm outside "unreachable" although it is solved.)"""
+        """Targets inside the reachable set within the tolerance ``solve`` used (base-axis
+        and joint-limit targets included): consistent with ``status``."""
         return (self.status != Status.OUT_OF_REACH) & (self.status != Status.INSIDE_REACH)
 
     def branch(self, name: str) -> npt.NDArray[np.float64]:
-        """Angles of one branch, shape (..., 3)."""
+        """Angles of one branch, shape (..., n)."""
         return self.theta[..., self.branches.index(name), :]
 
 
@@ -156,45 +148,244 @@ def as_points(p: npt.ArrayLike, name: str = "target") -> npt.NDArray[np.float64]
     return arr
 
 
-def _wrap(angle: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
-    """Wrap to (-pi, pi]."""
-    out = np.mod(angle + np.pi, 2.0 * np.pi) - np.pi
-    return np.where(out == -np.pi, np.pi, out)
+def check_joints(q: npt.ArrayLike, n: int, name: str = "joint array") -> npt.NDArray[np.float64]:
+    """Validate joint angles (..., n) [rad]: numeric, finite, within +-:data:`MAX_JOINT_DEG`."""
+    try:
+        q = np.asarray(q, dtype=float)
+    except (TypeError, ValueError) as exc:
+        raise ValueError(f"{name} {q!r} is not numeric: {exc}") from None
+    if q.ndim == 0 or q.shape[-1] != n:
+        raise ValueError(f"{name} has shape {q.shape}; expected (..., {n})")
+    bad = ~np.isfinite(q) | (np.abs(q) > math.radians(MAX_JOINT_DEG))
+    if bad.any():
+        idx = tuple(int(i) for i in np.argwhere(bad)[0])
+        v = q[idx]
+        what = "is not finite" if not np.isfinite(v) else "is beyond"
+        raise ValueError(
+            f"{name}: theta{idx[-1] + 1} = {math.degrees(v) if np.isfinite(v) else v:g} deg "
+            f"{what} (accepted: finite, |theta| <= {MAX_JOINT_DEG:g} deg, ten turns)"
+        )
+    return q
 
 
-def _mm(distance: float) -> str:
-    """3 decimals, or 3 significant digits below 1e-3 mm (never "0.000 mm beyond")."""
-    return f"{distance:.3f}" if abs(distance) >= 1e-3 else f"{distance:.3g}"
+def check_tol(tol) -> float:
+    """A distance tolerance [mm] in 0 .. :data:`MAX_TOL_MM`, else ValueError."""
+    if not (
+        isinstance(tol, (int, float, np.floating, np.integer))
+        and not isinstance(tol, bool)
+        and math.isfinite(tol)
+        and 0 <= tol <= MAX_TOL_MM
+    ):
+        raise ValueError(
+            f"tol = {tol!r} mm: the tolerance must be a finite number >= 0 mm "
+            f"and <= {MAX_TOL_MM:g} mm"
+        )
+    return float(tol)
 
 
-def _fmt(p) -> str:
-    return "(" + ", ".join(f"{v:g}" for v in np.asarray(p, dtype=float)) + ")"
+# --------------------------------------------------------------------------------------------
+# parameters
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class Params(Mapping):
+    """The numbers of one arm: parameter values [mm] and pulses per revolution per joint.
+
+    A read-only mapping of parameter names to values that also allows attribute access
+    (``P.L1``) and, for named geometry of the closed form, ``P.reach_outer`` etc.
+    """
+
+    arm: str
+    data: Mapping[str, float]
+    pulses_per_rev: tuple[int, ...]
+    description: ArmDescription = field(compare=False, repr=False, default=None)
+    extra: Mapping = field(default_factory=dict)
+    """Informational items of the paper's tables (e.g. Table 3's step angles)."""
+
+    def __post_init__(self) -> None:
+        desc = self.description or load_description(self.arm)
+        object.__setattr__(self, "description", desc)
+        vals = {}
+        for k, v in dict(self.data).items():
+            if k not in desc.parameters:
+                raise ValueError(f"arm {self.arm}: unknown parameter {k!r}")
+            if isinstance(v, bool) or not isinstance(v, (int, float, np.floating, np.integer)):
+                raise ValueError(f"{k} = {v!r} mm is not a finite number")
+            if not math.isfinite(v):
+                raise ValueError(f"{k} = {v!r} mm is not a finite number")
+            vals[k] = float(v)
+        missing = set(desc.parameters) - set(vals)
+        if missing:
+            raise ValueError(f"arm {self.arm}: missing parameter(s) {sorted(missing)}")
+        object.__setattr__(self, "data", vals)
+        ppr = self.pulses_per_rev
+        if hasattr(ppr, "tolist"):
+            ppr = ppr.tolist()
+        n = len(desc.joints)
+        try:
+            if not isinstance(ppr, (list, tuple)) or len(ppr) != n:
+                raise ValueError
+            ppr = tuple(check_pulses_per_rev(v, "pulses_per_rev") for v in ppr)
+        except ValueError:
+            raise ValueError(
+                f"pulses_per_rev = {self.pulses_per_rev!r}: need {n} whole numbers in "
+                f"1 .. {MAX_PULSES_PER_REV:,}, one per joint"
+            ) from None
+        object.__setattr__(self, "pulses_per_rev", ppr)
+        closed_form(desc.closed_form).check(self)
+
+    @classmethod
+    def from_description(cls, desc: ArmDescription) -> Params:
+        return cls(desc.name, desc.values, tuple(j.pulses_per_rev for j in desc.joints), desc)
+
+    def __getitem__(self, key: str) -> float:
+        return self.data[key]
+
+    def __iter__(self):
+        return iter(self.data)
+
+    def __len__(self) -> int:
+        return len(self.data)
+
+    def __getattr__(self, name: str):
+        if name.startswith("_") or name in (
+            "arm",
+            "data",
+            "pulses_per_rev",
+            "description",
+            "extra",
+        ):
+            raise AttributeError(name)
+        if name in self.data:
+            return self.data[name]
+        if name in self.extra:
+            return self.extra[name]
+        geo = closed_form(self.description.closed_form).geometry(self)
+        if name in geo:
+            return geo[name]
+        raise AttributeError(f"arm {self.arm} has no parameter or geometry {name!r}")
+
+    def with_(self, **changes) -> Params:
+        """A copy with some values (or ``pulses_per_rev``) changed, validated again."""
+        ppr = changes.pop("pulses_per_rev", self.pulses_per_rev)
+        return Params(self.arm, {**self.data, **changes}, ppr, self.description, self.extra)
+
+    def dh_table(self, symbolic: bool = False) -> DHTable:
+        """The D-H chain with these values (or with the parameters' SymPy symbols)."""
+        return self.description.dh_table(self.data, symbolic=symbolic)
 
 
+# --------------------------------------------------------------------------------------------
+# the shared solver body
+# --------------------------------------------------------------------------------------------
+def solve_body(
+    m: Ops,
+    cf: ModuleType,
+    p,
+    P,
+    names: Sequence[str],
+    *,
+    tol,
+    limits: Sequence[tuple[float, float] | None] = (),
+    **options,
+) -> dict:
+    """Closed form + statuses + joint limits + NaN masking, in namespace ``m``.
+
+    Written once for every arm and backend: :meth:`Arm.solve` runs it with numpy, the
+    compiled kernel is generated from its recording, the PLC program from the closed form
+    it calls. Returns ``status`` (float code), ``outside``, and per branch ``b`` the
+    condition ``ok:b`` and the angles ``q:b:j`` (NaN where not ok).
+    """
+    sol = cf.ik(m, p, P, tol=tol, **options)
+    status = 0.0
+    for code, cond in reversed(sol["refusals"]):
+        status = m.select(cond, float(code), status)
+    good = m.eq(status, 0.0)
+    out = {"outside": sol["outside"]}
+    any_ok = None
+    for b in names:
+        q = sol["branches"][b]
+        ok = good
+        for qj, lim in zip(q, limits or [None] * len(q), strict=True):
+            if lim is not None:
+                ok = m.and_(ok, m.and_(m.ge(qj, lim[0]), m.le(qj, lim[1])))
+        out[f"ok:{b}"] = ok
+        for j, qj in enumerate(q):
+            out[f"q:{b}:{j}"] = m.select(ok, qj, math.nan)
+        any_ok = ok if any_ok is None else m.or_(any_ok, ok)
+    if any(lim is not None for lim in limits):
+        status = m.select(m.and_(good, m.not_(any_ok)), float(Status.JOINT_LIMITS), status)
+    out["status"] = status
+    return out
+
+
+# --------------------------------------------------------------------------------------------
+# the arm
+# --------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
 class Arm:
-    """The paper's arm with parameters ``params`` (Table 3 by default: :func:`paper_arm`)."""
+    """An arm with parameters ``params`` (its description and closed form follow from them).
 
-    params: ArmParams
+    Use :func:`load_arm` (by name) or :func:`paper_arm` (the paper's Table 3 arm).
+    """
 
-    # --- geometry -------------------------------------------------------------------
+    params: Params
+
+    # --- identity -----------------------------------------------------------------------
+    @property
+    def name(self) -> str:
+        return self.params.arm
+
+    @property
+    def description(self) -> ArmDescription:
+        return self.params.description
+
+    @cached_property
+    def closed_form(self) -> ModuleType:
+        return closed_form(self.description.closed_form)
+
+    @property
+    def branches(self) -> tuple[str, ...]:
+        """Branch names; the first is the default (the paper's choice)."""
+        return tuple(self.closed_form.BRANCHES)
+
+    @property
+    def n_joints(self) -> int:
+        return len(self.description.joints)
+
+    @cached_property
+    def table(self) -> DHTable:
+        """The D-H chain with this arm's parameter values."""
+        return self.params.dh_table()
+
+    @cached_property
+    def geometry(self) -> dict:
+        """Named points and radii of the closed form (e.g. the shoulder)."""
+        return self.closed_form.geometry(self.params)
+
     @property
     def shoulder(self) -> npt.NDArray[np.float64]:
-        """Shoulder point (0, 0, L1) [mm], centre of the reachable shell."""
-        return np.array([0.0, 0.0, self.params.L1])
+        """The shoulder point [mm] (arms whose closed form names one)."""
+        return np.array(self.geometry["shoulder"], dtype=float)
+
+    @cached_property
+    def limits(self) -> tuple[tuple[float, float] | None, ...]:
+        """Joint limits [rad] per joint, None where unrestricted."""
+        return tuple(None if j.unlimited else (j.lower, j.upper) for j in self.description.joints)
+
+    # --- forward kinematics, from the chain ----------------------------------------------
+    def frames(self, q: npt.ArrayLike) -> npt.NDArray[np.float64]:
+        """Origins of the chain's frames 0..n [mm], shape (..., n_rows + 1, 3): the base,
+        each link's end (D-H), the tool. For drawing the arm."""
+        q = check_joints(q, self.n_joints)
+        origins = chain_frames(numpy_ops, self.table, list(np.moveaxis(q, -1, 0)))
+        shape = q.shape[:-1]
+        return np.stack(
+            [np.stack([np.broadcast_to(c, shape) for c in o], axis=-1) for o in origins], axis=-2
+        )
 
     def fk(self, q: npt.ArrayLike) -> npt.NDArray[np.float64]:
-        """Gripper point for joint angles: the P column of eq. 2, T3 = A1 A2 A3.
-
-        Parameters
-        ----------
-        q : array_like, shape (..., 3)
-            (theta1, theta2, theta3) [rad].
-
-        Returns
-        -------
-        ndarray, shape (..., 3)
-            (Px, Py, Pz) [mm].
+        """End point [mm], shape (..., 3), for joint angles (..., n) [rad]: the position
+        column of the chain's product of link transforms (for the paper's arm, eq. 2).
 
         Examples
         --------
@@ -203,150 +394,150 @@ class Arm:
         >>> paper_arm().fk(np.radians([45.0, 10.2087, -155.1291])).round(2).tolist()
         [100.0, 100.0, 600.0]
         """
-        q = np.asarray(q, dtype=float)
-        if q.ndim == 0 or q.shape[-1] != 3:
-            raise ValueError(f"joint array has shape {q.shape}; expected (..., 3)")
-        L1, L2, L3 = self.params.L1, self.params.L2, self.params.L3
-        t1, t2, t3 = q[..., 0], q[..., 1], q[..., 2]
-        t23 = t2 + t3
-        r = L2 * np.cos(t2) + L3 * np.cos(t23)
-        return np.stack(
-            [np.cos(t1) * r, np.sin(t1) * r, L1 + L2 * np.sin(t2) + L3 * np.sin(t23)], axis=-1
-        )
+        q = check_joints(q, self.n_joints)
+        end = chain_frames(numpy_ops, self.table, list(np.moveaxis(q, -1, 0)))[-1]
+        return np.stack([np.broadcast_to(c, q.shape[:-1]) for c in end], axis=-1).astype(float)
 
     def elbow(self, q: npt.ArrayLike) -> npt.NDArray[np.float64]:
-        """Elbow point (origin of frame 2) [mm], shape (..., 3)."""
-        q = np.asarray(q, dtype=float)
-        t1, t2 = q[..., 0], q[..., 1]
-        r = self.params.L2 * np.cos(t2)
-        return np.stack(
-            [np.cos(t1) * r, np.sin(t1) * r, self.params.L1 + self.params.L2 * np.sin(t2)], axis=-1
-        )
+        """Origin of frame 2 (the paper's arm: the elbow) [mm], shape (..., 3)."""
+        return self.frames(q)[..., 2, :]
 
     def jacobian(self, q: npt.ArrayLike) -> npt.NDArray[np.float64]:
-        """Positional Jacobian dP/dq [mm/rad], shape (..., 3, 3); column j is dP/dtheta_j.
+        """Positional Jacobian dP/dq [mm/rad], shape (..., 3, n); column j is dP/dq_j.
 
-        Derivative of eq. 2's P column. Singular on the base axis (r = 0) and with the
-        elbow stretched or folded (sin theta3 = 0): det J = -L2 L3 sin(theta3) r
-        with r = L2 cos(theta2) + L3 cos(theta2 + theta3) (checked in sympy by the tests).
+        The chain of :meth:`fk` differentiated by forward-mode duals (exact to round-off).
         """
-        q = np.asarray(q, dtype=float)
-        L2, L3 = self.params.L2, self.params.L3
-        t1, t2, t3 = q[..., 0], q[..., 1], q[..., 2]
-        t23 = t2 + t3
-        c1, s1 = np.cos(t1), np.sin(t1)
-        r = L2 * np.cos(t2) + L3 * np.cos(t23)
-        h = L2 * np.sin(t2) + L3 * np.sin(t23)
-        zero = np.zeros_like(r)
+        q = check_joints(q, self.n_joints)
+        m = DualOps(numpy_ops)
+        qs = m.seed(list(np.moveaxis(q, -1, 0)))
+        end = chain_frames(m, self.table, qs)[-1]
+        shape = q.shape[:-1]
         cols = [
-            np.stack([-s1 * r, c1 * r, zero], axis=-1),
-            np.stack([-c1 * h, -s1 * h, r], axis=-1),
-            np.stack([-c1 * L3 * np.sin(t23), -s1 * L3 * np.sin(t23), L3 * np.cos(t23)], axis=-1),
+            np.stack(
+                [np.broadcast_to(c.d[j] if hasattr(c, "d") else 0.0, shape) for c in end], axis=-1
+            )
+            for j in range(self.n_joints)
         ]
-        return np.stack(cols, axis=-1)
+        return np.stack(cols, axis=-1).astype(float)
 
-    # --- reach -----------------------------------------------------------------------
+    # --- reach ---------------------------------------------------------------------------
     def outside_distance(self, p: npt.ArrayLike) -> npt.NDArray[np.float64]:
-        """Signed distance [mm] of targets outside the reachable shell (> 0: unreachable).
-
-        The shell is centred on the shoulder (0, 0, L1), radii |L2 - L3| and L2 + L3.
-        """
-        p = as_points(p)
-        D = np.linalg.norm(p - self.shoulder, axis=-1)
-        return np.maximum(D - self.params.reach_outer, self.params.reach_inner - D)
+        """Signed distance [mm] of targets outside the reachable set (> 0: unreachable)."""
+        return self.solve(p, self.branches[:1]).outside_mm
 
     def is_reachable(self, p: npt.ArrayLike, tol: float = DEFAULT_TOL_MM) -> npt.NDArray[np.bool_]:
-        """Mask of targets within ``tol`` mm of the reachable shell (..., )."""
-        return self.outside_distance(p) <= tol
+        """Mask of targets within ``tol`` mm of the reachable set (..., )."""
+        return self.solve(p, self.branches[:1], tol=tol).reachable
 
-    # --- inverse kinematics ----------------------------------------------------------
+    # --- inverse kinematics --------------------------------------------------------------
+    def branch_names(self, branches: str | Sequence[str]) -> tuple[str, ...]:
+        """Validated branch names (``"all"`` for every branch)."""
+        if isinstance(branches, str):
+            branches = self.branches if branches == "all" else (branches,)
+        names = tuple(branches)
+        unknown = [b for b in names if b not in self.branches]
+        if unknown or not names:
+            raise ValueError(
+                f"unknown branch {unknown or names!r}; expected 'all' or from "
+                f"{', '.join(self.branches)}"
+            )
+        return names
+
     def solve(
         self,
         p: npt.ArrayLike,
-        branches: str | Sequence[str] = BRANCHES,
+        branches: str | Sequence[str] = "all",
         *,
         theta1_on_axis: npt.ArrayLike | None = None,
         tol: float = DEFAULT_TOL_MM,
+        limits: bool = True,
+        backend: str = "numpy",
+        out: IKSolutions | None = None,
     ) -> IKSolutions:
-        """Batch closed-form IK (corrected eqs. 6-19); never raises for unreachable targets.
+        """Batch closed-form IK; never raises for unreachable targets.
 
         Parameters
         ----------
         p : array_like, shape (..., 3)
             Targets [mm].
         branches : str or sequence of str
-            Branch names (see module docstring) or ``"all"``.
+            Branch names or ``"all"``.
         theta1_on_axis : array_like, optional
-            Waist angle [rad] to use for targets on the base axis (broadcast against
-            ``p[..., 0]``). Without it such targets get ``Status.BASE_AXIS`` and no solution.
+            Waist angle [rad] for targets on the base axis (broadcast against
+            ``p[..., 0]``). Without it such targets get ``Status.BASE_AXIS``.
         tol : float
-            Distance tolerance [mm] for the reach shell and the base axis.
-
-        Returns
-        -------
-        IKSolutions
+            Distance tolerance [mm] (0 .. :data:`MAX_TOL_MM`).
+        limits : bool
+            Apply the description's joint limits (branches outside them are not ok).
+        backend : {"numpy", "compiled"}
+            "compiled" runs the kernel generated from the same closed form
+            (:mod:`analysis.kinematics.compiled`); it needs Numba and ``theta1_on_axis=None``.
+        out : IKSolutions, optional
+            Preallocated result (compiled backend; see :func:`~analysis.kinematics.compiled.
+            allocate`), reused to avoid touching fresh memory.
         """
-        names = _branch_names(branches)
+        names = self.branch_names(branches)
         p = as_points(p)
-        _check_options(theta1_on_axis, tol)
-        L1, L2, L3 = self.params.L1, self.params.L2, self.params.L3
-        x, y = p[..., 0], p[..., 1]
-        z, rho, D, D2 = _distances(p, L1)
-        on_axis = rho <= tol
-        phi = np.arctan2(y, x)
+        tol = check_tol(tol)
+        lim = self.limits if limits else ()
         if theta1_on_axis is not None:
-            phi = np.where(on_axis, np.asarray(theta1_on_axis, dtype=float), phi)
-        outside = np.maximum(D - (L2 + L3), abs(L2 - L3) - D)
-        status = np.full(p.shape[:-1], Status.OK, dtype=np.int8)
-        status[on_axis & (theta1_on_axis is None)] = Status.BASE_AXIS
-        status[D - (L2 + L3) > tol] = Status.OUT_OF_REACH
-        status[abs(L2 - L3) - D > tol] = Status.INSIDE_REACH
+            t = np.asarray(theta1_on_axis, dtype=float)
+            if not np.isfinite(t).all():
+                raise ValueError(f"theta1_on_axis = {theta1_on_axis!r} rad is not finite")
+        if backend == "compiled":
+            if theta1_on_axis is not None:
+                raise ValueError("the compiled backend takes no theta1_on_axis; use numpy")
+            from analysis.kinematics import compiled
 
-        c3 = np.clip((D2 - L2 * L2 - L3 * L3) / (2.0 * L2 * L3), -1.0, 1.0)  # eqs. 9-10
-        t3_mag = np.arccos(c3)
-        rsign, usign = (np.array([_BRANCH_SIGNS[n][k] for n in names]) for k in (0, 1))
-        # broadcast targets (..., 1) against branches (B,)
-        r = rsign * rho[..., None]
-        t1 = _wrap(phi[..., None] + np.where(rsign > 0, 0.0, np.pi))
-        t3 = _wrap(-usign * rsign * t3_mag[..., None])  # folded elbow: -pi -> pi
-        zb = z[..., None]
-        k = L2 * np.cos(t3) + L3
-        s = L2 * np.sin(t3)
-        t23 = np.arctan2(zb * k + r * s, r * k - zb * s)  # eq. 18 with atan2
-        t2 = _wrap(t23 - t3)  # eq. 19
-        theta = np.stack(np.broadcast_arrays(t1, t2, t3), axis=-1)
-        ok = np.broadcast_to((status == Status.OK)[..., None], theta.shape[:-1]).copy()
-        theta[~ok] = np.nan
-        return IKSolutions(theta, ok, status, outside, names)
+            return compiled.solve(self, p, names, tol=tol, limits=lim, out=out)
+        if backend != "numpy":
+            raise ValueError(f"backend {backend!r}: expected 'numpy' or 'compiled'")
+        opts = {} if theta1_on_axis is None else {"theta1_on_axis": theta1_on_axis}
+        with np.errstate(invalid="ignore", divide="ignore"):
+            r = solve_body(
+                numpy_ops,
+                self.closed_form,
+                tuple(p[..., k] for k in range(3)),
+                self.params,
+                names,
+                tol=tol,
+                limits=lim,
+                **opts,
+            )
+        shape = p.shape[:-1]
+        theta = np.stack(
+            [
+                np.stack(
+                    [np.broadcast_to(r[f"q:{b}:{j}"], shape) for j in range(self.n_joints)], -1
+                )
+                for b in names
+            ],
+            axis=-2,
+        ).astype(float)
+        ok = np.stack([np.broadcast_to(r[f"ok:{b}"], shape) for b in names], axis=-1)
+        status = np.broadcast_to(r["status"], shape).astype(np.int8)
+        outside = np.broadcast_to(r["outside"], shape).astype(float)
+        return IKSolutions(theta, ok.copy(), status, outside, names)
 
     def ik(
         self,
         p: npt.ArrayLike,
-        branch: str = "front-up",
+        branch: str | None = None,
         *,
         theta1_on_axis: float | None = None,
         tol: float = DEFAULT_TOL_MM,
     ) -> npt.NDArray[np.float64]:
-        """Closed-form IK for one target and one branch; raises on bad targets.
-
-        Parameters
-        ----------
-        p : array_like, shape (3,)
-            Target (Px, Py, Pz) [mm].
-        branch : str
-            One of :data:`BRANCHES`; the default is the paper's front-up.
-        theta1_on_axis : float, optional
-            Waist angle [rad] to use if the target is on the base axis.
+        """Closed-form IK for one target and one branch (default: the paper's); raises.
 
         Returns
         -------
-        ndarray, shape (3,)
-            (theta1, theta2, theta3) [rad].
+        ndarray, shape (n,)
+            Joint angles [rad].
 
         Raises
         ------
         UnreachableError
-            The target is outside the reachable shell; the message says by how much.
+            The target is outside the reachable set; the message says by how much.
         BaseAxisError
             The target is on the base axis and ``theta1_on_axis`` was not given.
 
@@ -358,8 +549,11 @@ class Arm:
         >>> np.degrees(paper_arm().ik([100, 100, 600])).round(2).tolist()
         [45.0, 10.21, -155.13]
         """
-        if branch not in BRANCHES:
-            raise ValueError(f"unknown branch {branch!r}; expected one of {', '.join(BRANCHES)}")
+        branch = branch or self.branches[0]
+        if branch not in self.branches:
+            raise ValueError(
+                f"unknown branch {branch!r}; expected one of {', '.join(self.branches)}"
+            )
         return self.ik_all(p, theta1_on_axis=theta1_on_axis, tol=tol, branches=(branch,))[branch]
 
     def ik_all(
@@ -368,96 +562,51 @@ class Arm:
         *,
         theta1_on_axis: float | None = None,
         tol: float = DEFAULT_TOL_MM,
-        branches: Sequence[str] = BRANCHES,
+        branches: Sequence[str] | None = None,
     ) -> dict[str, npt.NDArray[np.float64]]:
-        """All IK solutions of one target, ``{branch: (theta1, theta2, theta3)}`` [rad].
+        """All IK solutions of one target, ``{branch: angles}`` [rad]; raises like :meth:`ik`.
 
-        Raises like :meth:`ik`. On the base axis with ``theta1_on_axis`` given, the
-        "back" branches use theta1_on_axis + pi.
+        Branches outside the joint limits are left out; if none is left, ValueError.
         """
         p = as_points(p)
         if p.shape != (3,):
             raise ValueError(
                 f"ik takes one target of shape (3,), got {p.shape}; use solve() for batches"
             )
-        self.check_target(p, tol=tol, allow_axis=theta1_on_axis is not None)
-        sol = self.solve(p, branches, theta1_on_axis=theta1_on_axis, tol=tol)
-        return {name: sol.theta[i] for i, name in enumerate(sol.branches)}
+        names = self.branch_names(branches or "all")
+        sol = self.solve(p, names, theta1_on_axis=theta1_on_axis, tol=tol)
+        self.raise_for(p, int(sol.status), float(sol.outside_mm), tol=tol)
+        return {b: sol.theta[i] for i, b in enumerate(names) if sol.ok[i]}
 
-    def check_target(
-        self, p: npt.ArrayLike, *, tol: float = DEFAULT_TOL_MM, allow_axis: bool = False
-    ) -> None:
+    def check_target(self, p: npt.ArrayLike, *, tol: float = DEFAULT_TOL_MM, allow_axis=False):
         """Raise :class:`UnreachableError` or :class:`BaseAxisError` for one bad target."""
         p = as_points(p)
-        _check_options(None, tol)
-        P = self.params
-        _, rho, D, _ = (float(v) for v in _distances(p, P.L1))  # exactly as solve() decides
-        sh = _fmt(self.shoulder)
-        if D - P.reach_outer > tol:
-            raise UnreachableError(
-                f"target {_fmt(p)} mm is {_mm(D - P.reach_outer)} mm beyond the reach of "
-                f"{P.reach_outer:g} mm (L2 + L3) around the shoulder at {sh} mm "
-                f"(it is {D:.3f} mm away)",
-                p,
-                D - P.reach_outer,
-                P.reach_outer,
+        sol = self.solve(p, self.branches, tol=tol, theta1_on_axis=0.0 if allow_axis else None)
+        self.raise_for(p, int(sol.status), float(sol.outside_mm), tol=tol)
+
+    def raise_for(self, p, status: int, outside: float, *, tol: float) -> None:
+        """Raise the error that ``status`` means for target ``p`` (nothing if OK)."""
+        status = Status(status)
+        if status == Status.OK:
+            return
+        if status == Status.JOINT_LIMITS:
+            raise ValueError(
+                f"target {tuple(float(v) for v in p)} mm is reachable, but no requested branch "
+                f"is within the joint limits of {self.name}"
             )
-        if P.reach_inner - D > tol:
-            raise UnreachableError(
-                f"target {_fmt(p)} mm is {_mm(P.reach_inner - D)} mm inside the inner reach "
-                f"radius of {P.reach_inner:g} mm (|L2 - L3|) around the shoulder at {sh} mm "
-                f"(it is {D:.3f} mm away)",
-                p,
-                P.reach_inner - D,
-                P.reach_inner,
-            )
-        if rho <= tol and not allow_axis:
-            raise BaseAxisError(
-                f"target {_fmt(p)} mm lies on the base axis (distance {rho:.3g} mm <= tolerance "
-                f"{tol:g} mm): theta1 is undefined there; choose it with theta1_on_axis "
-                f"(CLI: --theta1-on-axis DEG)",
-                p,
-            )
+        message, limit = self.closed_form.refusal(status, p, self.params, tol=tol, distance=outside)
+        if status in (Status.OUT_OF_REACH, Status.INSIDE_REACH):
+            raise UnreachableError(message, p, outside, limit)
+        if status == Status.BASE_AXIS:
+            raise BaseAxisError(message, p)
+        raise ValueError(message)
 
 
-def _distances(p: npt.NDArray[np.float64], L1: float):
-    """``(z, rho, D, D^2)`` of targets relative to the shoulder: z = Pz - L1 (eq. 8),
-    rho = |(Px, Py)|, D = |(rho, z)|.
-
-    The squares are summed directly (no hypot) because eqs. 9-10 need D^2, not a rounded
-    D squared again; :mod:`analysis.kinematics.fastik` repeats these operations bit for bit, and
-    :meth:`Arm.check_target` uses them so that it and :meth:`Arm.solve` always agree.
-    """
-    x, y, z = p[..., 0], p[..., 1], p[..., 2] - L1
-    rho2 = x * x + y * y
-    D2 = rho2 + z * z
-    return z, np.sqrt(rho2), np.sqrt(D2), D2
-
-
-def _check_options(theta1_on_axis, tol) -> None:
-    """Reject options that would otherwise turn into silent NaN or wrong statuses."""
-    if not (
-        isinstance(tol, (int, float, np.floating, np.integer)) and np.isfinite(tol) and tol >= 0
-    ):
-        raise ValueError(f"tol = {tol!r} mm: the tolerance must be a finite number >= 0 mm")
-    if theta1_on_axis is not None:
-        t = np.asarray(theta1_on_axis, dtype=float)
-        if not np.isfinite(t).all():
-            raise ValueError(f"theta1_on_axis = {theta1_on_axis!r} rad is not finite")
-
-
-def _branch_names(branches: str | Sequence[str]) -> tuple[str, ...]:
-    if isinstance(branches, str):
-        branches = BRANCHES if branches == "all" else (branches,)
-    names = tuple(branches)
-    unknown = [b for b in names if b not in BRANCHES]
-    if unknown or not names:
-        raise ValueError(
-            f"unknown branch {unknown or names!r}; expected 'all' or from {', '.join(BRANCHES)}"
-        )
-    return names
+def load_arm(name: str = "grabber", tables: dict | None = None) -> Arm:
+    """The arm described by ``data/arms/<name>.toml`` (see :func:`load_description`)."""
+    return Arm(Params.from_description(load_description(name, tables)))
 
 
 def paper_arm() -> Arm:
-    """The arm of the paper, parameters from ``data/table3.csv``."""
-    return Arm(paper_params())
+    """The arm of the paper (seed 000), parameters from ``data/table3.csv``."""
+    return load_arm("grabber")

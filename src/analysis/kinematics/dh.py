@@ -17,7 +17,11 @@ Modified D-H (Craig; seed 001's palletizer, its eq. 8), each row holding
 
 A row's joint angle is ``theta_i = q_i + theta_offset_i`` for a revolute row; a ``fixed``
 row (a tool frame) has no joint variable and uses ``theta_offset`` alone. Angles are in
-radians, lengths in millimetres. Frames are named ``T_<to>_<from>`` where it matters:
+radians, lengths in millimetres.
+
+SymPy is imported inside the symbolic functions only: it takes half a second to import,
+which the numeric paths (the command line among them) should not pay. Frames are named
+``T_<to>_<from>`` where it matters:
 ``T_0_n = A_1 A_2 ... A_n`` maps points of frame n into the base frame 0.
 """
 
@@ -28,11 +32,13 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Literal
+from typing import TYPE_CHECKING, Literal
 
 import numpy as np
 import numpy.typing as npt
-import sympy as sp
+
+if TYPE_CHECKING:
+    import sympy as sp
 
 Convention = Literal["standard", "modified"]
 JointKind = Literal["revolute", "fixed"]
@@ -48,25 +54,103 @@ __all__ = [
 ]
 
 
+def _mul(a, b):
+    """a * b, exact for the structural zeros and ones of a D-H row (plain numbers)."""
+    if isinstance(a, (int, float)):
+        if a == 0:
+            return 0.0
+        if a == 1:
+            return b
+        if a == -1:
+            return -b
+    if isinstance(b, (int, float)):
+        if b == 0:
+            return 0.0
+        if b == 1:
+            return a
+        if b == -1:
+            return -a
+    return a * b
+
+
+def _add(a, b):
+    """a + b, dropping plain-number zeros."""
+    if isinstance(a, (int, float)) and a == 0:
+        return b
+    if isinstance(b, (int, float)) and b == 0:
+        return a
+    return a + b
+
+
 def _link_elements(ct, st, ca, sa, a, d, convention: Convention) -> list[list]:
     """The 3x4 upper block of one link transform from cos/sin of theta and alpha.
 
-    Works on any objects supporting ``*``, ``-`` and unary minus: NumPy arrays or SymPy
-    expressions. Returns rows of the top three lines; the last line is ``[0, 0, 0, 1]``.
+    The one formula per convention. Works on any values supporting ``*``, ``+`` and unary
+    minus: NumPy arrays, SymPy expressions, duals, traced nodes; plain-number zeros and
+    ones (cos 90 deg, a = 0) are kept exact and dropped. The last row is ``[0, 0, 0, 1]``.
     """
     if convention == "standard":
         return [
-            [ct, -st * ca, st * sa, a * ct],
-            [st, ct * ca, -ct * sa, a * st],
-            [0 * ct, sa + 0 * ct, ca + 0 * ct, d + 0 * ct],
+            [ct, -_mul(st, ca), _mul(st, sa), _mul(a, ct)],
+            [st, _mul(ct, ca), -_mul(ct, sa), _mul(a, st)],
+            [0, sa, ca, d],
         ]
     if convention == "modified":
         return [
-            [ct, -st, 0 * ct, a + 0 * ct],
-            [st * ca, ct * ca, -sa + 0 * ct, -d * sa + 0 * ct],
-            [st * sa, ct * sa, ca + 0 * ct, d * ca + 0 * ct],
+            [ct, -st, 0, a],
+            [_mul(st, ca), _mul(ct, ca), -sa, -_mul(d, sa)],
+            [_mul(st, sa), _mul(ct, sa), ca, _mul(d, ca)],
         ]
     raise ValueError(f"unknown D-H convention {convention!r}; expected one of {CONVENTIONS}")
+
+
+def exact_cos_sin(angle: float) -> tuple[float, float]:
+    """cos and sin of a constant angle [rad], exactly 0 or +-1 at multiples of 90 deg
+    (``math.cos(pi / 2)`` is 6.1e-17, which would leave spurious terms in a chain)."""
+    quarter = angle / (math.pi / 2)
+    k = round(quarter)
+    if abs(quarter - k) < 1e-12:
+        return ((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))[k % 4]
+    return math.cos(angle), math.sin(angle)
+
+
+def _compose(T: list[list], A: list[list]) -> list[list]:
+    """Product of two 3x4 blocks of homogeneous transforms (last rows [0 0 0 1])."""
+    out = []
+    for i in range(3):
+        row = []
+        for j in range(4):
+            v = _add(_add(_mul(T[i][0], A[0][j]), _mul(T[i][1], A[1][j])), _mul(T[i][2], A[2][j]))
+            row.append(_add(v, T[i][3]) if j == 3 else v)
+        out.append(row)
+    return out
+
+
+def chain_frames(m, table: DHTable, q: Sequence) -> list[tuple]:
+    """Origins of the frames 0..n_rows of a chain, as ``(x, y, z)`` values of namespace ``m``.
+
+    The chain's product of link transforms (eq. 1 for the paper's arm, T_3 = A_1 A_2 A_3)
+    composed element by element in ``m`` (numpy, duals, SymPy, the tracer): the one
+    forward kinematics every backend derives from. ``q`` holds one value per joint.
+    """
+    q = list(q)
+    if len(q) != table.n_joints:
+        raise ValueError(f"{len(q)} joint values given; the chain has {table.n_joints} joints")
+    it = iter(q)
+    T = None
+    origins: list[tuple] = [(0.0, 0.0, 0.0)]
+    for row in table.rows:
+        if row.kind == "revolute":
+            qi = next(it)
+            theta = _add(qi, row.theta_offset) if row.theta_offset else qi
+            ct, st = m.cos(theta), m.sin(theta)
+        else:
+            ct, st = exact_cos_sin(row.theta_offset)
+        ca, sa = exact_cos_sin(row.alpha)
+        A = _link_elements(ct, st, ca, sa, row.a, row.d, table.convention)
+        T = A if T is None else _compose(T, A)
+        origins.append((T[0][3], T[1][3], T[2][3]))
+    return origins
 
 
 def link_transform(
@@ -114,6 +198,8 @@ def link_transform(
 def link_transform_sym(theta, d, a, alpha, convention: Convention = "standard") -> sp.Matrix:
     """Symbolic (SymPy) homogeneous transform of one D-H link; same formula as
     :func:`link_transform`. Pass exact angles (``sp.pi / 2``) to get exact 0 and 1."""
+    import sympy as sp
+
     theta, d, a, alpha = (sp.sympify(v) for v in (theta, d, a, alpha))
     rows = _link_elements(
         sp.cos(theta), sp.sin(theta), sp.cos(alpha), sp.sin(alpha), a, d, convention
@@ -220,6 +306,8 @@ class DHTable:
         ``q`` defaults to symbols theta1..thetan. With ``exact`` the twist angles are
         rationalised to multiples of pi (90 deg -> pi/2), so cos/sin become exact 0/1.
         """
+        import sympy as sp
+
         if q is None:
             q = sp.symbols(f"theta1:{self.n_joints + 1}", real=True)
         q = list(q)
@@ -267,6 +355,8 @@ class DHTable:
 
 
 def _exact(value, exact: bool):
+    import sympy as sp
+
     if isinstance(value, sp.Basic) or not exact:
         return sp.sympify(value)
     return sp.nsimplify(value)
@@ -274,6 +364,8 @@ def _exact(value, exact: bool):
 
 def _exact_angle(value):
     """Radians -> exact multiple of pi where the angle is a whole number of degrees."""
+    import sympy as sp
+
     if isinstance(value, sp.Basic):
         return value
     deg = math.degrees(value)

@@ -1,9 +1,12 @@
-"""Joint angle <-> stepper pulse conversion (paper eqs. 20-22).
+"""Joint angle <-> stepper pulse conversion (paper eqs. 20-22), written once.
 
-``c = theta_deg / 360 * pulses_per_rev``, rounded to a whole pulse as the S7-200 ``ROUND``
-instruction does: to nearest, halves away from zero (S7-200 System Manual p.115 confirms
-"fraction >= 0.5 rounds up"; negative halves are not confirmed there, and the S7-300
-``RND`` rounds halves to even instead: both rules are available here).
+``c = theta_deg / 360 * pulses_per_rev`` (eqs. 20-22 print ``c = theta / 360 x 4000``),
+rounded to a whole pulse as the S7-200 ``ROUND`` instruction does: to nearest, halves away
+from zero (S7-200 System Manual p.115 confirms "fraction >= 0.5 rounds up"; negative halves
+are not confirmed there). The S7-300 ``RND`` rounds halves to even instead: both rules are
+available. :func:`pulse_count` and :func:`pulse_angle` are the formulas, in a math
+namespace; the numpy functions below, the compiled quantization kernel, the float32 model
+and the PLC program all use them.
 """
 
 from __future__ import annotations
@@ -13,18 +16,45 @@ from typing import Literal
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["angles_to_pulses", "pulses_to_angles", "round_half_away"]
+from analysis.kinematics.description import MAX_PULSES_PER_REV
+from analysis.kinematics.ops import NumpyOps, numpy_ops
+
+__all__ = [
+    "DINT_MAX",
+    "angles_to_pulses",
+    "pulse_angle",
+    "pulse_count",
+    "pulse_value",
+    "pulses_to_angles",
+    "round_half_away",
+]
 
 Rounding = Literal["half-away", "half-even"]
+DINT_MAX = 2**31 - 1
+"""Largest pulse count a PLC's DINT holds (the S7 double integer)."""
+_HALF_EVEN = NumpyOps("half-even")
+
+
+def pulse_value(m, theta, pulses_per_rev):
+    """Unrounded pulse count for joint angle ``theta`` [rad]: ``theta_deg / 360 * ppr``
+    (eqs. 20-22 print ``c = theta / 360 x 4000``)."""
+    return m.degrees(theta) / 360.0 * pulses_per_rev
+
+
+def pulse_count(m, theta, pulses_per_rev):
+    """Whole pulses for joint angle ``theta`` [rad], eqs. 20-22, with the namespace's
+    rounding (``m.round``: ROUND halves away from zero, or RND halves to even)."""
+    return m.round(m.let("count", pulse_value(m, theta, pulses_per_rev)))
+
+
+def pulse_angle(m, c, pulses_per_rev):
+    """Joint angle [rad] commanded by ``c`` whole pulses (inverse of eqs. 20-22)."""
+    return m.radians(c * 360.0 / pulses_per_rev)
 
 
 def round_half_away(x: npt.ArrayLike) -> npt.NDArray[np.float64]:
     """Round to nearest, ties away from zero (S7-200 ROUND on positive halves)."""
-    x = np.asarray(x, dtype=float)
-    # trunc + exact fractional part: floor(|x| + 0.5) would round 0.49999999999999994 up,
-    # because |x| + 0.5 rounds to 1.0 in float64 before the floor.
-    whole = np.trunc(x)
-    return whole + np.where(np.abs(x - whole) >= 0.5, np.sign(x), 0.0)
+    return numpy_ops.round_half_away(np.asarray(x, dtype=float))
 
 
 def angles_to_pulses(
@@ -37,12 +67,15 @@ def angles_to_pulses(
 
     Parameters
     ----------
-    theta : array_like, shape (..., 3) or broadcastable with ``pulses_per_rev``
+    theta : array_like, shape (..., n) or broadcastable with ``pulses_per_rev``
         Joint angles [rad].
     pulses_per_rev : int or array_like
-        Pulses per joint revolution (Table 3 / section 3: 4000, i.e. 0.09 deg per pulse).
+        Pulses per joint revolution (Table 3 / section 3: 4000, i.e. 0.09 deg per pulse),
+        whole numbers in 1 .. 10^7.
     rounding : {"half-away", "half-even"}
         S7-200 ROUND or S7-300 RND tie rule.
+
+    Raises ``ValueError`` for NaN/inf angles and for counts beyond a DINT (+-2147483647).
 
     Examples
     --------
@@ -55,12 +88,21 @@ def angles_to_pulses(
     if not np.isfinite(theta).all():
         raise ValueError("joint angles contain NaN or inf; only solved angles convert to pulses")
     ppr = _check_ppr(pulses_per_rev)
-    exact = np.degrees(theta) / 360.0 * ppr
     if rounding == "half-away":
-        return round_half_away(exact).astype(np.int64)
-    if rounding == "half-even":
-        return np.rint(exact).astype(np.int64)
-    raise ValueError(f"unknown rounding {rounding!r}; expected 'half-away' or 'half-even'")
+        m = numpy_ops
+    elif rounding == "half-even":
+        m = _HALF_EVEN
+    else:
+        raise ValueError(f"unknown rounding {rounding!r}; expected 'half-away' or 'half-even'")
+    c = pulse_count(m, theta, ppr)
+    big = np.abs(c) > DINT_MAX
+    if big.any():
+        i = tuple(int(k) for k in np.argwhere(big)[0])
+        raise ValueError(
+            f"pulse count {c[i]:.6g} (theta = {np.degrees(theta[i] if theta.ndim else theta):.6g}"
+            f" deg) is beyond the DINT range +-{DINT_MAX} that a PLC holds"
+        )
+    return c.astype(np.int64)
 
 
 def pulses_to_angles(
@@ -70,11 +112,19 @@ def pulses_to_angles(
     c = np.asarray(c, dtype=float)
     if not np.isfinite(c).all():
         raise ValueError("pulse counts contain NaN or inf")
-    return np.radians(c * 360.0 / _check_ppr(pulses_per_rev))
+    return pulse_angle(numpy_ops, c, _check_ppr(pulses_per_rev))
 
 
 def _check_ppr(pulses_per_rev: npt.ArrayLike) -> npt.NDArray[np.float64]:
-    ppr = np.asarray(pulses_per_rev, dtype=float)
-    if not (np.isfinite(ppr) & (ppr > 0)).all():
-        raise ValueError(f"pulses_per_rev = {pulses_per_rev!r} must be finite and positive")
+    try:
+        ppr = np.asarray(pulses_per_rev, dtype=float)
+    except (TypeError, ValueError):
+        ppr = np.asarray(np.nan)
+    if not (
+        np.isfinite(ppr) & (ppr >= 1) & (ppr <= MAX_PULSES_PER_REV) & (ppr == np.round(ppr))
+    ).all():
+        raise ValueError(
+            f"pulses_per_rev = {pulses_per_rev!r} must be finite and positive: whole numbers "
+            f"in 1 .. {MAX_PULSES_PER_REV:,}"
+        )
     return ppr

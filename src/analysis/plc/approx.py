@@ -18,10 +18,11 @@ CPU has, by argument reduction plus a polynomial:
     ``atan2(sqrt((1 - c)(1 + c)), c)``: (1 - c) is exact in float32 for c in [0.5, 1]
     (Sterbenz), so the result keeps full relative precision near the reach boundary.
 
-:func:`atan2_f32` and :func:`acos_f32` evaluate exactly this sequence with numpy float32
-(each operation rounded to float32, as a REAL accumulator/V-memory store is), so the
-approximation error can be measured densely in Python; the awlsim runs then confirm that
-the generated STL computes the same thing.
+:func:`atan2_poly` is that algorithm, written once against a math namespace: recorded, it
+becomes the subroutine (:mod:`analysis.plc.ir`); run with :class:`PlcFloat32Ops` (every
+operation rounded to float32, as a REAL accumulator/V-memory store is) it is the exact
+model of the subroutine, so the approximation error is measured densely in Python and the
+awlsim runs confirm that the generated STL computes the same thing.
 
 Measured (:func:`measure_errors`, float32, 4000 pulses/rev): ATAN2 worst error 2.9e-7 rad
 = 1.7e-5 deg = 1.9e-4 pulse over 4,000,002 directions; ACOS 3.1e-7 rad = 1.8e-5 deg =
@@ -38,11 +39,16 @@ from functools import cache
 import numpy as np
 import numpy.typing as npt
 
+from analysis.kinematics.ops import Float32Ops
+
 __all__ = [
     "ATAN_DEGREE",
     "ApproxError",
+    "PlcFloat32Ops",
     "acos_f32",
     "atan2_f32",
+    "atan2_from_atan",
+    "atan2_poly",
     "atan_coefficients",
     "measure_errors",
 ]
@@ -79,71 +85,102 @@ def atan_coefficients(degree: int = ATAN_DEGREE) -> tuple[float, ...]:
     return tuple(float(np.float32(c)) for c in coef)
 
 
-def _f(x) -> npt.NDArray[np.float32]:
-    return np.asarray(x, dtype=np.float32)
+def atan2_poly(m, y, x, degree: int = ATAN_DEGREE):
+    """ATAN2(y, x) [rad] in [-pi, pi] from ``+ - * /`` and compares only: the algorithm of
+    the generated S7-200 subroutine (steps 1-5 of the module docstring), written once.
+
+    Run with :class:`PlcFloat32Ops` it is the exact float32 model of the subroutine; recorded
+    with :class:`~analysis.kinematics.trace.TraceOps` it *is* the subroutine
+    (:func:`analysis.plc.ir.atan2_subroutine`). Both reductions are computed and chosen
+    with selects (a PLC executes a few more instructions; no value is ever NaN or inf:
+    the divisors are >= 1 or the max(|x|, |y|) > 0).
+    """
+    a = m.let("A", m.abs(y))
+    b = m.let("B", m.abs(x))
+    swap = m.gt(a, b)
+    num = m.select(swap, b, a)
+    den = m.select(swap, a, b)
+    zero = m.eq(den, 0.0)
+    t = m.let("T", num / m.select(zero, 1.0, den))
+    red = m.gt(t, TAN_PI_12)
+    t = m.let("T", m.select(red, (t * SQRT3 - 1.0) / (t + SQRT3), t))
+    u = m.let("U", t * t)
+    coef = atan_coefficients(degree)
+    p = coef[-1] * u + coef[-2]
+    for c in coef[-3::-1]:  # Horner in u = t^2
+        p = p * u + c
+    r = p * t
+    r = m.select(red, r + math.pi / 6, r)
+    r = m.select(swap, math.pi / 2 - r, r)
+    r = m.select(m.lt(x, 0.0), math.pi - r, r)
+    r = m.select(m.lt(y, 0.0), -r, r)
+    return m.select(zero, 0.0, r)
+
+
+def atan2_from_atan(m, y, x):
+    """ATAN2(y, x) [rad] from the S7-300's ATAN instruction and quadrant selects.
+
+    ``atan(y / x)``, plus pi (y >= 0) or minus pi (y < 0) for x < 0; +-pi/2 or 0 on x = 0.
+    The generated S7-300 program computes exactly this (:mod:`analysis.plc.ir`).
+    """
+    xz = m.eq(x, 0.0)
+    r = m.atan(y / m.select(xz, 1.0, x))
+    r = m.select(m.lt(x, 0.0), m.select(m.lt(y, 0.0), r - math.pi, r + math.pi), r)
+    on_axis = m.select(m.gt(y, 0.0), math.pi / 2, m.select(m.lt(y, 0.0), -math.pi / 2, 0.0))
+    return m.select(xz, on_axis, r)
+
+
+class PlcFloat32Ops(Float32Ops):
+    """The REAL arithmetic of a generated program, instruction for instruction.
+
+    ``dialect="s7-200"``: ROUND halves away from zero; ``"s7-300"``: RND halves to even.
+    ``trig="subroutine"`` (the default on the S7-200, the only choice there): ATAN2 and ACOS
+    are the generated subroutines (:func:`atan2_poly`, ``acos_via_atan2``); ``"native"``
+    (the S7-300 default): ATAN with quadrant selects (:func:`atan2_from_atan`) and ACOS, which
+    awlsim evaluates in double precision and stores as float32.
+    """
+
+    def __init__(
+        self, dialect: str = "s7-200", trig: str | None = None, degree: int = ATAN_DEGREE
+    ) -> None:
+        if dialect not in ("s7-200", "s7-300"):
+            raise ValueError(f"dialect {dialect!r}: expected 's7-200' or 's7-300'")
+        trig = trig or ("subroutine" if dialect == "s7-200" else "native")
+        if trig not in ("subroutine", "native") or (dialect, trig) == ("s7-200", "native"):
+            raise ValueError(f"trig {trig!r} is not available on the {dialect}")
+        super().__init__("half-away" if dialect == "s7-200" else "half-even")
+        self.dialect, self.trig, self.degree = dialect, trig, degree
+
+    def atan2(self, y, x):
+        y, x = np.asarray(y, np.float32), np.asarray(x, np.float32)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            if self.trig == "subroutine":
+                return atan2_poly(self, y, x, self.degree)
+            return atan2_from_atan(self, y, x)
+
+    def acos(self, c):
+        if self.trig == "subroutine":
+            return self.acos_via_atan2(np.asarray(c, np.float32))
+        return super().acos(c)
 
 
 def atan2_f32(
     y: npt.ArrayLike, x: npt.ArrayLike, degree: int = ATAN_DEGREE
 ) -> npt.NDArray[np.float32]:
-    """The generated ATAN2 subroutine, evaluated step by step in float32.
-
-    Parameters
-    ----------
-    y, x : array_like (broadcast), REAL
-        Finite arguments (the PLC program never calls it with NaN or inf).
-
-    Returns
-    -------
-    ndarray of float32
-        Angle [rad] in [-pi, pi]; 0 for y = x = 0.
-    """
-    f32 = np.float32
-    y, x = np.broadcast_arrays(_f(y), _f(x))
-    a, b = np.abs(y), np.abs(x)
-    swap = a > b
-    num = np.where(swap, b, a)
-    den = np.where(swap, a, b)
-    zero = den == 0
-    with np.errstate(divide="ignore", invalid="ignore"):
-        t = np.where(zero, f32(0), num / np.where(zero, f32(1), den)).astype(f32)
-    red = t > f32(TAN_PI_12)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        t_red = ((t * f32(SQRT3) - f32(1)) / (t + f32(SQRT3))).astype(f32)
-    tr = np.where(red, t_red, t)
-    u = (tr * tr).astype(f32)
-    coef = atan_coefficients(degree)
-    p = f32(coef[-1]) * np.ones_like(u)
-    for c in coef[-2::-1]:  # Horner, one float32 rounding per operation
-        p = (p * u).astype(f32)
-        p = (p + f32(c)).astype(f32)
-    r = (p * tr).astype(f32)
-    r = np.where(red, (r + f32(math.pi / 6)).astype(f32), r)
-    r = np.where(swap, (f32(math.pi / 2) - r).astype(f32), r)
-    r = np.where(x < 0, (f32(math.pi) - r).astype(f32), r)
-    r = np.where(y < 0, -r, r)
-    return np.where(zero, f32(0), r).astype(f32)
+    """The generated ATAN2 subroutine evaluated in float32 (finite arguments)."""
+    y, x = np.broadcast_arrays(np.asarray(y, np.float32), np.asarray(x, np.float32))
+    return np.asarray(PlcFloat32Ops("s7-200", degree=degree).atan2(y, x), np.float32)
 
 
 def acos_f32(c: npt.ArrayLike, degree: int = ATAN_DEGREE) -> npt.NDArray[np.float32]:
     """The generated ACOS subroutine in float32: ``atan2(sqrt((1 - c)(1 + c)), c)``.
 
-    Parameters
-    ----------
-    c : array_like, REAL in [-1, 1]
-        The caller (the IK program) clips cos(theta3) to [-1, 1] before the call.
-
-    Returns
-    -------
-    ndarray of float32
-        Angle [rad] in [0, pi].
+    The caller (the IK program) clips cos(theta3) to [-1, 1] before the call.
     """
-    f32 = np.float32
-    c = _f(c)
+    c = np.asarray(c, dtype=np.float32)
     if (np.abs(c) > 1).any():
         raise ValueError(f"acos argument outside [-1, 1]: max |c| = {float(np.abs(c).max())}")
-    s = np.sqrt(((f32(1) - c) * (f32(1) + c)).astype(f32)).astype(f32)
-    return atan2_f32(s, c, degree)
+    return np.asarray(PlcFloat32Ops("s7-200", degree=degree).acos(c), np.float32)
 
 
 @dataclass(frozen=True)

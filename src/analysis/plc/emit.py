@@ -114,6 +114,9 @@ def _awl_body(
             ins("L", o(i.args[0]))
             ins("RND")
             ins("T", o(i.dst))
+        elif i.op == "seti":
+            ins("L", f"L#{int(i.args[0])}")
+            ins("T", o(i.dst))
         elif i.op == "jcmp":
             cmp, a, b, target = i.args
             ins("L", o(a))
@@ -167,7 +170,8 @@ def emit_s7300(
         Written to the inputs in OB100 (startup), like the paper's Figure 3 example
         (100, 100, 600) mm; None leaves the inputs alone.
     """
-    mmap = mmap or default_map("s7-300")
+    mmap = mmap or default_map("s7-300", program.inputs, len(program.outputs))
+    mmap.check_program(program.inputs, program.outputs)
     if mmap.dialect != "s7-300":
         raise ValueError(f"emit_s7300 needs an s7-300 memory map, got {mmap.dialect!r}")
     work = allocate(program, mmap)
@@ -196,7 +200,7 @@ def emit_s7300(
             "TITLE = startup: the paper's example target (Fig. 3)",
             "BEGIN",
         ]
-        for name, v in zip(("px", "py", "pz"), startup_target, strict=True):
+        for name, v in zip(program.inputs, startup_target, strict=True):
             lines += [f"      L     {fmt_real(v)}", f"      T     {mmap.address(name)}"]
         lines += ["END_ORGANIZATION_BLOCK", ""]
     lines += ["ORGANIZATION_BLOCK OB 1", f"TITLE = {program.title}", "BEGIN"]
@@ -294,6 +298,8 @@ def _s200_body(code, ctx: _Ctx, sbr: dict[str, int], w: _S200Writer) -> None:
             )
         elif i.op == "round":
             w.box("ROUND", f"{o(i.args[0])}, {o(i.dst)}")
+        elif i.op == "seti":
+            w.box("MOVD", f"{int(i.args[0])}, {o(i.dst)}")
         elif i.op == "jcmp":
             cmp, a, b, target = i.args
             if cmp not in CMP:
@@ -330,7 +336,8 @@ def emit_s7200(
     unlike the paper's ``MOVD 100, VD0``), then the IK networks (Figures 4-6 corrected),
     then ``motion`` networks if given (see :mod:`.motion`). Subroutines follow OB1.
     """
-    mmap = mmap or default_map("s7-200")
+    mmap = mmap or default_map("s7-200", program.inputs, len(program.outputs))
+    mmap.check_program(program.inputs, program.outputs)
     if mmap.dialect != "s7-200":
         raise ValueError(f"emit_s7200 needs an s7-200 memory map, got {mmap.dialect!r}")
     if program.trig != "subroutine":
@@ -351,7 +358,7 @@ def emit_s7200(
         w.network("data acquisition (Fig. 3): example target on the first scan, as REALs")
         w.logic("LD", "SM0.1")
         w.power = True
-        for name, v in zip(("px", "py", "pz"), startup_target, strict=True):
+        for name, v in zip(program.inputs, startup_target, strict=True):
             w.ins("MOVR", f"{fmt_real(v, 'E')}, {mmap.address(name)}")
     _s200_body(program.body, _Ctx(mmap, work, None), sbr, w)
     if motion:

@@ -1,23 +1,27 @@
-"""Intermediate representation of the corrected IK program (paper Figures 3-6, eqs. 6-22).
+"""The PLC program's intermediate representation, generated from an arm's closed form.
 
-One program, generated from :class:`analysis.kinematics.params.ArmParams` (Table 3: L1, L2, L3,
-pulses per revolution), feeds both emitters (S7-200 STL and S7-300 AWL). The IR is
-three-address REAL arithmetic, REAL compare-and-jump, a finiteness test on the raw bits
-(so no REAL compare ever sees a NaN: a NaN in a REAL compare stops an S7-200 CPU), bit
-set/reset for the reach flag, ROUND to DINT and subroutine calls.
+:func:`build_program` records :func:`analysis.plc.model.program_body` (the arm's one closed
+form for one branch, its refusals, the joint limits and the pulse conversion, eqs. 20-22)
+with :class:`~analysis.kinematics.trace.TraceOps`, and lowers the recording to a list of
+:class:`Instr` (:class:`Lowering`): REAL three-address arithmetic, compare-and-jump for the
+selects, the refusals and ``abs``, calls of the ATAN2/ACOS subroutines (themselves recorded
+from :func:`analysis.plc.approx.atan2_poly`, the S7-200 has no inverse trigonometry) or the
+S7-300's native ATAN (quadrants by :func:`analysis.plc.approx.atan2_from_atan`) and ACOS.
+Both emitters (:mod:`.emit`) print this IR. No formula of an arm is written here.
 
 Instruction set (``Instr.op``)
 ------------------------------
-``mov d a`` | ``add/sub/mul/div d a b`` (d := a op b) | ``sqrt/sin/cos d a`` |
-``atan/acos d a`` (native, S7-300 only) | ``round d a`` (REAL -> DINT) |
-``jcmp cmp a b L`` (jump to L if a cmp b, cmp in < <= > >= == <>) |
-``jnotfinite a L`` (jump if a is inf/NaN: exponent bits all ones) | ``jmp L`` | ``label L`` |
-``set/reset bit`` | ``call name (ins) (outs)`` | ``network title`` (a network boundary,
-kept so the S7-200 listing mirrors the paper's figures).
+``mov d a`` | ``add/sub/mul/div d a b`` (d := a op b) | ``sqrt/sin/cos/atan/acos d a`` |
+``round d a`` (REAL -> DINT, the dialect's ROUND/RND) | ``seti d k`` (DINT constant) |
+``jcmp cmp a b L`` (jump to L if a cmp b; cmp in < <= > >= == <>) | ``jnotfinite a L``
+(jump if a is inf/NaN: exponent bits all ones, no REAL compare of a NaN, which stops an
+S7-200) | ``jmp L`` | ``label L`` | ``set/reset bit`` | ``call name (ins) (outs)`` |
+``network title`` (a network boundary: the S7-200 listing mirrors the paper's figures).
 
-Operands are variable names (str) or REAL constants (float). Variable names are either
-program I/O (``px py pz c1 c2 c3 reachable``), work variables (allocated by the memory
-map) or, inside a subroutine, its parameters and temporaries (``#name`` locals).
+Operands are variable names (str) or REAL constants (float). Program I/O names are the
+closed form's inputs (``px py pz``), ``c1..cn``, ``reachable`` and ``status``; work
+variables are named after the closed form's ``let`` names, temporaries ``tmpK`` reuse
+slots once dead (a subroutine's locals must fit the S7-200's 64 bytes of L memory).
 """
 
 from __future__ import annotations
@@ -25,18 +29,30 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from analysis.kinematics.arm import BRANCHES
-from analysis.kinematics.params import ArmParams
-from analysis.plc.approx import ATAN_DEGREE, SQRT3, TAN_PI_12, atan_coefficients
+from analysis.kinematics.arms import closed_form
+from analysis.kinematics.status import Status
+from analysis.kinematics.trace import Graph, Node, TraceOps
+from analysis.plc.approx import ATAN_DEGREE, atan2_from_atan, atan2_poly
+from analysis.plc.model import PLC_TOL_MM, program_body
 
-__all__ = ["CMP", "Instr", "Program", "Subroutine", "build_program"]
+__all__ = [
+    "CMP",
+    "PLC_TOL_MM",
+    "Instr",
+    "Lowering",
+    "Program",
+    "Subroutine",
+    "acos_subroutine",
+    "atan2_subroutine",
+    "build_program",
+]
 
 CMP = ("<", "<=", ">", ">=", "==", "<>")
 ARITH = ("add", "sub", "mul", "div")
 UNARY = ("mov", "sqrt", "sin", "cos", "atan", "acos", "round")
-BASE_AXIS_TOL_MM = (
-    1e-6  # = analysis.kinematics.arm.DEFAULT_TOL_MM: closer to the axis -> theta1 := 0
-)
+_CMP_OF = {"lt": "<", "le": "<=", "gt": ">", "ge": ">=", "eq": "=="}
+_NOT = {"<": ">=", "<=": ">", ">": "<=", ">=": "<", "==": "<>", "<>": "=="}
+_CONDITIONS = {"lt", "le", "gt", "ge", "eq", "and", "or", "not"}
 
 
 @dataclass(frozen=True)
@@ -62,16 +78,19 @@ class Subroutine:
 
 @dataclass(frozen=True)
 class Program:
-    """The IK program: OB1 body, subroutines, and the names of its work variables."""
+    """The IK program: OB1 body, subroutines, I/O and work variable names."""
 
     body: tuple[Instr, ...]
     subroutines: tuple[Subroutine, ...]
     work: tuple[str, ...]
-    params: ArmParams
+    arm: str
     branch: str
     trig: str
     title: str
+    inputs: tuple[str, ...] = ("px", "py", "pz")
+    outputs: tuple[str, ...] = ("c1", "c2", "c3")
     notes: tuple[str, ...] = field(default=())
+    graph: Graph | None = field(default=None, compare=False, repr=False)
 
     def variables(self) -> set[str]:
         return {a for i in self.body for a in _names(i)}
@@ -92,307 +111,335 @@ def _names(i: Instr):
         yield from (a for a in i.args if isinstance(a, str))
 
 
-class _Builder:
-    def __init__(self) -> None:
+class Lowering:
+    """Turn a recording into IR instructions.
+
+    Parameters
+    ----------
+    graph : Graph
+    fixed : dict of int to str
+        Variable names for given nodes (inputs, outputs).
+    trig : {"subroutine", "native"}
+        ATAN2/ACOS as calls of the generated subroutines, or native instructions.
+    keep_names : bool
+        Give ``let``-named nodes their own work variable (readable main program); else
+        every intermediate is a pooled temporary (subroutine locals).
+    refusals : dict of int to str
+        Condition node index -> label to jump to when it is true, emitted as soon as the
+        condition is computed.
+    """
+
+    def __init__(self, graph, fixed, trig, *, keep_names, refusals=None, prefix="tmp"):
+        self.g, self.fixed, self.trig = graph, dict(fixed), trig
+        self.keep_names, self.refusals = keep_names, dict(refusals or {})
+        self.prefix = prefix
         self.code: list[Instr] = []
-        self._n = 0
+        self.var: dict[int, str] = {}
+        self.free: list[str] = []
+        self.temps: list[str] = []
+        self.named: list[str] = []
+        self._labels = 0
+        self.live = graph.live()
+        self.last_use = self._liveness()
 
+    # --- bookkeeping ------------------------------------------------------------------------
     def label(self) -> str:
-        self._n += 1
-        return f"@{self._n}"
+        self._labels += 1
+        return f"@{self._labels}"
 
-    def __call__(self, op: str, dst: str | None = None, *args, comment: str = "") -> None:
+    def emit(self, op, dst=None, *args, comment=""):
         self.code.append(Instr(op, dst, tuple(args), comment))
 
-    def net(self, title: str) -> None:
-        self("network", None, title)
+    def _liveness(self) -> dict[int, int]:
+        """Last position at which each value node is read; a condition's operands are read
+        where the condition is used (selects, refusal jumps), not where it was recorded."""
+        use_pos: dict[int, int] = {}
+        for n in reversed(self.live):
+            if n.op in _CONDITIONS:
+                pos = self.refusals and n.index in self.refusals and n.index
+                pos = max(pos or 0, use_pos.get(n.index, n.index))
+            else:
+                pos = n.index
+            for a in n.args:
+                if isinstance(a, Node):
+                    use_pos[a.index] = max(use_pos.get(a.index, -1), pos)
+        for v in self.g.outputs.values():
+            if isinstance(v, Node):
+                use_pos[v.index] = 1 << 30
+        return use_pos
 
-    def jcmp(self, a, cmp: str, b, lbl: str, comment: str = "") -> None:
-        self("jcmp", None, cmp, a, b, lbl, comment=comment)
+    def opnd(self, a):
+        if isinstance(a, Node):
+            return self.var[a.index]
+        return float(a)
+
+    def _alloc(self, n: Node) -> str:
+        if n.index in self.fixed:
+            name = self.fixed[n.index]
+        elif self.keep_names and n.index in self.g.names:
+            base = self.g.names[n.index]
+            name, k = base, 2
+            while name in self.named or name in self.fixed.values():
+                name, k = f"{base}_{k}", k + 1
+            self.named.append(name)
+        elif self.free:
+            name = self.free.pop()
+        else:
+            name = f"{self.prefix}{len(self.temps) + 1}"
+            self.temps.append(name)
+        self.var[n.index] = name
+        return name
+
+    def _release(self, pos: int, n: Node) -> None:
+        for a in {a.index: a for a in n.args if isinstance(a, Node)}.values():
+            self._release_node(a, pos)
+
+    def _release_node(self, a: Node, pos: int) -> None:
+        if a.op in _CONDITIONS:
+            for b in a.args:
+                if isinstance(b, Node):
+                    self._release_node(b, pos)
+            return
+        name = self.var.get(a.index)
+        if name in self.temps and self.last_use.get(a.index, -1) <= pos and name not in self.free:
+            self.free.append(name)
+
+    # --- conditions ---------------------------------------------------------------------------
+    def jump_if(self, cond, target: str, value: bool) -> None:
+        """Jump to ``target`` if ``cond`` is ``value`` (short-circuit and/or/not)."""
+        op = cond.op
+        if op in _CMP_OF:
+            cmp = _CMP_OF[op] if value else _NOT[_CMP_OF[op]]
+            self.emit("jcmp", None, cmp, self.opnd(cond.args[0]), self.opnd(cond.args[1]), target)
+        elif op == "not":
+            self.jump_if(cond.args[0], target, not value)
+        elif (op == "or") == value:  # or -> true, and -> false: either operand decides
+            self.jump_if(cond.args[0], target, value)
+            self.jump_if(cond.args[1], target, value)
+        else:  # or -> false, and -> true: both operands must agree
+            skip = self.label()
+            self.jump_if(cond.args[0], skip, not value)
+            self.jump_if(cond.args[1], target, value)
+            self.emit("label", None, skip)
+        if op not in _CONDITIONS:
+            raise ValueError(f"{cond!r} is not a condition")
+
+    # --- values -------------------------------------------------------------------------------
+    def node(self, n: Node) -> None:
+        op, args = n.op, n.args
+        if op == "input":
+            self.var[n.index] = self.fixed[n.index]
+            return
+        if op in _CONDITIONS:
+            return
+        d = self._alloc(n)
+        a = [None if isinstance(x, Node) and x.op in _CONDITIONS else self.opnd(x) for x in args]
+        if op in ARITH:
+            self.emit(op, d, a[0], a[1])
+        elif op == "neg":
+            self.emit("sub", d, 0.0, a[0])
+        elif op in ("sqrt", "sin", "cos", "atan"):
+            self.emit(op, d, a[0])
+        elif op == "round":
+            self.emit("round", d, a[0])
+        elif op == "abs":
+            skip = self.label()
+            self.emit("mov", d, a[0])
+            self.emit("jcmp", None, ">=", a[0], 0.0, skip)
+            self.emit("sub", d, 0.0, a[0])
+            self.emit("label", None, skip)
+        elif op == "select":
+            skip = self.label()
+            self.emit("mov", d, a[2])
+            self.jump_if(args[0], skip, False)
+            self.emit("mov", d, a[1])
+            self.emit("label", None, skip)
+        elif op == "atan2":
+            if self.trig == "subroutine":
+                self.emit("call", None, "ATAN2", (a[0], a[1]), (d,))
+            else:
+                raise ValueError("native atan2 is lowered by recording atan2_from_atan")
+        elif op == "acos":
+            if self.trig == "subroutine":
+                self.emit("call", None, "ACOS", (a[0],), (d,))
+            else:
+                self.emit("acos", d, a[0])
+        else:
+            raise ValueError(f"cannot lower {op!r} to PLC instructions")
+
+    def run(self) -> list[Instr]:
+        """Lower every live node in order, with sections and refusal jumps in place."""
+        sections = sorted(self.g.sections)
+        k = 0
+        for n in self.live:
+            while k < len(sections) and sections[k][0] <= n.index:
+                self.emit("network", None, sections[k][1])
+                k += 1
+            self.node(n)
+            if n.index in self.refusals:
+                self.jump_if(n, self.refusals[n.index], True)
+            self._release(n.index, n)
+        return self.code
 
 
-def _r(x: float) -> float:
-    """A REAL constant: rounded to float32 by the CPU anyway; keep the float64 value."""
-    return float(x)
+# ---------------------------------------------------------------------------------------------
+# subroutines
+# ---------------------------------------------------------------------------------------------
+def _subroutine(name, number, inputs, output, fn, trig, title) -> Subroutine:
+    g = Graph()
+    m = TraceOps(g)
+    ins = [g.input(k) for k in inputs]
+    g.outputs = {output: fn(m, *ins)}
+    fixed = {n.index: k for k, n in zip(inputs, ins, strict=True)}
+    result = g.outputs[output]
+    fixed[result.index] = output
+    low = Lowering(g, fixed, trig, keep_names=False, prefix="T")
+    body = [Instr("network", None, (title,)), *low.run()]
+    return Subroutine(name, number, tuple(inputs), (output,), tuple(low.temps), tuple(body), title)
 
 
 def atan2_subroutine(number: int = 1, degree: int = ATAN_DEGREE) -> Subroutine:
-    """ATAN2(Y, X) -> R [rad], from +-*/ and compares only (see :mod:`.approx`)."""
-    b = _Builder()
-    Y, X, R = "Y", "X", "R"
-    A, B, T, U, P, S = "A", "B", "T", "U", "P", "S"
-    pos_y, pos_x, noswap, small, done, nonzero = (b.label() for _ in range(6))
-    b.net("|y|, |x| (no ABS for REAL on the S7-200: negate by 0 - v)")
-    b("mov", A, Y)
-    b.jcmp(A, ">=", 0.0, pos_y)
-    b("sub", A, 0.0, Y)
-    b("label", None, pos_y)
-    b("mov", B, X)
-    b.jcmp(B, ">=", 0.0, pos_x)
-    b("sub", B, 0.0, X)
-    b("label", None, pos_x)
-    b.net("atan2(0, 0) := 0")
-    b("mov", R, 0.0)
-    b.jcmp(A, ">", 0.0, nonzero)
-    b.jcmp(B, "==", 0.0, done)
-    b("label", None, nonzero)
-    b.net("t = min/max in [0, 1]; S = 1 if |y| > |x| (the result is then pi/2 - atan t)")
-    swapped = b.label()
-    b.jcmp(A, ">", B, swapped)
-    b("mov", S, 0.0)
-    b("div", T, A, B)
-    b("jmp", None, noswap)
-    b("label", None, swapped)
-    b("mov", S, 1.0)
-    b("div", T, B, A)
-    b("label", None, noswap)
-    b.net("reduce t > tan(pi/12): t' = (sqrt3 t - 1)/(t + sqrt3), R = pi/6 + atan t'")
-    b.jcmp(T, "<=", _r(TAN_PI_12), small)
-    b("mul", U, T, _r(SQRT3))
-    b("sub", U, U, 1.0)
-    b("add", P, T, _r(SQRT3))
-    b("div", T, U, P)
-    b("mov", R, _r(math.pi / 6))
-    b("label", None, small)
-    coef = atan_coefficients(degree)
-    b.net(f"odd polynomial of degree {degree} (Horner in u = t^2)")
-    b("mul", U, T, T)
-    b("mov", P, coef[-1])
-    for c in coef[-2::-1]:
-        b("mul", P, P, U)
-        b("add", P, P, c)
-    b("mul", P, P, T)
-    b("add", R, R, P)
-    fin_swap, fin_x, fin_y = b.label(), b.label(), b.label()
-    b.net("undo the reductions: pi/2 - R if swapped, pi - R if x < 0, -R if y < 0")
-    b.jcmp(S, "==", 0.0, fin_swap)
-    b("sub", R, _r(math.pi / 2), R)
-    b("label", None, fin_swap)
-    b.jcmp(X, ">=", 0.0, fin_x)
-    b("sub", R, _r(math.pi), R)
-    b("label", None, fin_x)
-    b.jcmp(Y, ">=", 0.0, fin_y)
-    b("sub", R, 0.0, R)
-    b("label", None, fin_y)
-    b("label", None, done)
-    b("mov", R, R, comment="(end)")
-    return Subroutine(
+    """ATAN2(Y, X) -> R [rad], recorded from :func:`analysis.plc.approx.atan2_poly`."""
+    return _subroutine(
         "ATAN2",
         number,
-        (Y, X),
-        (R,),
-        (A, B, T, U, P, S),
-        tuple(b.code),
+        ("Y", "X"),
+        "R",
+        lambda m, y, x: atan2_poly(m, y, x, degree),
+        "subroutine",
         f"ATAN2(Y, X) [rad], argument reduction + odd polynomial of degree {degree}",
     )
 
 
 def acos_subroutine(number: int = 2, atan2_name: str = "ATAN2") -> Subroutine:
-    """ACOS(C) -> R [rad] = ATAN2(sqrt((1 - C)(1 + C)), C); C must be in [-1, 1]."""
-    b = _Builder()
-    b.net("s = sqrt((1 - c)(1 + c)) (exact 1 - c near the reach boundary), R = atan2(s, c)")
-    b("sub", "S", 1.0, "C")
-    b("add", "T", "C", 1.0)
-    b("mul", "S", "S", "T")
-    b("sqrt", "S", "S")
-    b("call", None, atan2_name, ("S", "C"), ("R",))
-    return Subroutine(
+    """ACOS(C) -> R [rad] = ATAN2(sqrt((1 - C)(1 + C)), C) (``Ops.acos_via_atan2``)."""
+    if atan2_name != "ATAN2":
+        raise ValueError("the generated ACOS calls the generated ATAN2")
+    return _subroutine(
         "ACOS",
         number,
         ("C",),
-        ("R",),
-        ("S", "T"),
-        tuple(b.code),
+        "R",
+        lambda m, c: m.acos_via_atan2(c),
+        "subroutine",
         "ACOS(C) [rad] via ATAN2(sqrt((1-C)(1+C)), C)",
     )
 
 
-def build_program(params: ArmParams, branch: str = "front-up", trig: str = "subroutine") -> Program:
-    """The corrected IK program for one branch (eqs. 6-19 as corrected in analysis.kinematics.arm).
+# ---------------------------------------------------------------------------------------------
+# the program
+# ---------------------------------------------------------------------------------------------
+class _PlcTrace(TraceOps):
+    """The recorder for a PLC: ROUND/ACOS primitive; atan2 recorded from ATAN on the S7-300."""
+
+    def __init__(self, graph: Graph, trig: str) -> None:
+        super().__init__(graph, primitives=("acos", "round"))
+        self.trig = trig
+
+    def atan2(self, y, x):
+        if self.trig == "native":
+            return atan2_from_atan(self, y, x)
+        return super().atan2(y, x)
+
+
+def build_program(
+    params,
+    branch: str | None = None,
+    trig: str = "subroutine",
+    *,
+    theta1_on_axis: float | None = None,
+) -> Program:
+    """The corrected IK program of an arm for one branch, from its closed form.
 
     Parameters
     ----------
-    params : ArmParams
-        Link lengths L1, L2, L3 [mm] and pulses per revolution (Table 3).
-    branch : str
-        One of :data:`analysis.kinematics.arm.BRANCHES` (front-up is the paper's).
+    params : Params
+        The arm's parameters (:class:`analysis.kinematics.arm.Params`, e.g. Table 3).
+    branch : str, optional
+        Default: the arm's first (the paper's) branch.
     trig : {"subroutine", "native"}
         "subroutine": generated ATAN2/ACOS (required on the S7-200); "native": the S7-300
-        ATAN/ACOS instructions with quadrant jumps.
+        ATAN/ACOS instructions.
+    theta1_on_axis : float, optional
+        Waist angle [rad] for targets on the base axis; default: refuse them (status 3),
+        as Python does.
 
-    Networks (mirroring Figures 3-6): 1 inputs valid, 2 reach check, 3 theta1 (Fig. 4),
-    4 theta3 (Fig. 6), 5 theta2 (Fig. 5), 6 pulses (eqs. 20-22) and reach flag.
-    Unreachable or non-finite targets reset the flag and leave c1..c3 unchanged.
+    The program reads its inputs (Figure 3: VD0/VD4/VD8 = Px, Py, Pz) every scan: NaN or
+    inf -> status 6; a refused target (the closed form's refusals, in its order, then the
+    joint limits) -> its status, reach flag off, c1..cn unchanged; else c1..cn = the
+    pulses (eqs. 20-22), status 0, reach flag on.
     """
-    if branch not in BRANCHES:
-        raise ValueError(f"unknown branch {branch!r}; expected one of {', '.join(BRANCHES)}")
+    cf = closed_form(params.description.closed_form)
+    branch = branch or cf.BRANCHES[0]
     if trig not in ("subroutine", "native"):
         raise ValueError(f"trig = {trig!r}: expected 'subroutine' or 'native'")
-    L1, L2, L3 = params.L1, params.L2, params.L3
-    ppr = tuple(float(v) for v in params.pulses_per_rev)
-    front = branch.startswith("front")
-    # elbow sign as in analysis.kinematics.arm: theta3 = -usign * rsign * acos(c3)
-    rsign = 1.0 if front else -1.0
-    usign = 1.0 if branch.endswith("up") else -1.0
-    t3sign = -usign * rsign
-
-    b = _Builder()
-    bad = b.label()
-    subs: list[Subroutine] = []
-    if trig == "subroutine":
-        subs = [atan2_subroutine(1), acos_subroutine(2)]
-
-    def atan2(dst: str, y: str, x: str) -> None:
-        if trig == "subroutine":
-            b("call", None, "ATAN2", (y, x), (dst,))
-            return
-        # native S7-300 ATAN with quadrant jumps; x, y finite here
-        q_xneg, q_x0, q_yneg, q_done = (b.label() for _ in range(4))
-        b.jcmp(x, "<=", 0.0, q_xneg)
-        b("div", dst, y, x)
-        b("atan", dst, dst)
-        b("jmp", None, q_done)
-        b("label", None, q_xneg)
-        b.jcmp(x, "==", 0.0, q_x0)
-        b("div", dst, y, x)
-        b("atan", dst, dst)
-        b.jcmp(y, "<", 0.0, q_yneg)
-        b("add", dst, dst, _r(math.pi))
-        b("jmp", None, q_done)
-        b("label", None, q_yneg)
-        b("sub", dst, dst, _r(math.pi))
-        b("jmp", None, q_done)
-        b("label", None, q_x0)
-        b("mov", dst, 0.0)
-        b.jcmp(y, "==", 0.0, q_done)
-        b("mov", dst, _r(math.pi / 2))
-        b.jcmp(y, ">", 0.0, q_done)
-        b("mov", dst, _r(-math.pi / 2))
-        b("label", None, q_done)
-
-    def acos(dst: str, c: str) -> None:
-        if trig == "subroutine":
-            b("call", None, "ACOS", (c,), (dst,))
-        else:
-            b("acos", dst, c)
-
-    b.net("inputs Px, Py, Pz [mm] (Fig. 3): finite? (bit test, no REAL compare on a NaN)")
-    for v in ("px", "py", "pz"):
-        b("jnotfinite", None, v, bad)
-    b.net(f"reach check: |L2 - L3| <= |P - (0, 0, L1)| <= L2 + L3, L1 = {L1:g} mm")
-    b("sub", "zr", "pz", _r(L1), comment="z = Pz - L1 (eq. 8)")
-    # box check first: |Px|, |Py|, |z| <= L2 + L3 keeps every square below (L2 + L3)^2, so
-    # no REAL overflow can occur (an S7-200 leaves OUT unchanged on overflow, which could
-    # otherwise turn two huge coordinates into a plausible D^2)
-    R = _r(L2 + L3)
-    for v in ("px", "py", "zr"):
-        b.jcmp(v, ">", R, bad, comment=f"|{v}| <= L2 + L3 = {L2 + L3:g}" if v == "px" else "")
-        b.jcmp(v, "<", -R, bad)
-    b("mul", "rho2", "px", "px")
-    b("mul", "tmp", "py", "py")
-    b("add", "rho2", "rho2", "tmp", comment="rho^2 = Px^2 + Py^2")
-    b("mul", "tmp", "zr", "zr")
-    b("add", "d2", "rho2", "tmp", comment="D^2 = rho^2 + z^2")
-    b.jcmp("d2", ">", _r((L2 + L3) ** 2), bad, comment=f"(L2 + L3)^2 = {(L2 + L3) ** 2:g}")
-    b.jcmp("d2", "<", _r((L2 - L3) ** 2), bad, comment=f"(L2 - L3)^2 = {(L2 - L3) ** 2:g}")
-
-    b.net("theta1 = atan2(Py, Px) (eq. 6; Fig. 4); on the base axis theta1 := 0")
-    b("mov", "t1", 0.0)
-    axis = b.label()
-    b.jcmp("rho2", "<=", _r(BASE_AXIS_TOL_MM**2), axis)
-    atan2("t1", "py", "px")
-    b("label", None, axis)
-    b("sqrt", "r", "rho2", comment="r = cos(t1) Px + sin(t1) Py = rho (eq. 7)")
-    if not front:
-        wrap = b.label()
-        done = b.label()
-        b.jcmp("t1", ">", 0.0, wrap)
-        b("add", "t1", "t1", _r(math.pi), comment="back: theta1 + pi, wrapped to (-pi, pi]")
-        b("jmp", None, done)
-        b("label", None, wrap)
-        b("sub", "t1", "t1", _r(math.pi))
-        b("label", None, done)
-        b("sub", "r", 0.0, "r", comment="back: r = -rho")
-
-    b.net("theta3 = -/+ acos((D^2 - L2^2 - L3^2) / (2 L2 L3)) (eqs. 9-10; Fig. 6)")
-    b("sub", "ct3", "d2", _r(L2**2 + L3**2), comment=f"L2^2 + L3^2 = {L2**2 + L3**2:g}")
-    b("div", "ct3", "ct3", _r(2 * L2 * L3), comment=f"2 L2 L3 = {2 * L2 * L3:g}")
-    lo, hi = b.label(), b.label()
-    b.jcmp("ct3", "<=", 1.0, hi, comment="clip float32 round-off to [-1, 1]")
-    b("mov", "ct3", 1.0)
-    b("label", None, hi)
-    b.jcmp("ct3", ">=", -1.0, lo)
-    b("mov", "ct3", -1.0)
-    b("label", None, lo)
-    acos("t3", "ct3")
-    b("sub", "s3", 1.0, "ct3")
-    b("add", "tmp", "ct3", 1.0)
-    b("mul", "s3", "s3", "tmp")
-    b("sqrt", "s3", "s3", comment="|sin theta3| = sqrt((1 - c3)(1 + c3))")
-    if t3sign < 0:
-        b("sub", "t3", 0.0, "t3", comment=f"{branch}: theta3 = -acos(c3)")
-        b("sub", "s3", 0.0, "s3")
-
-    b.net(
-        "theta2 = atan2(z k + r s, r k - z s) - theta3, k = L2 c3 + L3, s = L2 s3 "
-        "(eqs. 15-19; Fig. 5)"
+    if theta1_on_axis is not None and not math.isfinite(theta1_on_axis):
+        raise ValueError(f"theta1_on_axis = {theta1_on_axis!r} rad is not finite")
+    g = Graph()
+    m = _PlcTrace(g, trig)
+    p = [g.input(k) for k in cf.INPUTS]
+    body = program_body(m, params, p, branch, tol=PLC_TOL_MM, theta1_on_axis=theta1_on_axis)
+    refusals = body["refusals"]
+    outs = {f"c{j + 1}": c for j, c in enumerate(body["c"])}
+    ppr = params.pulses_per_rev
+    conds = [c for _, c in refusals if isinstance(c, Node)]
+    order = [c.index for c in conds]
+    if order != sorted(order):
+        raise ValueError(f"{cf.__name__}: refusals must be computed in priority order")
+    g.outputs = {**outs, **{f"refuse{k}": c for k, c in enumerate(conds)}}
+    labels = {code: f"@refuse{int(code)}" for code, _ in refusals}
+    fixed = {n.index: name for name, n in zip(cf.INPUTS, p, strict=True)}
+    for name, v in outs.items():
+        if not isinstance(v, Node) or v.op != "round":
+            raise ValueError(f"{name}: pulse counts must end in the ROUND instruction")
+        fixed[v.index] = name
+    low = Lowering(
+        g, fixed, trig, keep_names=True, refusals={c.index: labels[s] for s, c in refusals}
     )
-    b("mul", "k", "ct3", _r(L2))
-    b("add", "k", "k", _r(L3))
-    b("mul", "s", "s3", _r(L2))
-    b("mul", "num", "zr", "k")
-    b("mul", "tmp", "r", "s")
-    b("add", "num", "num", "tmp")
-    b("mul", "den", "r", "k")
-    b("mul", "tmp", "zr", "s")
-    b("sub", "den", "den", "tmp")
-    atan2("t23", "num", "den")
-    b("sub", "t2", "t23", "t3")
-    w1, w2 = b.label(), b.label()
-    b.jcmp("t2", "<=", _r(math.pi), w1, comment="wrap theta2 to (-pi, pi]")
-    b("sub", "t2", "t2", _r(2 * math.pi))
-    b("label", None, w1)
-    b.jcmp("t2", ">", _r(-math.pi), w2)
-    b("add", "t2", "t2", _r(2 * math.pi))
-    b("label", None, w2)
-
-    b.net(
-        f"pulses c = ROUND(theta * {ppr[0]:g} / (2 pi)) (eqs. 20-22, theta in rad); reach flag on"
-    )
-    for t, n in zip(("t1", "t2", "t3"), ppr, strict=True):
-        b("mul", t, t, _r(n / (2 * math.pi)), comment=f"{n:g} pulses/rev")
-    b("round", "c1", "t1")
-    b("round", "c2", "t2")
-    b("round", "c3", "t3")
-    b("set", "reachable")
-    end = b.label()
-    b("jmp", None, end)
-    b.net("not reachable / not finite: flag off, c1..c3 unchanged, no motion")
-    b("label", None, bad)
-    b("reset", "reachable")
-    b("label", None, end)
-    code = b.code
-
-    io = {"px", "py", "pz", "c1", "c2", "c3", "reachable"}
+    low.emit("network", None, "inputs (Fig. 3) finite? (bit test: no REAL compare sees a NaN)")
+    invalid = "@refuse6"
+    for v in cf.INPUTS:
+        low.emit("jnotfinite", None, v, invalid)
+    low.run()
+    end = low.label()
+    low.emit("seti", "status", 0)
+    low.emit("set", "reachable")
+    low.emit("jmp", None, end)
+    low.emit("network", None, "refused: status code, reach flag off, c1..cn unchanged, no motion")
+    for code in sorted({*labels, Status.INVALID}):
+        low.emit("label", None, f"@refuse{int(code)}")
+        low.emit("seti", "status", int(code), comment=Status(code).text)
+        low.emit("reset", "reachable")
+        low.emit("jmp", None, end)
+    low.emit("label", None, end)
+    code = tuple(low.code)
+    io = {*cf.INPUTS, *outs, "reachable", "status"}
     work: list[str] = []
     for ins in code:
         for n in _names(ins):
             if n not in io and n not in work:
                 work.append(n)
-    ppr_txt = "/".join(f"{v:g}" for v in ppr)
+    subs = (atan2_subroutine(1), acos_subroutine(2)) if trig == "subroutine" else ()
+    vals = ", ".join(f"{k} = {v:g} mm" for k, v in params.items())
     notes = (
-        f"branch {branch}; L1 = {L1:g} mm, L2 = {L2:g} mm, L3 = {L3:g} mm, {ppr_txt} pulses/rev",
+        f"arm {params.arm}, branch {branch}; {vals}; "
+        + "/".join(f"{v:g}" for v in ppr)
+        + " pulses/rev",
         "ATAN2/ACOS: generated subroutines"
         if trig == "subroutine"
         else "ATAN/ACOS: native instructions",
+        "status: 0 ok, 1 out of reach, 2 inside reach, 3 base axis, 4 joint limits, 6 not finite",
     )
     return Program(
-        tuple(code),
-        tuple(subs),
+        code,
+        subs,
         tuple(work),
-        params,
+        params.arm,
         branch,
         trig,
-        f"IK {branch}: target (VD0/MD0...) -> pulses",
+        f"IK {branch}: target ({', '.join(cf.INPUTS)}) -> pulses",
+        tuple(cf.INPUTS),
+        tuple(outs),
         notes,
+        g,
     )

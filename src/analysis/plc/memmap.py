@@ -17,7 +17,6 @@ __all__ = ["DIALECTS", "MemoryMap", "default_map", "parse_address"]
 
 DIALECTS = ("s7-200", "s7-300")
 INPUTS = ("px", "py", "pz")
-OUTPUTS = ("c1", "c2", "c3", "reachable")
 
 _ADDR = re.compile(r"^(?P<area>[VM])(?P<width>[DWB]?)(?P<byte>\d+)(?:\.(?P<bit>[0-7]))?$")
 # highest usable byte: awlsim's default M area is 2048 bytes; a CPU 224 has VB0-VB8191
@@ -59,28 +58,36 @@ class MemoryMap:
     ----------
     dialect : {"s7-200", "s7-300"}
     inputs : dict
-        ``px, py, pz`` -> REAL double words [mm].
+        Input name (``px, py, pz``) -> byte of a REAL double word [mm].
     outputs : dict
-        ``c1, c2, c3`` -> DINT double words [pulses]; ``reachable`` -> a bit.
+        ``c1 .. cn`` and ``status`` -> byte of a DINT double word (pulses; status code);
+        ``reachable`` -> (byte, bit).
     work_base : int
         First byte of the work area (REAL temporaries, allocated upward, 4 bytes each).
     """
 
     dialect: str = "s7-300"
-    inputs: dict = field(default_factory=lambda: {"px": 0, "py": 4, "pz": 8})
+    inputs: dict = field(default_factory=lambda: dict(zip(INPUTS, (0, 4, 8), strict=True)))
     outputs: dict = field(
-        default_factory=lambda: {"c1": 100, "c2": 104, "c3": 108, "reachable": (112, 0)}
+        default_factory=lambda: {
+            "c1": 100,
+            "c2": 104,
+            "c3": 108,
+            "reachable": (112, 0),
+            "status": 116,
+        }
     )
     work_base: int = 200
 
     def __post_init__(self) -> None:
         if self.dialect not in DIALECTS:
             raise ValueError(f"dialect {self.dialect!r} is not one of {', '.join(DIALECTS)}")
-        if set(self.inputs) != set(INPUTS):
-            raise ValueError(f"inputs must name exactly {INPUTS}, got {sorted(self.inputs)}")
-        if set(self.outputs) != set(OUTPUTS):
-            raise ValueError(f"outputs must name exactly {OUTPUTS}, got {sorted(self.outputs)}")
-        dwords = [*self.inputs.values(), *(self.outputs[k] for k in ("c1", "c2", "c3"))]
+        if "reachable" not in self.outputs:
+            raise ValueError("outputs must name the reach flag 'reachable' (a bit)")
+        for k in self.outputs:
+            if k != "reachable" and k != "status" and not re.fullmatch(r"c[1-9]\d*", k):
+                raise ValueError(f"output {k!r} is not c1..cn, status or reachable")
+        dwords = [*self.inputs.values(), *(v for k, v in self.outputs.items() if k != "reachable")]
         used: set[int] = set()
         for b in dwords:
             if not isinstance(b, int) or b < 0 or b % 4 or b + 3 > _MAX_BYTE[self.dialect]:
@@ -100,6 +107,15 @@ class MemoryMap:
         if self.work_base % 4 or self.work_base <= max(used | {byte}):
             raise ValueError(
                 f"work_base {self.work_base} must be a multiple of 4 above the I/O area"
+            )
+
+    def check_program(self, inputs, outputs) -> None:
+        """Raise ValueError unless this map names exactly the program's I/O."""
+        need_out = {*outputs, "reachable", "status"}
+        if set(self.inputs) != set(inputs) or set(self.outputs) != need_out:
+            raise ValueError(
+                f"the map names inputs {sorted(self.inputs)} and outputs {sorted(self.outputs)};"
+                f" the program needs inputs {sorted(inputs)} and outputs {sorted(need_out)}"
             )
 
     # --- notation --------------------------------------------------------------------
@@ -127,12 +143,17 @@ class MemoryMap:
         return MemoryMap(dialect, dict(self.inputs), dict(self.outputs), self.work_base)
 
     def to_dict(self, work: dict[str, int] | None = None) -> dict:
-        """MAP.json content (design.md): every input, output and (optionally) work address."""
+        """MAP.json content: every input, output and (optionally) work address."""
         d = {
             "dialect": self.dialect,
-            "inputs": {k: self.address(k) for k in INPUTS},
-            "outputs": {k: self.address(k) for k in OUTPUTS},
-            "units": {"inputs": "mm (REAL)", "outputs": "pulses (DINT); reachable: BOOL"},
+            "inputs": {k: self.address(k) for k in self.inputs},
+            "outputs": {k: self.address(k) for k in self.outputs},
+            "units": {
+                "inputs": "mm (REAL)",
+                "outputs": "pulses (DINT); reachable: BOOL; status: DINT code "
+                "(0 ok, 1 out of reach, 2 inside reach, 3 base axis, 4 joint limits, "
+                "6 not finite)",
+            },
         }
         if work:
             d["work"] = {k: self.dword(v) for k, v in sorted(work.items(), key=lambda kv: kv[1])}
@@ -150,6 +171,8 @@ class MemoryMap:
             outs = {k: parse_address(v, dialect) for k, v in d["outputs"].items()}
         except KeyError as exc:
             raise ValueError(f"map is missing the key {exc}") from None
+        except AttributeError:
+            raise ValueError("map inputs and outputs must be objects of addresses") from None
         for k, (w, _, _) in ins.items():
             if w != "D":
                 raise ValueError(f"input {k} must be a double word")
@@ -160,6 +183,13 @@ class MemoryMap:
                 )
         outputs = {k: (b if w == "D" else (b, bit)) for k, (w, b, bit) in outs.items()}
         top = max(b for _, b, _ in [*ins.values(), *outs.values()])
+        if "status" not in outputs:  # maps written before the status word existed
+            taken = {b + i for k, b in outputs.items() if k != "reachable" for i in range(4)}
+            taken |= {b + i for _, b, _ in ins.values() for i in range(4)}
+            taken.add(outputs.get("reachable", (0, 0))[0])
+            free = (b for b in range(0, 2048, 4) if not set(range(b, b + 4)) & taken)
+            outputs["status"] = next(free)
+            top = max(top, outputs["status"])
         # work area: from byte 200, or above the I/O area if that reaches further
         work_base = int(d.get("work_base", max(200, (top // 4 + 1) * 4)))
         return cls(dialect, {k: b for k, (_, b, _) in ins.items()}, outputs, work_base)
@@ -170,9 +200,17 @@ class MemoryMap:
             d = json.loads(Path(path).read_text())
         except json.JSONDecodeError as exc:
             raise ValueError(f"{path}: not valid JSON ({exc})") from None
+        except OSError as exc:
+            raise ValueError(f"cannot read {path}: {exc.strerror}") from None
         return cls.from_dict(d)
 
 
-def default_map(dialect: str = "s7-300") -> MemoryMap:
-    """The default map: inputs at byte 0/4/8 (Figure 3), pulses at 100/104/108, flag 112.0."""
-    return MemoryMap(dialect)
+def default_map(dialect: str = "s7-300", inputs=INPUTS, n_outputs: int = 3) -> MemoryMap:
+    """The default map: inputs from byte 0 (Figure 3: VD0, VD4, VD8), pulses c1..cn from
+    byte 100, then the reach flag (its own byte) and the status double word."""
+    ins = {k: 4 * i for i, k in enumerate(inputs)}
+    outs: dict = {f"c{j + 1}": 100 + 4 * j for j in range(n_outputs)}
+    flag = 100 + 4 * n_outputs
+    outs["reachable"] = (flag, 0)
+    outs["status"] = flag + 4
+    return MemoryMap(dialect, ins, outs, max(200, flag + 8))

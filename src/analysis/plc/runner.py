@@ -47,16 +47,19 @@ class RunResult:
 
     Attributes
     ----------
-    pulses : ndarray of int64, shape (N, 3)
-        c1, c2, c3 after the cycle (unchanged from before the cycle if not reachable).
+    pulses : ndarray of int64, shape (N, n)
+        c1 .. cn after the cycle (unchanged from before the cycle if not reachable).
     reachable : ndarray of bool, shape (N,)
     reals : ndarray, shape (N, K), optional
         REAL work values read after each cycle (e.g. the unrounded pulse values).
+    status : ndarray of int64, shape (N,), optional
+        The program's status word (:class:`analysis.kinematics.status.Status` codes).
     """
 
     pulses: npt.NDArray[np.int64]
     reachable: npt.NDArray[np.bool_]
     reals: npt.NDArray[np.float64] | None = None
+    status: npt.NDArray[np.int64] | None = None
 
 
 class AwlRunner:
@@ -131,20 +134,23 @@ class AwlRunner:
 
         Parameters
         ----------
-        targets : array_like, shape (N, 3)
-            Px, Py, Pz [mm]; written as float32 REALs (NaN/inf allowed: the program
-            must reject them).
+        targets : array_like, shape (N, k)
+            The program's inputs (Px, Py, Pz [mm]), in the map's order; written as float32
+            REALs (NaN/inf allowed: the program must reject them).
         sentinel : int, optional
             Written to c1..c3 before each cycle, so that "unchanged" is observable.
         reals : tuple of int
             Byte offsets of REAL double words to read after each cycle.
         """
-        t = np.asarray(targets, dtype=float).reshape(-1, 3)
-        ins = [self.mmap.inputs[k] for k in ("px", "py", "pz")]
-        outs = [self.mmap.outputs[k] for k in ("c1", "c2", "c3")]
+        ins = list(self.mmap.inputs.values())
+        t = np.asarray(targets, dtype=float).reshape(-1, len(ins))
+        names = sorted((k for k in self.mmap.outputs if k[0] == "c"), key=lambda k: int(k[1:]))
+        outs = [self.mmap.outputs[k] for k in names]
         rbyte, rbit = self.mmap.outputs["reachable"]
-        pulses = np.zeros((len(t), 3), dtype=np.int64)
+        sbyte = self.mmap.outputs.get("status")
+        pulses = np.zeros((len(t), len(outs)), dtype=np.int64)
         ok = np.zeros(len(t), dtype=bool)
+        status = np.full(len(t), -1, dtype=np.int64)
         extra = np.full((len(t), len(reals)), np.nan)
         for n, p in enumerate(t):  # one PLC scan per target: this loop IS the test harness
             for b, v in zip(ins, p, strict=True):
@@ -155,8 +161,10 @@ class AwlRunner:
             self.cycle()
             pulses[n] = [self.read_dint(b) for b in outs]
             ok[n] = self.read_bit(rbyte, rbit)
+            if sbyte is not None:
+                status[n] = self.read_dint(sbyte)
             extra[n] = [self.read_real(b) for b in reals]
-        return RunResult(pulses, ok, extra if reals else None)
+        return RunResult(pulses, ok, extra if reals else None, status)
 
 
 def run_targets(

@@ -1,10 +1,12 @@
 """Targets and comparison for executing the generated PLC programs against Python.
 
 The Python reference is :meth:`analysis.kinematics.arm.Arm.solve` (float64) followed by
-:func:`analysis.kinematics.pulses.angles_to_pulses` with the dialect's tie rule; on the base axis
-both use theta1 = 0. A PLC pulse count may differ from the reference only where the
-exact (float64) pulse value lies so close to a half pulse that float32 arithmetic lands
-on the other side; :func:`compare` counts those cases and reports how close they were.
+:func:`analysis.kinematics.pulses.angles_to_pulses` with the dialect's tie rule; both refuse
+the same targets with the same status codes (the base axis included). A PLC pulse count may
+differ from the reference only where the exact (float64) pulse value lies so close to a half
+pulse that float32 arithmetic lands on the other side; :func:`compare` counts those cases
+and explains each with the float32 model of the program (:mod:`analysis.plc.model`), which
+must reproduce the PLC bit for bit.
 """
 
 from __future__ import annotations
@@ -16,15 +18,16 @@ import numpy.typing as npt
 import pandas as pd
 
 from analysis.kinematics.arm import Arm
-from analysis.kinematics.params import data_dir
-from analysis.kinematics.pulses import angles_to_pulses
+from analysis.kinematics.ops import numpy_ops
+from analysis.kinematics.pulses import angles_to_pulses, pulse_value
+from analysis.kinematics.status import Status
+from analysis.paths import data_dir
 from analysis.plc.runner import RunResult
 
 __all__ = [
     "Comparison",
     "compare",
     "half_pulse_targets",
-    "pulse_value_bytes",
     "reference_pulses",
     "sweep_targets",
     "table4_targets",
@@ -109,63 +112,68 @@ def sweep_targets(
 
 
 def reference_pulses(
-    arm: Arm, targets: npt.ArrayLike, branch: str = "front-up", rounding: str = "half-away"
-) -> tuple[npt.NDArray, npt.NDArray, npt.NDArray]:
-    """Python pulses for targets (N, 3) given as float32 REALs, as the PLC sees them.
+    arm: Arm, targets: npt.ArrayLike, branch: str | None = None, rounding: str = "half-away"
+) -> tuple[npt.NDArray, npt.NDArray, npt.NDArray, npt.NDArray]:
+    """Python's answer (float64) for targets (N, 3) given as float32 REALs, as the PLC sees them.
 
     Returns
     -------
-    pulses : ndarray of int64, shape (N, 3)   (0 where not reachable)
+    pulses : ndarray of int64, shape (N, n)   (0 where refused)
     ok : ndarray of bool, shape (N,)
-    exact : ndarray, shape (N, 3)
-        Unrounded pulse values theta_deg / 360 * ppr (NaN where not reachable).
+    status : ndarray of int64, shape (N,)     (Status codes; 6 for NaN/inf)
+    exact : ndarray, shape (N, n)
+        Unrounded pulse values theta_deg / 360 * ppr (NaN where refused).
     """
+    branch = branch or arm.branches[0]
     t = np.asarray(targets, dtype=float)
     t32 = t.astype(np.float32).astype(float)  # the PLC stores the target as REAL
     finite = np.isfinite(t32).all(axis=1)
     safe = np.where(finite[:, None], t32, 0.0)
-    sol = arm.solve(safe, [branch], theta1_on_axis=0.0)
+    sol = arm.solve(safe, [branch])
     ok = sol.ok[:, 0] & finite
+    status = np.where(finite, sol.status, int(Status.INVALID)).astype(np.int64)
     theta = np.where(ok[:, None], sol.theta[:, 0, :], 0.0)
     ppr = np.asarray(arm.params.pulses_per_rev, dtype=float)
-    exact = np.where(ok[:, None], np.degrees(theta) / 360.0 * ppr, np.nan)
+    exact = np.where(ok[:, None], pulse_value(numpy_ops, theta, ppr), np.nan)
     pulses = np.where(ok[:, None], angles_to_pulses(theta, ppr, rounding=rounding), 0)
-    return pulses, ok, exact
+    return pulses, ok, status, exact
 
 
 @dataclass(frozen=True)
 class Comparison:
-    """PLC vs Python over N targets."""
+    """PLC vs Python (float64) and vs the float32 model of the program, over N targets."""
 
     n: int
     n_reachable: int
+    status_mismatch: int
     flag_mismatch: int
     unchanged_ok: bool
     pulse_mismatch: int
     max_abs_diff: int
     mismatch_table: pd.DataFrame
-    max_real_error: float = float("nan")
-    all_explained: bool | None = None
+    max_real_error: float
+    all_explained: bool
+    model_exact: bool
 
     @property
-    def float32_ties(self) -> int | None:
-        """Mismatches where the PLC's float32 value is exactly k + 1/2 (the tie rule decides)."""
+    def float32_ties(self) -> int:
+        """Mismatches where the PLC's float32 count is exactly k + 1/2 (the tie rule decides)."""
         t = self.mismatch_table
-        if t["plc_real"].isna().all():
-            return None
         return int((t["plc_real"] - (np.minimum(t["python"], t["plc"]) + 0.5) == 0).sum())
 
     def summary(self) -> dict:
         return {
             "targets": self.n,
             "reachable": self.n_reachable,
+            "status mismatches": self.status_mismatch,
             "reach-flag mismatches": self.flag_mismatch,
-            "outputs unchanged when unreachable": self.unchanged_ok,
+            "outputs unchanged when refused": self.unchanged_ok,
             "pulse mismatches": self.pulse_mismatch,
             "max |PLC - Python| [pulses]": self.max_abs_diff,
             "max |float32 - exact| before ROUND [pulses]": self.max_real_error,
             "mismatches all straddle a half pulse": self.all_explained,
             "of which float32 value exactly k + 1/2": self.float32_ties,
+            "float32 model = PLC, bit for bit": self.model_exact,
         }
 
 
@@ -173,22 +181,33 @@ def compare(
     result: RunResult,
     targets: pd.DataFrame,
     arm: Arm,
-    branch: str = "front-up",
-    rounding: str = "half-away",
+    branch: str | None = None,
+    dialect: str = "s7-200",
     sentinel: int = -999_999,
+    trig: str | None = None,
 ) -> Comparison:
-    """Compare PLC results (run with ``sentinel`` in the outputs) with the Python reference.
+    """Compare PLC results (run with ``sentinel`` in the outputs) with Python and the model.
 
-    The mismatch table lists each differing joint value with the exact pulse value and
-    its distance to the nearest half pulse (``dist_half``), the quantity that explains why
-    float32 and float64 round to different integers. If ``result.reals`` holds the PLC's
-    unrounded pulse values (the REALs fed to ROUND, see :func:`pulse_value_bytes`), the
-    table also gives them (``plc_real``), and ``all_explained`` says whether every mismatch
-    is a straddle: the float32 value and the exact value lie on opposite sides of the
-    same half pulse.
+    The Python reference is float64 (:func:`reference_pulses`, with the dialect's tie rule);
+    the model is :func:`analysis.plc.model.predict` with the dialect's REAL arithmetic
+    (``trig`` "native" only on the S7-300), which gives the float32 value each count had
+    before ROUND (``plc_real``). The mismatch table lists each joint value where PLC and
+    Python differ, with the exact value and its distance to the nearest half pulse
+    (``dist_half``); ``all_explained`` says whether every mismatch is a straddle: the
+    float32 value and the exact value lie on opposite sides of the same half pulse.
     """
+    from analysis.plc.approx import PlcFloat32Ops
+    from analysis.plc.model import predict
+
+    branch = branch or arm.branches[0]
+    rounding = "half-away" if dialect == "s7-200" else "half-even"
     xyz = targets[["x_mm", "y_mm", "z_mm"]].to_numpy(dtype=float)
-    ref, ok, exact = reference_pulses(arm, xyz, branch, rounding)
+    ref, ok, status, exact = reference_pulses(arm, xyz, branch, rounding)
+    model = predict(arm.params, xyz, branch, ops=PlcFloat32Ops(dialect, trig))
+    model_exact = bool(
+        (model.status == result.status).all()
+        and (model.pulses[model.reachable] == result.pulses[model.reachable]).all()
+    )
     flag_mm = int((result.reachable != ok).sum())
     unchanged = bool((result.pulses[~result.reachable] == sentinel).all())
     both = ok & result.reachable
@@ -207,46 +226,24 @@ def compare(
                 "plc": int(result.pulses[i, j]),
                 "exact": x,
                 "dist_half": abs(abs(x - np.trunc(x)) - 0.5),
-                "plc_real": result.reals[i, j] if result.reals is not None else np.nan,
+                "plc_real": float(model.counts[i, j]),
             }
         )
-    table = pd.DataFrame(
-        rows,
-        columns=[
-            "kind",
-            "x_mm",
-            "y_mm",
-            "z_mm",
-            "joint",
-            "python",
-            "plc",
-            "exact",
-            "dist_half",
-            "plc_real",
-        ],
-    )
-    max_err, explained = float("nan"), None
-    if result.reals is not None:
-        err = np.abs(result.reals - exact)[both]
-        max_err = float(err.max()) if err.size else 0.0
-        half = (np.minimum(table["python"], table["plc"]) + 0.5).to_numpy(dtype=float)
-        explained = bool(((table["exact"] - half) * (table["plc_real"] - half) <= 0).all())
+    columns = ["kind", "x_mm", "y_mm", "z_mm", "joint", "python", "plc", "exact", "dist_half"]
+    table = pd.DataFrame(rows, columns=[*columns, "plc_real"])
+    err = np.abs(model.counts.astype(float) - exact)[both]
+    half = (np.minimum(table["python"], table["plc"]) + 0.5).to_numpy(dtype=float)
+    explained = bool(((table["exact"] - half) * (table["plc_real"] - half) <= 0).all())
     return Comparison(
         len(xyz),
         int(ok.sum()),
+        int((result.status != status).sum()),
         flag_mm,
         unchanged,
         int((diff != 0).sum()),
         int(np.abs(diff).max()) if diff.size else 0,
         table,
-        max_err,
+        float(err.max()) if err.size else 0.0,
         explained,
+        model_exact,
     )
-
-
-def pulse_value_bytes(program, mmap) -> tuple[int, int, int]:
-    """Byte offsets of the unrounded pulse values (theta * ppr / 2 pi, REAL) in ``program``."""
-    from analysis.plc.emit import allocate
-
-    work = allocate(program, mmap)
-    return tuple(work[k] for k in ("t1", "t2", "t3"))

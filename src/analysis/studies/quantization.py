@@ -13,8 +13,12 @@ into millimetres at the gripper:
   the maximum;
 - :func:`joint_shares`, :func:`stats_by_ppr`, :func:`stats_by_length_scale`: where the
   error comes from and how it scales;
-- :func:`pulses_float32`: the same pipeline in IEEE single precision, the S7-200's REAL
-  (stl_reference: REAL = IEEE-754 single), to count targets whose pulse count changes.
+- :func:`pulses_float32`: the PLC program's pipeline (:func:`analysis.plc.model.
+  program_body`) in IEEE single precision, the S7-200's REAL, to count targets whose pulse
+  count changes.
+
+The rounding pipeline is :func:`rounding_body`, one function for numpy
+(:func:`quantization_error`) and the compiled kernel (:func:`quantization_map`).
 
 Angles in radians, lengths in mm, pulses as int64.
 """
@@ -22,13 +26,18 @@ Angles in radians, lengths in mm, pulses as int64.
 from __future__ import annotations
 
 import itertools
+import math
+from functools import cache
 from typing import NamedTuple
 
 import numpy as np
 import numpy.typing as npt
 
-from analysis.kinematics.arm import DEFAULT_TOL_MM, Arm, as_points
-from analysis.kinematics.pulses import Rounding, angles_to_pulses, pulses_to_angles
+from analysis.kinematics.arm import DEFAULT_TOL_MM, Arm, as_points, check_tol, solve_body
+from analysis.kinematics.description import MAX_PULSES_PER_REV
+from analysis.kinematics.dh import chain_frames
+from analysis.kinematics.ops import Float32Ops, NumpyOps
+from analysis.kinematics.pulses import Rounding, pulse_angle, pulse_count
 
 __all__ = [
     "ErrorStats",
@@ -48,24 +57,47 @@ __all__ = [
 
 
 def _ppr(arm: Arm, pulses_per_rev) -> npt.NDArray[np.float64]:
-    ppr = np.broadcast_to(
-        np.asarray(
-            arm.params.pulses_per_rev if pulses_per_rev is None else pulses_per_rev, dtype=float
-        ),
-        (3,),
-    )
-    if not (np.isfinite(ppr).all() and (ppr > 0).all()):
-        raise ValueError(f"pulses_per_rev = {ppr.tolist()} must be three positive numbers")
+    """Pulses per revolution per joint (default: the arm's), validated as whole numbers."""
+    n = arm.n_joints
+    value = arm.params.pulses_per_rev if pulses_per_rev is None else pulses_per_rev
+    ppr = np.broadcast_to(np.asarray(value, dtype=float), (n,))
+    if not all(v == int(v) and 1 <= v <= MAX_PULSES_PER_REV for v in ppr if np.isfinite(v)) or (
+        not np.isfinite(ppr).all()
+    ):
+        raise ValueError(
+            f"pulses_per_rev = {ppr.tolist()} must be {n} whole numbers in "
+            f"1 .. {MAX_PULSES_PER_REV:,}"
+        )
     return ppr.copy()
 
 
 def half_step_rad(arm: Arm, pulses_per_rev: npt.ArrayLike | None = None) -> npt.NDArray[np.float64]:
-    """Half a pulse per joint [rad], shape (3,): pi / pulses_per_rev (4000 -> 0.045 deg)."""
+    """Half a pulse per joint [rad], shape (n,): pi / pulses_per_rev (4000 -> 0.045 deg)."""
     return np.pi / _ppr(arm, pulses_per_rev)
 
 
+def rounding_body(m, arm: Arm, p, P, ppr, *, branch: str, tol):
+    """One target's rounding pipeline, in namespace ``m`` (written once for numpy and the
+    compiled kernel): exact IK on ``branch`` -> whole pulses (eqs. 20-22, ``m.round``) ->
+    commanded angles -> FK (the chain) -> distance to the target [mm]."""
+    r = solve_body(m, arm.closed_form, p, P, (branch,), tol=tol, limits=arm.limits)
+    ok = r[f"ok:{branch}"]
+    n = arm.n_joints
+    q = [m.select(ok, r[f"q:{branch}:{j}"], 0.0) for j in range(n)]
+    c = [pulse_count(m, q[j], ppr[j]) for j in range(n)]
+    qc = [pulse_angle(m, c[j], ppr[j]) for j in range(n)]
+    end = chain_frames(m, arm.description.dh_table(P), qc)[-1]
+    d = [end[k] - p[k] for k in range(3)]
+    err = m.sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2])
+    out = {"ok": ok, "err": m.select(ok, err, math.nan)}
+    out.update({f"q{j}": q[j] for j in range(n)})
+    out.update({f"c{j}": m.select(ok, c[j], 0.0) for j in range(n)})
+    out.update({f"qc{j}": qc[j] for j in range(n)})
+    return out
+
+
 class QuantizationResult(NamedTuple):
-    """Rounding of exact IK angles to whole pulses, per target (shapes (...,) or (..., 3)).
+    """Rounding of exact IK angles to whole pulses, per target (shapes (...,) or (..., n)).
 
     ``ok`` marks targets with a solution on the branch; elsewhere angles and error are
     NaN and pulses 0.
@@ -82,7 +114,7 @@ def quantization_error(
     arm: Arm,
     p: npt.ArrayLike,
     *,
-    branch: str = "front-up",
+    branch: str | None = None,
     pulses_per_rev: npt.ArrayLike | None = None,
     rounding: Rounding = "half-away",
     tol: float = DEFAULT_TOL_MM,
@@ -95,8 +127,8 @@ def quantization_error(
     p : array_like, shape (..., 3)
         Targets [mm].
     branch : str
-        IK branch (default the paper's front-up).
-    pulses_per_rev : array_like of 3, optional
+        IK branch (default the paper's, the arm's first).
+    pulses_per_rev : array_like of n, optional
         Default ``arm.params.pulses_per_rev`` (Table 3: 4000).
     rounding : {"half-away", "half-even"}
         S7-200 ROUND or S7-300 RND.
@@ -111,15 +143,23 @@ def quantization_error(
     """
     p = as_points(p)
     ppr = _ppr(arm, pulses_per_rev)
-    sol = arm.solve(p, (branch,), tol=tol)
-    ok = sol.ok[..., 0]
-    q = sol.theta[..., 0, :]
-    c = np.where(
-        ok[..., None], angles_to_pulses(np.where(ok[..., None], q, 0.0), ppr, rounding=rounding), 0
-    )
-    qc = np.where(ok[..., None], pulses_to_angles(c, ppr), np.nan)
-    err = np.linalg.norm(arm.fk(np.where(ok[..., None], qc, 0.0)) - p, axis=-1)
-    return QuantizationResult(ok, q, c, qc, np.where(ok, err, np.nan))
+    branch = arm.branch_names(branch or arm.branches[0])[0]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        r = rounding_body(
+            NumpyOps(rounding), arm, tuple(p[..., k] for k in range(3)), arm.params, ppr,
+            branch=branch, tol=check_tol(tol),
+        )  # fmt: skip
+    shape = p.shape[:-1]
+    n = arm.n_joints
+
+    def stack(key):
+        return np.stack([np.broadcast_to(r[f"{key}{j}"], shape) for j in range(n)], axis=-1)
+
+    ok = np.broadcast_to(r["ok"], shape).copy()
+    q = np.where(ok[..., None], stack("q"), np.nan)
+    qc = np.where(ok[..., None], stack("qc"), np.nan)
+    err = np.broadcast_to(r["err"], shape).astype(float)
+    return QuantizationResult(ok, q, stack("c").astype(np.int64), qc, err)
 
 
 def quantization_map(
@@ -129,16 +169,49 @@ def quantization_map(
     pulses_per_rev: npt.ArrayLike | None = None,
     tol: float = DEFAULT_TOL_MM,
 ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], npt.NDArray[np.bool_]]:
-    """Fast front-up rounding error map: ``(error_mm (...,), pulses (..., 3), ok (...,))``.
+    """Fast rounding error map on the paper's branch: ``(error_mm (...,), pulses (..., n),
+    ok (...,))``.
 
-    The same numbers as :func:`quantization_error` (front-up, S7-200 ROUND), computed in
-    one compiled pass per target by :func:`analysis.kinematics.fastik.ik_front_up_pulses` (10^6
-    targets in well under a second; tests/studies/test_quantization.py holds the two equal).
+    The numbers of :func:`quantization_error` (the same :func:`rounding_body`, S7-200
+    ROUND), compiled into one pass per target (:mod:`analysis.kinematics.compiled`).
     """
-    from analysis.kinematics.fastik import ik_front_up_pulses
+    p = as_points(p)
+    ppr = _ppr(arm, pulses_per_rev)
+    tol = check_tol(tol)
+    branch = arm.branches[0]
+    n = arm.n_joints
+    kern = _rounding_kernel(arm.name, arm.description, tuple(arm.params), branch)
+    shape = p.shape[:-1]
+    size = int(np.prod(shape, dtype=np.int64))
+    ok = np.empty(size, dtype=bool)
+    err = np.empty(size)
+    pulses = np.empty((n, size), dtype=np.int64)
+    kern.run(
+        p.reshape(size, 3),
+        [*arm.params.values(), *ppr, tol],
+        [ok, err, *(pulses[j] for j in range(n))],
+    )
+    return err.reshape(shape), np.moveaxis(pulses, 0, -1).reshape(*shape, n), ok.reshape(shape)
 
-    c, err, ok = ik_front_up_pulses(arm, p, _ppr(arm, pulses_per_rev), tol=tol)
-    return err, c, ok
+
+@cache
+def _rounding_kernel(name, description, params: tuple, branch: str):
+    from analysis.kinematics import compiled
+    from analysis.kinematics.arm import Params
+
+    arm = Arm(Params.from_description(description))
+    n = arm.n_joints
+    cf = arm.closed_form
+
+    def body(m, v):
+        p = tuple(v[k] for k in cf.INPUTS)
+        P = {k: v[k] for k in params}
+        ppr = [v[f"ppr{j}"] for j in range(n)]
+        return rounding_body(m, arm, p, P, ppr, branch=branch, tol=v["tol"])
+
+    outputs = {"ok": "b1", "err": "f8", **{f"c{j}": "i8" for j in range(n)}}
+    scalars = (*params, *(f"ppr{j}" for j in range(n)), "tol")
+    return compiled.build(body, cf.INPUTS, scalars, outputs)
 
 
 class ErrorStats(NamedTuple):
@@ -184,11 +257,13 @@ class WorstCase(NamedTuple):
     bound_mm: npt.NDArray[np.float64]
 
 
-_CORNERS = np.array(list(itertools.product((-1.0, 1.0), repeat=3)))  # (8, 3)
+def _corners(n: int) -> npt.NDArray[np.float64]:
+    """The 2^n sign corners of an n-joint box, shape (2^n, n)."""
+    return np.array(list(itertools.product((-1.0, 1.0), repeat=n)))
 
 
 def worst_case_box(arm: Arm, q: npt.ArrayLike, half_step: npt.ArrayLike) -> WorstCase:
-    """Worst end-point error when each joint is off by up to ``half_step`` [rad] (3,).
+    """Worst end-point error when each joint is off by up to ``half_step`` [rad] (n,).
 
     For this arm |J[:, 1]| = r (distance from the base axis), |J[:, 2]| = D (distance
     from the shoulder) and |J[:, 3]| = L3, so the first-order bound is
@@ -199,18 +274,18 @@ def worst_case_box(arm: Arm, q: npt.ArrayLike, half_step: npt.ArrayLike) -> Wors
     ----------
     q : array_like, shape (..., 3)
         Joint angles [rad] (finite).
-    half_step : array_like, shape (3,)
+    half_step : array_like, shape (n,)
         Half a pulse per joint [rad], e.g. :func:`half_step_rad`.
     """
     q = np.asarray(q, dtype=float)
     if not np.isfinite(q).all():
         raise ValueError("joint angles contain NaN or inf; pass solved angles only")
-    h = np.broadcast_to(np.asarray(half_step, dtype=float), (3,))
+    h = np.broadcast_to(np.asarray(half_step, dtype=float), (q.shape[-1],))
     p0 = arm.fk(q)
     J = arm.jacobian(q)
     exact = np.zeros(q.shape[:-1])
     lin = np.zeros(q.shape[:-1])
-    for s in _CORNERS:  # loop over the 8 corners, vectorized over targets
+    for s in _corners(q.shape[-1]):  # loop over the corners, vectorized over targets
         d = s * h
         exact = np.maximum(exact, np.linalg.norm(arm.fk(q + d) - p0, axis=-1))
         lin = np.maximum(lin, np.linalg.norm(J @ d, axis=-1))
@@ -226,11 +301,11 @@ def box_grid_max(
     if m < 2:
         raise ValueError(f"m = {m} grid points per joint must be at least 2")
     q = np.asarray(q, dtype=float)
-    h = np.broadcast_to(np.asarray(half_step, dtype=float), (3,))
+    h = np.broadcast_to(np.asarray(half_step, dtype=float), (q.shape[-1],))
     p0 = arm.fk(q)
     best = np.zeros(q.shape[:-1])
     ticks = np.linspace(-1.0, 1.0, m)
-    for s in itertools.product(ticks, repeat=3):  # loop over box points, vectorized over targets
+    for s in itertools.product(ticks, repeat=q.shape[-1]):  # box points, vectorized over targets
         best = np.maximum(best, np.linalg.norm(arm.fk(q + np.asarray(s) * h) - p0, axis=-1))
     return best
 
@@ -241,7 +316,7 @@ def joint_shares(
 ) -> dict[str, npt.NDArray[np.float64]]:
     """Each joint's share of the rounding error over targets (..., 3).
 
-    Returns ``{"alone_mean_mm": (3,), "alone_max_mm": (3,), "variance_share": (3,)}``:
+    Returns ``{"alone_mean_mm": (n,), "alone_max_mm": (n,), "variance_share": (n,)}``:
     the mean and max end-point error when only joint j is rounded (the others exact), and
     the first-order share of the mean squared error, |J[:, j]|^2 / sum_k |J[:, k]|^2
     averaged over targets (rounding residuals are independent, zero-mean and uniform on
@@ -253,8 +328,8 @@ def joint_shares(
     q = r.q_exact[r.ok]
     qc = r.q_commanded[r.ok]
     target = p[r.ok]
-    mean, mx = np.zeros(3), np.zeros(3)
-    for j in range(3):  # loop over joints
+    mean, mx = np.zeros(arm.n_joints), np.zeros(arm.n_joints)
+    for j in range(arm.n_joints):  # loop over joints
         qj = q.copy()
         qj[:, j] = qc[:, j]
         e = np.linalg.norm(arm.fk(qj) - target, axis=-1)
@@ -293,58 +368,28 @@ def stats_by_length_scale(
 def pulses_float32(
     arm: Arm, p: npt.ArrayLike, *, pulses_per_rev: npt.ArrayLike | None = None
 ) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.float32]]:
-    """The front-up pipeline (corrected eqs. 6-22) in IEEE single precision, step by step.
+    """The paper's-branch pipeline of the PLC program in ideal IEEE single precision.
 
-    Every input, constant and intermediate is a float32 (the S7-200 REAL), in the order a
-    PLC program computes them, following the paper's Figures 4-6 where they are sound::
-
-        t1  = atan2(Py, Px)                      (eq. 6; Fig. 4 divides, then ARCTAN)
-        r   = cos(t1) Px + sin(t1) Py            (eq. 7; Fig. 5 uses COS/SIN of t1)
-        z   = Pz - L1                            (eq. 8)
-        c3  = (r r + z z - L2 L2 - L3 L3) / (2 L2 L3), clipped to [-1, 1]   (eqs. 9-10)
-        t3  = -acos(c3)
-        k   = L2 cos t3 + L3,  s = L2 sin t3
-        t23 = atan2(z k + r s, r k - z s);  t2 = t23 - t3 wrapped   (eqs. 18-19)
-        c   = ROUND(t * (180/pi) / 360 * ppr)    (eqs. 20-22, half away from zero)
-
-    numpy's float32 ``arctan2``/``arccos``/``cos``/``sin`` are correctly rounded-ish single
-    precision library functions, i.e. the best a PLC's REAL subroutines could do; the
-    S7-200 has no ARCTAN/ARCCOS instruction and a series subroutine is likely worse.
-
-    Only meaningful where the float64 front-up solution exists; other targets still get
-    numbers (no NaN: c3 is clipped), so mask them with ``arm.solve(...).ok``.
+    :func:`analysis.plc.model.predict` with :class:`~analysis.kinematics.ops.Float32Ops`:
+    every input, constant and intermediate a float32 (a PLC's REAL), correctly rounded
+    trigonometry (the best a PLC's REAL routines could do; the generated S7-200
+    subroutines are modelled by ``predict``'s default). Only meaningful where the float64
+    solution exists; refused targets get pulses 0.
 
     Returns
     -------
-    pulses : ndarray of int64, shape (..., 3)
-    theta : ndarray of float32, shape (..., 3)
+    pulses : ndarray of int64, shape (..., n)
+    theta : ndarray of float32, shape (..., n)
         The float32 joint angles [rad].
     """
+    from analysis.plc.model import predict
+
     p = as_points(p)
-    f = np.float32
-    ppr = _ppr(arm, pulses_per_rev).astype(f)
-    x, y, pz = (p[..., k].astype(f) for k in range(3))
-    L1, L2, L3 = f(arm.params.L1), f(arm.params.L2), f(arm.params.L3)
-    pi = f(np.pi)
-    t1 = np.arctan2(y, x)
-    r = np.cos(t1) * x + np.sin(t1) * y
-    z = pz - L1
-    c3 = (r * r + z * z - L2 * L2 - L3 * L3) / (f(2.0) * L2 * L3)
-    c3 = np.clip(c3, f(-1.0), f(1.0))
-    t3 = -np.arccos(c3)
-    k = L2 * np.cos(t3) + L3
-    s = L2 * np.sin(t3)
-    t23 = np.arctan2(z * k + r * s, r * k - z * s)
-    t2 = t23 - t3
-    t2 = np.where(t2 > pi, t2 - f(2.0) * pi, np.where(t2 <= -pi, t2 + f(2.0) * pi, t2)).astype(f)
-    theta = np.stack([t1, t2, t3], axis=-1).astype(f)
-    deg = theta * f(180.0 / np.pi)
-    exact = deg / f(360.0) * ppr
-    assert exact.dtype == np.float32
-    whole = np.trunc(
-        exact
-    )  # ROUND, half away from zero, as analysis.kinematics.pulses.round_half_away
-    pulses = (whole + np.where(np.abs(exact - whole) >= f(0.5), np.sign(exact), f(0.0))).astype(
-        np.int64
+    params = (
+        arm.params
+        if pulses_per_rev is None
+        else arm.params.with_(pulses_per_rev=tuple(int(v) for v in _ppr(arm, pulses_per_rev)))
     )
-    return pulses, theta
+    r = predict(params, p.reshape(-1, 3), ops=Float32Ops())
+    shape = p.shape[:-1]
+    return r.pulses.reshape(*shape, -1), r.theta.reshape(*shape, -1)

@@ -1,20 +1,21 @@
-"""analysis.kinematics.fastik (Numba fast path) equals analysis.kinematics.arm (numpy reference)
-exactly.
+"""analysis.kinematics.compiled: the kernels generated from the closed form equal the numpy
+evaluation of the same closed form (analysis.kinematics.arm) exactly.
 
 Angles are compared modulo 2 pi: both wrap to (-pi, pi], and an angle within an ulp of
-+-pi may land on either end. Tolerance 1e-12 rad: the two paths evaluate the same closed
-form with different (2-ulp) atan2/acos implementations and an algebraically equal
-sin(acos c) = sqrt((1 - c)(1 + c)); the worst case seen is ~1e-13 rad, near the folded
-elbow where acos is ill-conditioned.
++-pi may land on either end. Tolerance 1e-12 rad: the two paths evaluate the same recorded
+operations except atan2 (libm vs the kernel's Cephes version, 2 ulp) and acos (libm vs
+atan2(sqrt((1 - c)(1 + c)), c)); the worst case seen is ~1e-13 rad, near the folded elbow
+where acos is ill-conditioned.
 """
 
 import numpy as np
 import pytest
 
-from analysis.kinematics import fastik
+from analysis.kinematics import compiled
 from analysis.kinematics.arm import BRANCHES, Status
 from analysis.kinematics.pinocchio_model import PinocchioArm
 from analysis.kinematics.pulses import angles_to_pulses, pulses_to_angles
+from analysis.studies import quantization as Q
 
 ANGLE_TOL = 1e-12  # rad, see module docstring
 MM_TOL = 1e-9  # mm: float64 round-off on ~1e3 mm lengths is ~1e-13; margin for sqrt vs hypot
@@ -100,9 +101,9 @@ def boundary_targets(arm):
     return np.concatenate(pts)
 
 
-def test_solve_all_equals_arm_solve_random(arm, rng):
+def test_compiled_solve_equals_arm_solve_random(arm, rng):
     p = arm.shoulder + rng.uniform(-1.1, 1.1, (200_000, 3)) * arm.params.reach_outer
-    ref, got = arm.solve(p, "all"), fastik.solve_all(arm, p)
+    ref, got = arm.solve(p, "all"), arm.solve(p, backend="compiled")
     assert_same_solutions(ref, got)
     # the sample really exercises every status
     assert {int(s) for s in np.unique(ref.status)} == {
@@ -112,26 +113,26 @@ def test_solve_all_equals_arm_solve_random(arm, rng):
     }
 
 
-def test_solve_all_equals_arm_solve_boundaries(arm):
+def test_compiled_solve_equals_arm_solve_boundaries(arm):
     p = boundary_targets(arm)
-    ref, got = arm.solve(p, "all"), fastik.solve_all(arm, p)
+    ref, got = arm.solve(p, "all"), arm.solve(p, backend="compiled")
     assert_same_solutions(ref, got)
-    assert set(np.unique(ref.status).tolist()) == {int(s) for s in Status}
+    assert set(np.unique(ref.status).tolist()) == {0, 1, 2, 3}  # the statuses this arm has
 
 
 @pytest.mark.parametrize("tol", [1e-9, 1e-6, 1e-2])
-def test_solve_all_tolerance_is_passed_through(arm, tol):
+def test_compiled_solve_tolerance_is_passed_through(arm, tol):
     p = boundary_targets(arm)
-    assert_same_solutions(arm.solve(p, "all", tol=tol), fastik.solve_all(arm, p, tol=tol))
+    assert_same_solutions(arm.solve(p, "all", tol=tol), arm.solve(p, backend="compiled", tol=tol))
 
 
-def test_solve_all_other_arm_and_shapes(arm, rng):
+def test_compiled_solve_other_arm_and_shapes(arm, rng):
     other = type(arm)(arm.params.with_(L1=100.0, L2=150.0, L3=420.0))  # L3 > L2
     p = other.shoulder + rng.uniform(-600, 600, (5, 7, 3))
-    ref, got = other.solve(p, "all"), fastik.solve_all(other, p)
+    ref, got = other.solve(p, "all"), other.solve(p, backend="compiled")
     assert got.theta.shape == (5, 7, 4, 3) and got.status.shape == (5, 7)
     assert_same_solutions(ref, got)
-    one = fastik.solve_all(arm, [100.0, 100.0, 600.0])
+    one = arm.solve([100.0, 100.0, 600.0], backend="compiled")
     assert one.theta.shape == (4, 3)
     # Table 4 row 1: theta1 = 45 and theta3 = -155.13 deg as printed (2 decimals); theta2 is
     # misprinted there (190.20, see the errata), so it is checked by FK instead
@@ -143,32 +144,32 @@ def test_solve_all_other_arm_and_shapes(arm, rng):
     )
 
 
-def test_solve_all_rejects_bad_input(arm):
+def test_compiled_solve_rejects_bad_input(arm):
     with pytest.raises(ValueError, match="shape"):
-        fastik.solve_all(arm, [1.0, 2.0])
+        arm.solve([1.0, 2.0], backend="compiled")
     with pytest.raises(ValueError, match="non-finite"):
-        fastik.solve_all(arm, [[1.0, np.nan, 600.0]])
+        arm.solve([[1.0, np.nan, 600.0]], backend="compiled")
 
 
 def test_fk_equals_arm_fk_and_pinocchio(arm, rng):
     q = rng.uniform(-2 * np.pi, 2 * np.pi, (100_000, 3))
-    np.testing.assert_allclose(fastik.fk(arm, q), arm.fk(q), rtol=0, atol=MM_TOL)
+    np.testing.assert_allclose(compiled.fk(arm, q), arm.fk(q), rtol=0, atol=MM_TOL)
     pin = PinocchioArm(arm.params.dh_table())
-    np.testing.assert_allclose(fastik.fk(arm, q[:200]), pin.fk(q[:200]), rtol=0, atol=MM_TOL)
-    assert fastik.fk(arm, q.reshape(10, 10_000, 3)).shape == (10, 10_000, 3)
+    np.testing.assert_allclose(compiled.fk(arm, q[:200]), pin.fk(q[:200]), rtol=0, atol=MM_TOL)
+    assert compiled.fk(arm, q.reshape(10, 10_000, 3)).shape == (10, 10_000, 3)
     with pytest.raises(ValueError, match="shape"):
-        fastik.fk(arm, np.zeros((4, 2)))
+        compiled.fk(arm, np.zeros((4, 2)))
 
 
-@pytest.mark.skipif(not fastik.HAVE_NUMBA, reason="compiled helpers only exist with numba")
+@pytest.mark.skipif(not compiled.HAVE_NUMBA, reason="compiled helpers only exist with numba")
 def test_atan2_acos_helpers_match_libm():
-    import numba
-
-    @numba.njit(error_model="numpy")  # as the kernels: 0/0 gives NaN, not an exception
-    def many(y, x, c, o1, o2):
-        for i in range(y.shape[0]):
-            o1[i] = fastik._atan2(y[i], x[i])
-            o2[i] = fastik._acos(c[i])
+    """The kernel's atan2 and acos (= atan2(sqrt((1 - c)(1 + c)), c)) against libm."""
+    kern = compiled.build(
+        lambda m, v: {"a": m.atan2(v["y"], v["x"]), "c": m.acos(v["c"])},
+        ("y", "x", "c"),
+        (),
+        {"a": "f8", "c": "f8"},
+    )
 
     rng = np.random.default_rng(3)
     n = 400_000
@@ -194,7 +195,11 @@ def test_atan2_acos_helpers_match_libm():
         [rng.uniform(-1, 1, n - 8), [1.0, -1.0, 0.0, -0.0, 1 - 2**-53, -1 + 2**-53, 0.5, -0.5]]
     )
     o1, o2 = np.empty(n), np.empty(n)
-    many(y, x, c, o1, o2)
+    kern.run(np.stack([y, x, c], axis=1), [], [o1, o2])
+    py = compiled.atan2_reference()  # the same source as plain Python
+    np.testing.assert_array_equal(
+        [py(a, b) for a, b in zip(y[:2000], x[:2000], strict=True)], o1[:2000]
+    )
     ref1, ref2 = np.arctan2(y, x), np.arccos(c)
     two_ulp = 2 * np.spacing(np.maximum(np.abs(ref1), np.finfo(float).tiny))
     assert (np.abs(o1 - ref1) <= two_ulp).all()
@@ -202,11 +207,17 @@ def test_atan2_acos_helpers_match_libm():
     assert np.abs(o2 - ref2).max() <= 4.5e-16  # 2 ulp of pi
 
 
-def test_ik_front_up_pulses_equals_numpy_pipeline(arm, rng):
+def test_quantization_map_equals_numpy_pipeline(arm, rng):
+    """The compiled rounding kernel (analysis.studies.quantization.rounding_body) equals the
+    same body run with numpy and the separate numpy functions (solve, pulses, fk)."""
     p = arm.shoulder + rng.uniform(-1.05, 1.05, (100_000, 3)) * arm.params.reach_outer
     p = np.concatenate([p, boundary_targets(arm)])
     for ppr in ((4000, 4000, 4000), (200, 1600, 25600)):
-        c, err, ok = fastik.ik_front_up_pulses(arm, p, ppr)
+        err, c, ok = Q.quantization_map(arm, p, pulses_per_rev=ppr)
+        same = Q.quantization_error(arm, p, pulses_per_rev=ppr)
+        np.testing.assert_array_equal(ok, same.ok)
+        np.testing.assert_array_equal(c, same.pulses)
+        np.testing.assert_allclose(err[ok], same.error_mm[ok], rtol=0, atol=MM_TOL)
         sol = arm.solve(p, "front-up")
         np.testing.assert_array_equal(ok, sol.ok[:, 0])
         q = sol.theta[ok, 0, :]
@@ -220,21 +231,17 @@ def test_ik_front_up_pulses_equals_numpy_pipeline(arm, rng):
         np.testing.assert_allclose(err[ok][~differ], eref[~differ], rtol=0, atol=MM_TOL)
         assert np.isnan(err[~ok]).all() and (c[~ok] == 0).all()
     with pytest.raises(ValueError, match="pulses_per_rev"):
-        fastik.ik_front_up_pulses(arm, p[:3], (4000, 0, 4000))
+        Q.quantization_map(arm, p[:3], pulses_per_rev=(4000, 0, 4000))
 
 
 def test_rounding_matches_pulses_module_on_hard_cases(arm):
-    """0.49999999999999994 and exact halves round as analysis.kinematics.pulses.round_half_away."""
+    """0.49999999999999994 and exact halves round as analysis.kinematics.pulses.round_half_away
+    (the same generic definition, compiled)."""
     from analysis.kinematics.pulses import round_half_away
 
-    if not fastik.HAVE_NUMBA:
+    if not compiled.HAVE_NUMBA:
         pytest.skip("compiled helper only exists with numba")
-    import numba
-
-    @numba.njit
-    def rnd(v, o):
-        for i in range(v.shape[0]):
-            o[i] = fastik._round_half_away(v[i])
+    kern = compiled.build(lambda m, v: {"r": m.round(v["v"])}, ("v",), (), {"r": "f8"})
 
     v = np.array(
         [
@@ -253,11 +260,11 @@ def test_rounding_matches_pulses_module_on_hard_cases(arm):
         ]
     )
     o = np.empty_like(v)
-    rnd(v, o)
+    kern.run(v[:, None], [], [o])
     np.testing.assert_array_equal(o, round_half_away(v))
 
 
 def test_tol_is_validated(arm):
     for bad in (-1.0, np.nan, np.inf, "1"):
         with pytest.raises(ValueError, match="tol"):
-            fastik.solve_all(arm, [100.0, 100.0, 600.0], tol=bad)
+            arm.solve([100.0, 100.0, 600.0], backend="compiled", tol=bad)

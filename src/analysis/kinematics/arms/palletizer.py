@@ -1,0 +1,156 @@
+"""The seed-001 4-axis palletizer: the corrected geometric IK (eqs. 1-6, 12), written once.
+
+Geometry (``data/arms/palletizer.toml``, modified D-H of eq. 8): the waist turns about the
+vertical axis through the shoulder (L0 = 0); the upper arm (L1) and forearm (L2) move in the
+vertical plane at azimuth gamma; the L-shaped gripper reaches L3 forward and h down and is
+kept level (theta2 + theta3 + theta4 = pi/2, theta5 = 0). With ``rho = |(X0, Y0)|``::
+
+    gamma  = atan2(Y0, X0)                               (eqs. 1 and 6, with atan2)
+    w      = rho - L3,  zw = Z0 + h                      (the wrist in the arm plane)
+    L4     = |(w, zw)|                                   (eq. 2)
+    alpha1 = acos((L1^2 + L4^2 - L2^2) / (2 L1 L4))      (eq. 3)
+    alpha2 = atan2(zw, w)                                (eq. 3 prints arcsin(H/L4))
+    beta1  = acos((L1^2 + L2^2 - L4^2) / (2 L1 L2))      (eq. 3, "arccos" lost in print)
+
+and, with eq. 12 corrected to keep the gripper level (theta4 = pi/2 - (theta2 + theta3)):
+
+============  =======================  ===============  ==================================
+branch        theta2                   theta3           theta4
+============  =======================  ===============  ==================================
+elbow-up      -(alpha1 + alpha2)       pi - beta1       alpha1 + alpha2 + beta1 - pi/2
+elbow-down    alpha1 - alpha2          beta1 - pi       alpha2 - alpha1 - beta1 - pi/2
+============  =======================  ===============  ==================================
+
+theta1 = gamma for both. "elbow-up" is the paper's pose (eq. 4: alpha = alpha1 + alpha2 -
+pi/2, beta = pi/2 - beta1, motor angles -> D-H angles by eq. 12). theta1, theta2, theta4
+are wrapped to (-pi, pi]; theta3 is not (branch-signed, continuous at the stretched arm).
+Refused: out of reach (L4 > L1 + L2), inside the inner reach (L4 < |L1 - L2|), on the base
+axis (rho = 0: gamma undefined), and, in the isosceles family L1 = L2, the wrist on the
+shoulder (L4 = 0: alpha2 undefined; status "degenerate").
+"""
+
+from __future__ import annotations
+
+from analysis.kinematics.status import Status
+
+__all__ = ["BRANCHES", "INPUTS", "check", "geometry", "ik", "refusal"]
+
+BRANCHES = ("elbow-up", "elbow-down")
+INPUTS = ("px", "py", "pz")
+"""The grasp point G = (X0, Y0, Z0) [mm] in the base frame."""
+
+
+def check(P) -> None:
+    """Reject lengths the closed form cannot use (ValueError naming the value)."""
+    for name in ("L1", "L2"):
+        if not P[name] > 0:
+            raise ValueError(f"{name} = {P[name]} mm: link lengths must be > 0 mm")
+    for name in ("L3", "h"):
+        if not P[name] >= 0:
+            raise ValueError(f"{name} = {P[name]} mm: the gripper offsets must be >= 0 mm")
+
+
+def geometry(P) -> dict:
+    """The shoulder (the base origin, L0 = 0) and the reach radii of the wrist [mm]."""
+    return {
+        "shoulder": (0.0, 0.0, 0.0),
+        "reach_outer": P["L1"] + P["L2"],
+        "reach_inner": abs(P["L1"] - P["L2"]),
+    }
+
+
+def ik(m, p, P, *, tol, theta1_on_axis=None):
+    """Both elbow branches for grasp point ``p`` [mm] (corrected eqs. 1-6 and 12).
+
+    Returns ``branches`` {name: (theta1..theta4)} [rad], ``refusals`` in priority order and
+    ``outside`` (signed distance of the wrist outside its reach [mm]).
+
+    Examples
+    --------
+    >>> from analysis.kinematics.ops import numpy_ops as m
+    >>> P = {"L1": 200.0, "L2": 200.0, "L3": 50.0, "h": 70.0}
+    >>> r = ik(m, (250.0, 0.0, 100.0), P, tol=1e-6)
+    >>> [round(float(m.degrees(t)), 2) for t in r["branches"]["elbow-up"]]
+    [0.0, -89.35, 97.98, 81.38]
+    """
+    x, y, z = p
+    L1, L2, L3, h = P["L1"], P["L2"], P["L3"], P["h"]
+    outer = m.let("outer", L1 + L2)
+    inner = m.let("inner", m.abs(L1 - L2))
+    m.section("reach check: |L1 - L2| <= L4 <= L1 + L2 (eq. 2)")
+    zw = m.let("zw", z + h)
+    box = outer + L3 + tol
+    out_box = m.any_(m.gt(m.abs(x), box), m.gt(m.abs(y), box), m.gt(m.abs(zw), outer + tol))
+    rho = m.let("rho", m.sqrt(x * x + y * y))
+    w = m.let("w", rho - L3)
+    l4sq = m.let("L4sq", w * w + zw * zw)
+    l4 = m.let("L4", m.sqrt(l4sq))
+    beyond = m.let("beyond", l4 - outer)
+    within = m.let("within", inner - l4)
+    refusals = [
+        (Status.OUT_OF_REACH, out_box),
+        (Status.OUT_OF_REACH, m.gt(beyond, tol)),
+        (Status.INSIDE_REACH, m.gt(within, tol)),
+    ]
+    m.section("gamma = atan2(Y0, X0) (eqs. 1, 6); the base axis")
+    on_axis = m.le(rho, tol)
+    gamma = m.atan2(y, x)
+    if theta1_on_axis is None:
+        refusals.append((Status.BASE_AXIS, on_axis))
+    else:
+        gamma = m.select(on_axis, theta1_on_axis, gamma)
+    gamma = m.let("theta1", m.wrap(gamma))
+    wrist_on_shoulder = m.le(l4, tol)
+    refusals.append((Status.DEGENERATE, wrist_on_shoulder))
+    m.section("alpha1, alpha2, beta1 (eq. 3)")
+    l4safe = m.select(wrist_on_shoulder, 1.0, l4)
+    ca1 = m.clip((L1 * L1 - L2 * L2 + l4sq) / (2.0 * L1 * l4safe), -1.0, 1.0)
+    a1 = m.let("alpha1", m.acos(ca1))
+    a2 = m.let("alpha2", m.atan2(zw, w))
+    cb1 = m.clip(((L1 * L1 + L2 * L2) - l4sq) / (2.0 * L1 * L2), -1.0, 1.0)
+    b1 = m.let("beta1", m.acos(cb1))
+    m.section("D-H angles (eq. 12, gripper kept level)")
+    s12 = m.let("alpha12", a1 + a2)
+    branches = {
+        "elbow-up": (
+            gamma,
+            m.let("theta2", m.wrap(-s12)),
+            m.let("theta3", m.pi - b1),
+            m.let("theta4", m.wrap((s12 + b1) - m.pi / 2)),
+        ),
+        "elbow-down": (
+            gamma,
+            m.wrap(a1 - a2),
+            b1 - m.pi,
+            m.wrap(((a2 - a1) - b1) - m.pi / 2),
+        ),
+    }
+    outside = m.select(m.gt(beyond, within), beyond, within)
+    return {"branches": branches, "refusals": refusals, "outside": outside}
+
+
+def refusal(status: Status, p, P, *, tol: float, distance: float) -> tuple[str, float]:
+    """The one-line reason a grasp point is refused, and the limit crossed [mm]."""
+    g = geometry(P)
+    tgt = "(" + ", ".join(f"{float(v):g}" for v in p) + ")"
+    if status == Status.OUT_OF_REACH:
+        return (
+            f"grasp point {tgt} mm puts the wrist {distance:.3f} mm beyond the reach of "
+            f"{g['reach_outer']:g} mm (L1 + L2) from the shoulder"
+        ), g["reach_outer"]
+    if status == Status.INSIDE_REACH:
+        return (
+            f"grasp point {tgt} mm puts the wrist {distance:.3f} mm inside the inner reach "
+            f"{g['reach_inner']:g} mm (|L1 - L2|) around the shoulder"
+        ), g["reach_inner"]
+    if status == Status.BASE_AXIS:
+        return (
+            f"grasp point {tgt} mm lies on the base axis (within {tol:g} mm): the waist "
+            f"angle gamma is undefined (eq. 6 covers no such case); choose it"
+        ), float("nan")
+    if status == Status.DEGENERATE:
+        return (
+            f"grasp point {tgt} mm puts the wrist on the shoulder (L4 = 0, possible because "
+            f"L1 = L2): alpha2 = atan2(zw, w) is undefined"
+        ), 0.0
+    raise ValueError(f"no message for status {status!r}")
