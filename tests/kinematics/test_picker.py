@@ -265,7 +265,7 @@ def test_joint_laws_under_each_reading():
 
 
 def test_replay_experiment_flags_the_readings():
-    rep = pk.replay_experiment(PICKER)
+    rep = pk.replay_experiment(picker=PICKER)
     assert set(rep) == set(pk.READINGS)
     assert [k for k, v in rep.items() if v["units_printed"]] == ["velocity, rad/s"]
     assert {k for k, v in rep.items() if v["plausible"]} == {"velocity, deg/s", "value, deg"}
@@ -277,3 +277,5 @@ def test_replay_experiment_flags_the_readings():
     assert_allclose(
         rep["velocity, rad/s"]["position"][1], rep["value, rad"]["position"][1], 1e-9, "t=2"
     )
+    one = pk.replay_experiment(2.0)  # default picker, scalar time
+    assert_allclose(one["value, deg"]["position"], rep["value, deg"]["position"][1:2], 0.0, "t")

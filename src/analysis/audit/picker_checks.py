@@ -132,7 +132,7 @@ def findings(picker: pk.Picker | None = None) -> list[Finding]:
     out: list[Finding] = []
     v, r = rs["velocity, rad/s"], rs["value, rad"]
     d, dv = rs["value, deg"], rs["velocity, deg/s"]
-    rep = pk.replay_experiment(picker)
+    rep = pk.replay_experiment(picker=picker)
     out.append(
         Finding(
             "pick-units-omega",

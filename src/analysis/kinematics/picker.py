@@ -458,9 +458,14 @@ def law_active(t: npt.ArrayLike, reading: str) -> npt.NDArray[np.float64]:
 
 
 def replay_experiment(
-    picker: Picker, t: npt.ArrayLike = (1.0, 2.0, 3.0, 4.0, 5.0), instrument=(1500.0, 0.0, 0.0)
+    t: npt.ArrayLike = (1.0, 2.0, 3.0, 4.0, 5.0),
+    picker: Picker | None = None,
+    instrument=(1500.0, 0.0, 0.0),
 ) -> dict[str, dict]:
     """Evaluate the sec. 4 joint laws at t [s] under every reading of :data:`READINGS`.
+
+    ``picker`` defaults to :func:`load_picker` (assumed dimensions); ``instrument`` is the
+    origin of the measuring instrument's frame S' in S [mm] (sec. 4: (1500, 0, 0)).
 
     Returns
     -------
@@ -473,7 +478,8 @@ def replay_experiment(
         :data:`PLAUSIBLE_MAX_TURN`); ``units_printed``; ``note``; ``assumed`` (the names of
         the assumed dimensions behind the positions).
     """
-    t = np.asarray(t, dtype=float)
+    picker = picker if picker is not None else load_picker()
+    t = np.atleast_1d(np.asarray(t, dtype=float))
     p = picker.params
     out = {}
     for name, spec in READINGS.items():

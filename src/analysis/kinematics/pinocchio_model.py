@@ -17,6 +17,10 @@ placement carried to the next joint or to the tool frame)::
 
 A ``fixed`` row (a tool frame) only extends ``M``. The last ``M`` becomes the operational
 frame ``"tool"`` on the last joint, so ``oMf[tool]`` equals ``DHTable.fk``.
+
+:func:`build_poe_model` builds the same kind of model from space-frame screw axes and a home
+pose instead (revolute and prismatic joints, aligned or not), the independent check of
+:mod:`analysis.kinematics.poe`; :class:`PinocchioPOE` evaluates it.
 """
 
 from __future__ import annotations

@@ -5,13 +5,13 @@ Data only: every printed statement the audit checks, as close to the print as a
 machine-readable form allows; nothing here is corrected (the checks live in
 :mod:`analysis.audit.palletizer_checks`). Imports only the standard library and SymPy.
 
-Source: ``/work/shared/seeds/001_d07c5622ca21ee76.txt``, a text extraction of the PDF in
-which each displayed equation survived as one bracketed run of glyphs with fraction bars,
-radicals, superscripts and most parentheses lost, e.g. ``[γ‘'=arctanY0X0]`` for eq. 1. Each
-equation below keeps that run verbatim (``extracted``), a reading in plain notation
-(``printed``), a SymPy-parsable transcription of that reading (``parts``) and what had to
-be inferred (``garbled``). Where two readings survive, the second is in ``alternatives``.
-Tables 1-3 and Figures 1-7 lost their bodies: :data:`LOST`.
+Source: the seed's text extraction of the PDF (:data:`SOURCE`, kept outside the
+repository), in which each displayed equation survived as one bracketed run of glyphs with
+fraction bars, radicals, superscripts and most parentheses lost, e.g. ``[γ‘'=arctanY0X0]``
+for eq. 1. Each equation below keeps that run verbatim (``extracted``), a reading in plain
+notation (``printed``), a SymPy-parsable transcription of that reading (``parts``) and what
+had to be inferred (``garbled``). Where two readings survive, the second is in
+``alternatives``. Tables 1-3 and Figures 1-7 lost their bodies: :data:`LOST`.
 
 Notation of the transcription (SymPy syntax, :data:`SYMBOLS`)
 -------------------------------------------------------------

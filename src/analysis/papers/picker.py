@@ -7,11 +7,12 @@ machine-readable form allows; nothing here is corrected or inferred without sayi
 reconstruction of the mechanism is :mod:`analysis.kinematics.picker`, the checks are
 :mod:`analysis.audit.picker_checks`). Imports only the standard library and SymPy.
 
-Source: ``/work/shared/seeds/002_9c33c7a2088bff5e.txt``. The extraction kept the running
-text (with pinyin readings in parentheses after some characters, e.g. 聯(lián)) and lost
-every displayed equation (eqs. 1-22: no body survives, not even the numbers, which are
-counted from the text's lead-ins, :data:`EQUATION_NUMBERS`), Table 1 (dimensions), Table 2
-(errors) and Figures 1-4. :data:`EXTRACTED` holds the verbatim runs each item rests on.
+Source: the seed's text extraction (:data:`SOURCE`, kept outside the repository). It kept
+the running text (with pinyin readings in parentheses after some characters, e.g.
+聯(lián)) and lost every displayed equation (eqs. 1-22: no body survives, not even
+the numbers, which are counted from the text's lead-ins, :data:`EQUATION_NUMBERS`), Table 1
+(dimensions), Table 2 (errors) and Figures 1-4. :data:`EXTRACTED` holds the verbatim runs
+each item rests on.
 """
 
 from __future__ import annotations
