@@ -17,6 +17,10 @@ placement carried to the next joint or to the tool frame)::
 
 A ``fixed`` row (a tool frame) only extends ``M``. The last ``M`` becomes the operational
 frame ``"tool"`` on the last joint, so ``oMf[tool]`` equals ``DHTable.fk``.
+
+:func:`build_poe_model` builds the same kind of model from space-frame screw axes and a home
+pose instead (revolute and prismatic joints, aligned or not), the independent check of
+:mod:`analysis.kinematics.poe`; :class:`PinocchioPOE` evaluates it.
 """
 
 from __future__ import annotations
@@ -28,8 +32,9 @@ import numpy.typing as npt
 import pinocchio as pin
 
 from analysis.kinematics.dh import DHTable
+from analysis.kinematics.poe import check_home, check_screws, joint_kinds
 
-__all__ = ["PinocchioArm", "build_model"]
+__all__ = ["PinocchioArm", "PinocchioPOE", "build_model", "build_poe_model"]
 
 TOOL_FRAME = "tool"
 
@@ -132,3 +137,104 @@ class PinocchioArm:
             )
             out[k] = J[:3]
         return out.reshape(*q.shape[:-1], 3, self.model.nv)
+
+
+# --------------------------------------------------------------------------- screw axes
+_AXIS_NAMES = "XYZ"
+_FLIP = {  # rotation by pi about an axis orthogonal to k: maps local +k to world -k
+    0: pin.utils.rotate("z", np.pi),
+    1: pin.utils.rotate("z", np.pi),
+    2: pin.utils.rotate("x", np.pi),
+}
+ALIGN_TOL = 1e-12
+"""An axis counts as aligned with a base axis when its other two components are below this."""
+
+
+def _aligned_axis(axis: npt.NDArray[np.float64]) -> tuple[int, float] | None:
+    """(index, sign) of the base axis ``axis`` lies along, or None."""
+    k = int(np.argmax(np.abs(axis)))
+    others = np.delete(axis, k)
+    if np.all(np.abs(others) <= ALIGN_TOL):
+        return k, float(np.sign(axis[k]))
+    return None
+
+
+def build_poe_model(screws: npt.ArrayLike, M: npt.ArrayLike, name: str = "poe-chain") -> pin.Model:
+    """Pinocchio model of a serial chain given by space-frame screw axes and a home pose.
+
+    The independent check of :mod:`analysis.kinematics.poe` (seed 002 eq. 9). Joint i gets a
+    frame F_i at the home configuration: origin on the axis (``omega x v``, the point
+    nearest the base origin) for a revolute joint, at the previous joint's origin for a
+    prismatic one. A joint whose axis lies along a base axis is ``JointModelRX/RY/RZ`` or
+    ``PX/PY/PZ``; a negative direction (e.g. -y) keeps that joint type with F_i turned by pi
+    about an orthogonal axis. Any other axis is ``RevoluteUnaligned``/``PrismaticUnaligned``
+    with F_i parallel to the base frame. Placements are ``F_(i-1)^-1 F_i``, the tool frame
+    ``"tool"`` sits at ``F_n^-1 M``. Since ``F exp([A] q) = exp([Ad_F A] q) F``, Pinocchio's
+    ``oMf[tool]`` equals ``exp([S1]q1)...exp([Sn]qn) M``.
+
+    Parameters
+    ----------
+    screws : array_like, shape (n, 6)
+        Revolute or prismatic screw axes (omega, v), validated by
+        :func:`analysis.kinematics.poe.check_screws`.
+    M : array_like, shape (4, 4)
+        Home pose of the tool frame [mm].
+    """
+    S = check_screws(screws)
+    M = check_home(M)
+    kinds = joint_kinds(S)
+    model = pin.Model()
+    model.name = name
+    parent = 0
+    prev = pin.SE3.Identity()
+    for i, (row, kind) in enumerate(zip(S, kinds, strict=True)):
+        axis = row[:3] if kind == "revolute" else row[3:]
+        origin = np.cross(row[:3], row[3:]) if kind == "revolute" else prev.translation.copy()
+        aligned = _aligned_axis(axis)
+        if aligned is None:
+            R = np.eye(3)
+            joint = (
+                pin.JointModelRevoluteUnaligned(axis.copy())
+                if kind == "revolute"
+                else pin.JointModelPrismaticUnaligned(axis.copy())
+            )
+        else:
+            k, sign = aligned
+            R = np.eye(3) if sign > 0 else _FLIP[k]
+            prefix = "R" if kind == "revolute" else "P"
+            joint = getattr(pin, f"JointModel{prefix}{_AXIS_NAMES[k]}")()
+        frame = pin.SE3(R, origin)
+        parent = model.addJoint(parent, joint, prev.inverse() * frame, f"joint{i + 1}")
+        prev = frame
+    model.addFrame(
+        pin.Frame(TOOL_FRAME, parent, prev.inverse() * pin.SE3(M), pin.FrameType.OP_FRAME)
+    )
+    return model
+
+
+@dataclass
+class PinocchioPOE:
+    """:func:`build_poe_model` plus data, with per-configuration placements (a loop over
+    points: Pinocchio evaluates one configuration per call)."""
+
+    screws: npt.ArrayLike
+    M: npt.ArrayLike
+
+    def __post_init__(self) -> None:
+        self.model = build_poe_model(self.screws, self.M)
+        self.data = self.model.createData()
+        self.tool_id = self.model.getFrameId(TOOL_FRAME)
+
+    def placements(self, q: npt.ArrayLike) -> npt.NDArray[np.float64]:
+        """Base-to-tool transforms (..., 4, 4) [mm] for configurations (..., n)."""
+        q = np.asarray(q, dtype=float)
+        if q.ndim == 0 or q.shape[-1] != self.model.nq:
+            raise ValueError(
+                f"configurations have shape {q.shape}; expected (..., {self.model.nq})"
+            )
+        flat = q.reshape(-1, self.model.nq)
+        out = np.empty((flat.shape[0], 4, 4))
+        for k, qk in enumerate(flat):
+            pin.framesForwardKinematics(self.model, self.data, qk)
+            out[k] = self.data.oMf[self.tool_id].homogeneous
+        return out.reshape(*q.shape[:-1], 4, 4)
