@@ -1,0 +1,1 @@
+"""The audit: every printed item checked against its derivation, one register schema per paper."""
