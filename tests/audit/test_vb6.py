@@ -298,11 +298,33 @@ def test_gui_check_uses_the_default_property(as_printed):
     assert vb6.run_command1(high)["controls"]["Command3"]["props"]["Enabled"].value is False
 
 
-def test_unreachable_target_still_gives_numbers():
-    """Sqr(Abs(1 - c3 * c3)) hides |c3| > 1: a pose 2 m away is 'solved' without error."""
+def test_unreachable_target_passes_the_check_and_still_gives_numbers():
+    """(600, 10, 0) mm is 600.1 mm from the shoulder, beyond 228 + 228 + 73 = 529 mm; the
+    check compares start with end only, and degrees in Sin/Cos keep c3 inside [-1, 1]."""
+    far = dict(INPUTS, Text1="600", Text2="10", Text3="0", Text7="600", Text8="10", Text9="0")
+    out = vb6.run_command1(far)
+    assert out["controls"]["Command3"]["props"]["Enabled"].value is True
+    assert out["locals"]["c3"].value == pytest.approx(0.7116641922908243, abs=1e-12)
+    assert [out["text"][f"Text{i}"] for i in range(13, 18)] == [
+        ".955",
+        "-24.756",
+        "44.63",
+        "-4.611",
+        "13.485",
+    ]
+    # and where |c3| > 1, Sqr(Abs(1 - c3 * c3)) hides it: a pose 2 m away is "solved"
     out = vb6.run_command1(dict(INPUTS, Text7="2000", Text8="0", Text9="0"))
-    assert abs(out["locals"]["cf3"].value) > 1
-    assert out["text"]["Text20"] not in ("", ".")
+    assert out["locals"]["cf3"].value == pytest.approx(39.34130266121716, abs=1e-9)
+    assert out["text"]["Text20"] == "44.991"
+
+
+def test_zero_angle_prints_a_dot_and_breaks_the_trajectory_button():
+    """Format(0, "####.###") is "." ; Command3_Click then computes b - a with b = "."."""
+    out = vb6.run_command1(dict(INPUTS, Text7="2000", Text8="0", Text9="0"))
+    assert out["text"]["Text18"] == "."  # θf1 = Atn(0 / 2000) = 0
+    with pytest.raises(vb6.VB6Error) as err:
+        vb6.run(vb6.listing(), "Command3_Click", form=out["form"])
+    assert err.value.number == 13
 
 
 def test_px_zero_raises_division_by_zero():
