@@ -498,6 +498,12 @@ def test_header_only_gives_empty_columns(tmp_path):
         ),
         ('x_mm,y_mm,z_mm\n1,"2"x,3\n', r"t\.csv line 2: malformed CSV", 2, None),
         (
+            'x_mm,y_mm,z_mm\n1,2,3\n\n\n4,5,"6\n7\n',
+            r"t\.csv line 5: quoted field not closed",
+            5,
+            None,
+        ),
+        (
             b"x_mm,y_mm,z_mm\n1,2,3\n4,5,\xff6\n",
             r"line 3: not valid utf-8 text \(byte\(s\) b'\\xff6",
             3,

@@ -542,27 +542,40 @@ def _show(value: str) -> str:
     return repr(value if len(value) <= _SHOW else value[:_SHOW] + "...")
 
 
-def _lines_of(path: PathLike, encoding: str) -> Iterator[str]:
-    """Decoded physical lines (ending in \\n or \\r\\n); a decoding error names its line."""
-    bom = encoding.lower().replace("_", "-") in ("utf-8", "utf8")
+def _open_text(path: PathLike, encoding: str) -> IO[str]:
+    """Open for csv: lines end only at \\n (a \\r\\n ending stays), a UTF-8 BOM is dropped."""
+    if codecs.lookup(encoding).name == "utf-8":
+        encoding = "utf-8-sig"
     try:
-        fh = open(path, "rb")  # closed by the with-block below
+        return open(path, encoding=encoding, newline="\n")
     except OSError as exc:
         raise InputError(f"cannot read: {exc.strerror or exc}", path) from exc
-    with fh:
+
+
+def _decode_error(path: PathLike, encoding: str, exc: UnicodeDecodeError) -> InputError:
+    """The decoding error with its line: the text layer decodes in blocks, so find the line.
+
+    No line break byte occurs inside a multibyte character of an ASCII-compatible encoding,
+    so decoding line by line fails on the same bytes as decoding the whole file.
+    """
+    with open(path, "rb") as fh:
         for number, raw in enumerate(fh, start=1):
             try:
-                text = raw.decode(encoding)
-            except UnicodeDecodeError as exc:
-                bad = raw[exc.start : exc.start + 4]
-                raise InputError(
-                    f"not valid {encoding} text (byte(s) {bad!r} at character {exc.start + 1})",
+                raw.decode(encoding)
+            except UnicodeDecodeError as line_exc:
+                bad = raw[line_exc.start : line_exc.start + 4]
+                return InputError(
+                    f"not valid {encoding} text (byte(s) {bad!r} at byte {line_exc.start + 1} "
+                    "of the line)",
                     path,
                     number,
-                ) from None
-            if number == 1 and bom and text.startswith("\ufeff"):
-                text = text[1:]
-            yield text
+                )
+    return InputError(f"not valid {encoding} text ({exc.reason})", path)
+
+
+def _first_line(row: list[str], last_line: int) -> int:
+    """Physical line a record starts on, from the line it ends on and its embedded newlines."""
+    return last_line - sum(field.count("\n") for field in row)
 
 
 class _Table:
@@ -605,23 +618,34 @@ class _Table:
 
     def open(self) -> None:
         """Read and check the header; sets ``names``, ``keep``, ``header_line``."""
-        self.reader = csv.reader(
-            _lines_of(self.path, self.encoding), delimiter=self.delimiter, strict=True
-        )
+        self.file = _open_text(self.path, self.encoding)
+        self.reader = csv.reader(self.file, delimiter=self.delimiter, strict=True)
         header = None
-        while header is None:
-            previous = self.reader.line_num
-            try:
-                row = next(self.reader)
-            except StopIteration:
-                raise InputError(
-                    f"no header line; expected the columns {self._expected()}", self.path
-                ) from None
-            except csv.Error as exc:
-                raise InputError(f"malformed CSV header ({exc})", self.path, previous + 1) from None
-            if row:
-                header = row
-                self.header_line = previous + 1
+        try:
+            while header is None:
+                previous = self.reader.line_num
+                try:
+                    row = next(self.reader)
+                except StopIteration:
+                    raise InputError(
+                        f"no header line; expected the columns {self._expected()}", self.path
+                    ) from None
+                except csv.Error as exc:
+                    raise InputError(
+                        f"malformed CSV header ({exc})", self.path, previous + 1
+                    ) from None
+                except UnicodeDecodeError as exc:
+                    raise _decode_error(self.path, self.encoding, exc) from None
+                if row:
+                    header = row
+                    self.header_line = previous + 1
+                    self.last_line = self.reader.line_num
+            self._check_header(header)
+        except BaseException:
+            self.file.close()
+            raise
+
+    def _check_header(self, header: list[str]) -> None:
         names = [name.strip() for name in header]
         where = {}
         for index, name in enumerate(names, start=1):
@@ -662,50 +686,61 @@ class _Table:
 
     def chunks(self, chunk_rows: int | None) -> Iterator[tuple[int, dict[str, np.ndarray]]]:
         """Yield (first line, columns) for every ``chunk_rows`` records (all if None)."""
-        reader = self.reader
-        rows: list[list[str]] = []
-        lines: list[int] = []
-        previous = reader.line_num
-        while True:
-            try:
-                row = next(reader)
-            except StopIteration:
-                break
-            except csv.Error as exc:
-                first = previous + 1
-                if "unexpected end of data" in str(exc):
-                    message = f"quoted field not closed before the end of the file ({exc})"
-                else:
-                    message = f"malformed CSV ({exc})"
-                raise InputError(message, self.path, first) from None
-            first, previous = previous + 1, reader.line_num
-            if not row:  # blank line
-                continue
-            if len(row) != self.width:
-                span = f" (the record spans lines {first}-{previous})" if previous > first else ""
-                raise InputError(
-                    f"{len(row)} field(s) where the header (line {self.header_line}) has "
-                    f"{self.width} ({', '.join(self.names)}){span}",
-                    self.path,
-                    first,
-                )
-            rows.append(row)
-            lines.append(first)
-            if chunk_rows is not None and len(rows) >= chunk_rows:
-                yield lines[0], self._columns(rows, lines)
-                rows, lines = [], []
-        if rows:
-            yield lines[0], self._columns(rows, lines)
+        with self.file:
+            yield from self._chunks(chunk_rows)
 
-    def _columns(self, rows: list[list[str]], lines: list[int]) -> dict[str, np.ndarray]:
-        cells = list(zip(*rows, strict=True))
+    def _chunks(self, chunk_rows: int | None) -> Iterator[tuple[int, dict[str, np.ndarray]]]:
+        # Cells go straight into per-column lists: keeping the csv row lists alive instead
+        # makes the cyclic garbage collector rescan them and halves the throughput.
+        reader, width = self.reader, self.width
+        columns: list[list[str]] = [[] for _ in range(width)]
+        ends: list[int] = []  # physical line each record ends on
+        try:
+            for row in reader:
+                if len(row) != width:
+                    if not row:  # blank line
+                        self.last_line = reader.line_num
+                        continue
+                    self._field_count_error(row, reader.line_num)
+                for column, cell in zip(columns, row):  # noqa: B905 - lengths checked above
+                    column.append(cell)
+                ends.append(reader.line_num)
+                if len(ends) == chunk_rows:
+                    self.last_line = ends[-1]
+                    yield self._chunk(columns, ends)
+                    columns, ends = [[] for _ in range(width)], []
+        except csv.Error as exc:
+            start = max(self.last_line, ends[-1] if ends else 0) + 1
+            if "unexpected end of data" in str(exc):
+                message = f"quoted field not closed before the end of the file ({exc})"
+            else:
+                message = f"malformed CSV ({exc})"
+            raise InputError(message, self.path, start) from None
+        except UnicodeDecodeError as exc:
+            raise _decode_error(self.path, self.encoding, exc) from None
+        if ends:
+            yield self._chunk(columns, ends)
+
+    def _field_count_error(self, row: list[str], last: int) -> None:
+        first = _first_line(row, last)
+        span = f" (the record spans lines {first}-{last})" if last > first else ""
+        raise InputError(
+            f"{len(row)} field(s) where the header (line {self.header_line}) has "
+            f"{self.width} ({', '.join(self.names)}){span}",
+            self.path,
+            first,
+        )
+
+    def _chunk(
+        self, columns: list[list[str]], ends: list[int]
+    ) -> tuple[int, dict[str, np.ndarray]]:
         out: dict[str, np.ndarray] = {}
         for index, name in self.keep:
             if name in self.numeric:
-                out[name] = self._numbers(cells[index], lines, name)
+                out[name] = self._numbers(columns, index, ends, name)
             else:
-                out[name] = np.array(cells[index], dtype=str)
-        return out
+                out[name] = np.array(columns[index], dtype=str)
+        return _first_line([c[0] for c in columns], ends[0]), out
 
     def empty(self) -> dict[str, np.ndarray]:
         return {
@@ -713,7 +748,10 @@ class _Table:
             for _, name in self.keep
         }
 
-    def _numbers(self, cells: Sequence[str], lines: list[int], name: str) -> np.ndarray:
+    def _numbers(
+        self, columns: list[list[str]], index: int, ends: list[int], name: str
+    ) -> np.ndarray:
+        cells = columns[index]
         try:
             values = np.fromiter(map(float, cells), dtype=np.float64, count=len(cells))
             good = "_" not in "".join(cells) and bool(np.isfinite(values).all())
@@ -721,9 +759,10 @@ class _Table:
             good = False
         if good:
             return values
-        for cell, line in zip(cells, lines, strict=True):
+        for i, cell in enumerate(cells):
             problem = _number_problem(cell)
             if problem:
+                line = _first_line([c[i] for c in columns], ends[i])
                 raise InputError(problem, self.path, line, name)
         raise AssertionError("unreachable: a bad cell was detected but not found")
 
@@ -848,5 +887,5 @@ def read_table(
     """
     table = _Table(path, required, optional, numeric, allow_extra, encoding, delimiter)
     table.open()
-    parts = [columns for _, columns in table.chunks(None)]
+    parts = [columns for _, columns in table.chunks(None)]  # one chunk at most
     return parts[0] if parts else table.empty()
