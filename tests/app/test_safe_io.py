@@ -64,6 +64,14 @@ def test_atomic_writer_binary_and_text_helpers(tmp_path):
     assert (tmp_path / "t.txt").read_bytes() == "grüße\n".encode("latin-1")
 
 
+def test_block_that_closes_the_file_itself_still_lands(tmp_path):
+    out = tmp_path / "out.txt"
+    with atomic_writer(out) as fh:
+        fh.write("closed early")
+        fh.close()
+    assert listing(tmp_path) == {"out.txt": b"closed early"}
+
+
 def test_exception_in_block_keeps_old_file_and_propagates(tmp_path):
     out = tmp_path / "out.txt"
     out.write_bytes(b"precious")

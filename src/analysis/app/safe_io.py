@@ -8,9 +8,9 @@ default for a new file) and renames it over the output with :func:`os.replace`. 
 crash, sees the old file or the new one, never a prefix of the new one. On any error the
 temporary file is removed and the old file is untouched. :func:`write_many_atomic` does the same
 for several files that belong together (see there for what POSIX allows it to guarantee).
-:func:`check_paths` refuses, before anything is written, an output that is an input (symlinks
-resolved, hard links detected), two outputs that are one file, an output that is a directory and
-an output whose directory is missing.
+:func:`check_paths`, called before anything is written, refuses an output that is an input
+(symlinks resolved, hard links detected), two outputs that are one file, an output that is a
+directory and an output whose directory is missing.
 
 An :class:`OSError` from writing (disk full, ``EFBIG`` over ``RLIMIT_FSIZE``, no permission,
 read-only file system) becomes a one-line :class:`OutputError` ``"cannot write X: <strerror>"``.
@@ -183,6 +183,14 @@ def _unlink(path: Path | None) -> None:
             os.unlink(path)
 
 
+def _fsync_path(path: Path) -> None:
+    fd = os.open(path, os.O_RDONLY)
+    try:
+        os.fsync(fd)
+    finally:
+        os.close(fd)
+
+
 def _fsync_dir(directory: Path) -> None:
     """Make a rename in ``directory`` durable; file systems that cannot are tolerated."""
     try:
@@ -231,9 +239,12 @@ def _staged(
                     raise _cannot_write(path, exc) from exc
                 raise
             try:
-                fh.flush()
-                os.fsync(fh.fileno())
-                fh.close()
+                if fh.closed:  # the block closed it (some writers do): fsync by name
+                    _fsync_path(tmp)
+                else:
+                    fh.flush()
+                    os.fsync(fh.fileno())
+                    fh.close()
                 os.chmod(tmp, _mode_for(target))
             except OSError as exc:
                 raise _cannot_write(path, exc) from exc
@@ -303,11 +314,15 @@ def atomic_writer(
     target = _target(path, make_parents)
     with _staged(path, target, mode, encoding, newline) as (fh, tmp):
         yield fh
+    replaced = False
     try:
         os.replace(tmp[0], target)
+        replaced = True
     except OSError as exc:
-        _unlink(tmp[0])
         raise _cannot_write(path, exc) from exc
+    finally:
+        if not replaced:
+            _unlink(tmp[0])
     _fsync_dir(target.parent)
 
 
@@ -397,8 +412,8 @@ def write_many_atomic(
        temporary files and leaves every output untouched.
     2. Each existing output is then hard-linked to a backup beside it (copied where the file
        system has no hard links), and the temporary files are renamed over the outputs one by
-       one. A rename cannot fail for lack of space; if one fails anyway (the directory became
-       read-only, an output was replaced by a directory) the outputs already renamed are
+       one. A rename rarely fails; if one does (the directory became read-only, an output was
+       replaced by a directory, a directory could not grow) the outputs already renamed are
        restored from their backups (or removed if they did not exist) and
        :class:`OutputError` is raised. If even a restore fails the error says so and names the
        backup that still holds the old content.
@@ -435,7 +450,10 @@ def write_many_atomic(
                 if failed:
                     kept = set(failed.values())
                     backups = [None if b in kept else b for b in backups]  # keep those on disk
-                    detail = "; ".join(f"{t} (old content kept in {b})" for t, b in failed.items())
+                    detail = "; ".join(
+                        f"{t} (old content kept in {b})" if b else f"{t} (new; was absent)"
+                        for t, b in failed.items()
+                    )
                     raise OutputError(
                         f"{error}; {i} of {len(staged)} outputs were already replaced and "
                         f"could not all be restored: {detail}",
