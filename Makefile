@@ -26,9 +26,12 @@ $(STAMP): requirements.lock pyproject.toml
 	@touch $(STAMP)
 
 # The whole suite: unit, property and cross-check tests, then every notebook under nbval.
+# tests/nbval_kernel.py starts the notebook kernels over IPC (no TCP port race between the
+# xdist workers), retries a kernel that dies at start-up and keeps each kernel's stderr in
+# build/nbval-kernel-logs/.
 test: $(STAMP)
 	MPLBACKEND=Agg $(PY) -m pytest -n 2 tests
-	MPLBACKEND=$(NB_BACKEND) $(PY) -m pytest -n 2 --dist loadfile --nbval --nbval-sanitize-with tests/nbval_sanitize.cfg notebooks
+	MPLBACKEND=$(NB_BACKEND) $(PY) -m pytest -p tests.nbval_kernel -n 2 --dist loadfile --nbval --nbval-sanitize-with tests/nbval_sanitize.cfg notebooks
 
 test-fast: $(STAMP)
 	$(PY) -m pytest -n 2 -x tests

@@ -1,0 +1,245 @@
+"""The nbval kernel plugin (tests/nbval_kernel.py) under forced TCP port clashes.
+
+Two pytest sessions run in subprocesses on small notebooks written here. Both load a helper
+plugin, ``port_clash``, that makes jupyter_client's port selection hand out ports a socket in the
+same process is already listening on: the deterministic version of another process taking a
+port between selection and the kernel's bind (jupyter/jupyter_client#154, #487).
+
+* Without ``nbval_kernel`` (nbval's own TCP path) the kernel dies and every cell errors with
+  "Kernel died before replying to kernel_info", the failure seen in ``make test``.
+* With ``nbval_kernel`` the same notebooks run and pass, port selection is never called, and the
+  kernel itself reports an IPC connection. The same session checks the bounded retry (a kernel
+  that crashes on its first start) and the stderr log (a kernel that always crashes).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+import textwrap
+import xml.etree.ElementTree as ET
+from dataclasses import dataclass
+from pathlib import Path
+
+import nbformat
+import pytest
+
+import nbval_kernel
+
+TESTS = Path(__file__).resolve().parent
+
+PORT_CLASH = '''
+"""pytest plugin for the test: every TCP port jupyter_client picks is already taken."""
+import os
+import socket
+
+from jupyter_client.connect import LocalPortCache
+
+_held = []
+
+
+def _occupied_port(self, ip):
+    sock = socket.socket()
+    sock.bind((ip, 0))
+    sock.listen()
+    _held.append(sock)
+    with open(os.environ["PORT_CLASH_LOG"], "a") as fh:
+        fh.write(f"{sock.getsockname()[1]}\\n")
+    return sock.getsockname()[1]
+
+
+LocalPortCache.find_available_port = _occupied_port
+'''
+
+# A kernel launcher that crashes (writing a line to stderr) while the marker file is missing,
+# creating it; with the marker present it runs ipykernel. "always" crashes every time.
+CRASHING_KERNEL = """
+import os
+import runpy
+import sys
+
+mode, marker = sys.argv[1], sys.argv[2]
+del sys.argv[1:3]
+if mode == "always" or not os.path.exists(marker):
+    open(marker, "a").close()
+    sys.stderr.write(f"crashing_kernel: simulated crash ({mode})\\n")
+    sys.exit(3)
+sys.argv[0] = "ipykernel_launcher"
+runpy.run_module("ipykernel_launcher", run_name="__main__")
+"""
+
+TRANSPORT_CELL = textwrap.dedent(
+    """\
+    import json
+    from ipykernel.connect import get_connection_info
+    info = json.loads(get_connection_info())
+    print(info["transport"], os.path.isabs(info["ip"]), info["shell_port"])
+    """
+)
+
+
+@dataclass
+class Session:
+    """What a pytest subprocess left behind."""
+
+    returncode: int
+    output: str
+    outcomes: dict[str, str]  # "<notebook>::Cell <n>" -> passed / failed / error
+    ports_chosen: int
+    log_dir: Path
+
+
+def _notebook(path: Path, kernel: str, cells: list[tuple[str, str]]) -> None:
+    """Write a notebook whose code cells print ``stdout`` (the nbval reference)."""
+    nb = nbformat.v4.new_notebook()
+    nb.metadata["kernelspec"] = {"name": kernel, "display_name": kernel, "language": "python"}
+    for count, (source, stdout) in enumerate(cells, start=1):
+        cell = nbformat.v4.new_code_cell(source, execution_count=count)
+        if stdout:
+            cell.outputs = [nbformat.v4.new_output("stream", name="stdout", text=stdout)]
+        nb.cells.append(cell)
+    nbformat.write(nb, path)
+
+
+def _kernelspec(share: Path, name: str, mode: str, marker: Path, script: Path) -> None:
+    spec = share / "kernels" / name
+    spec.mkdir(parents=True)
+    argv = [sys.executable, str(script), mode, str(marker), "-f", "{connection_file}"]
+    spec.joinpath("kernel.json").write_text(
+        json.dumps({"argv": argv, "display_name": name, "language": "python"})
+    )
+
+
+def _start(tmp: Path, name: str, notebooks: list[str], plugins: list[str]) -> subprocess.Popen:
+    """Start ``pytest --nbval`` on ``notebooks`` (names in ``tmp``) in a subprocess."""
+    env = {k: v for k, v in os.environ.items() if not k.startswith(("PYTEST_", "COV_"))}
+    env.update(
+        PYTHONPATH=os.pathsep.join([str(tmp), str(TESTS)]),
+        JUPYTER_PATH=str(tmp / "share"),
+        PORT_CLASH_LOG=str(tmp / f"{name}.ports"),
+        MPLBACKEND="Agg",
+    )
+    (tmp / f"{name}.ports").write_text("")
+    args = [sys.executable, "-m", "pytest", "-c", str(tmp / "pytest.ini"), "--rootdir", str(tmp)]
+    for plugin in plugins:
+        args += ["-p", plugin]
+    args += ["-p", "no:cacheprovider", "--nbval", "--junitxml", str(tmp / f"{name}.xml"), "-rA"]
+    args += ["--nbval-kernel-startup-timeout", "30", "-W", "always::UserWarning"]
+    if "nbval_kernel" in plugins:
+        args += ["--nbval-kernel-log-dir", str(tmp / f"{name}-logs")]
+    return subprocess.Popen(
+        [*args, *notebooks],
+        cwd=tmp,
+        env=env,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.STDOUT,
+        text=True,
+    )
+
+
+def _finish(tmp: Path, name: str, proc: subprocess.Popen) -> Session:
+    """Wait for a session started by :func:`_start` and collect what it left."""
+    output, _ = proc.communicate(timeout=120)
+    outcomes = {}
+    for case in ET.parse(tmp / f"{name}.xml").getroot().iter("testcase"):
+        kinds = [child.tag for child in case if child.tag in ("failure", "error", "skipped")]
+        outcomes[f"{case.get('classname')}::{case.get('name')}"] = kinds[0] if kinds else "passed"
+    ports = len((tmp / f"{name}.ports").read_text().split())
+    return Session(proc.returncode, output, outcomes, ports, tmp / f"{name}-logs")
+
+
+@pytest.fixture(scope="module")
+def workdir(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """Notebooks, kernel specs and the clash plugin in a fresh directory."""
+    tmp = tmp_path_factory.mktemp("nbval_kernel")
+    (tmp / "pytest.ini").write_text("[pytest]\n")
+    (tmp / "port_clash.py").write_text(PORT_CLASH)
+    script = tmp / "crashing_kernel.py"
+    script.write_text(CRASHING_KERNEL)
+    _kernelspec(tmp / "share", "crash_once", "once", tmp / "crash_once.marker", script)
+    _kernelspec(tmp / "share", "crash_always", "always", tmp / "crash_always.marker", script)
+    two = ("x = 1 + 1\nprint(x)", "2\n")
+    _notebook(tmp / "tcp.ipynb", "python3", [two])
+    _notebook(tmp / "ipc.ipynb", "python3", [("import os", ""), (TRANSPORT_CELL, "ipc True 1\n")])
+    _notebook(tmp / "once.ipynb", "crash_once", [two])
+    _notebook(tmp / "always.ipynb", "crash_always", [two])
+    return tmp
+
+
+@pytest.fixture(scope="module")
+def sessions(workdir: Path) -> dict[str, Session]:
+    """Two concurrent sessions under the same clash: nbval's own TCP start, and the plugin's
+    (which also runs a crash-once and a crash-always kernel)."""
+    runs = {
+        "tcp": (["tcp.ipynb"], ["port_clash"]),
+        "ipc": (["ipc.ipynb", "once.ipynb", "always.ipynb"], ["port_clash", "nbval_kernel"]),
+    }
+    procs = {name: _start(workdir, name, *run) for name, run in runs.items()}
+    return {name: _finish(workdir, name, proc) for name, proc in procs.items()}
+
+
+@pytest.fixture(scope="module")
+def tcp_session(sessions: dict[str, Session]) -> Session:
+    return sessions["tcp"]
+
+
+@pytest.fixture(scope="module")
+def ipc_session(sessions: dict[str, Session]) -> Session:
+    return sessions["ipc"]
+
+
+def test_tcp_path_dies_when_a_chosen_port_is_taken(tcp_session: Session) -> None:
+    assert tcp_session.ports_chosen == 5, tcp_session.output
+    assert tcp_session.outcomes == {"tcp.ipynb::Cell 0": "error"}, tcp_session.output
+    assert "Kernel died before replying to kernel_info" in tcp_session.output
+    assert tcp_session.returncode == 1
+
+
+def test_plugin_runs_notebook_over_ipc_despite_taken_ports(ipc_session: Session) -> None:
+    # The second cell prints the transport as the kernel sees it; nbval compares it to "ipc ...".
+    assert ipc_session.outcomes["ipc.ipynb::Cell 0"] == "passed", ipc_session.output
+    assert ipc_session.outcomes["ipc.ipynb::Cell 1"] == "passed", ipc_session.output
+    assert ipc_session.ports_chosen == 0, "the plugin's path asked jupyter_client for TCP ports"
+
+
+def test_plugin_retries_kernel_that_dies_at_start(ipc_session: Session) -> None:
+    assert ipc_session.outcomes["once.ipynb::Cell 0"] == "passed", ipc_session.output
+    out = ipc_session.output
+    assert "KernelStartRetry" in out and "died at start 1/3" in out, out
+    assert "simulated crash (once)" in out, "the retry warning should quote the kernel's stderr"
+    log = (ipc_session.log_dir / "once.ipynb.stderr.log").read_text()
+    assert log.count("--- nbval_kernel: start") == 2 and "simulated crash (once)" in log, log
+
+
+def test_plugin_gives_up_after_max_starts_and_names_the_log(ipc_session: Session) -> None:
+    assert ipc_session.outcomes["always.ipynb::Cell 0"] == "error", ipc_session.output
+    log_path = ipc_session.log_dir / "always.ipynb.stderr.log"
+    assert f"on all {nbval_kernel.MAX_STARTS} starts" in ipc_session.output
+    assert f"kernel stderr: {log_path}" in ipc_session.output
+    log = log_path.read_text()
+    assert log.count("simulated crash (always)") == nbval_kernel.MAX_STARTS, log
+    assert ipc_session.returncode == 1
+
+
+def test_ipc_prefixes_are_fresh_private_and_fit_a_socket_address(tmp_path: Path) -> None:
+    state = nbval_kernel._State(tmp_path / "logs", tmp_path)
+    try:
+        prefixes = [state.next_ipc_prefix() for _ in range(50)]
+        assert len(set(prefixes)) == 50
+        assert all(os.path.isabs(p) and len(p) + 2 <= 107 for p in prefixes)
+        assert os.stat(state.ipc_dir).st_mode & 0o077 == 0, "IPC directory readable by others"
+    finally:
+        os.rmdir(state.ipc_dir)
+
+
+def test_log_names_follow_the_notebook_path(tmp_path: Path) -> None:
+    state = nbval_kernel._State(tmp_path / "logs", tmp_path)
+    try:
+        inside = state.log_path(tmp_path / "notebooks" / "01_a.ipynb", None)
+        outside = state.log_path(Path("/elsewhere/01_a.ipynb"), None)
+    finally:
+        os.rmdir(state.ipc_dir)
+    assert inside == tmp_path / "logs" / "notebooks__01_a.ipynb.stderr.log"
+    assert outside.name.startswith("01_a.ipynb-") and outside != inside
