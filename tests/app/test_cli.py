@@ -96,7 +96,7 @@ def test_fk_text_and_json(capsys):
         (("ik", "abc", "1", "2"), "'abc' is not a number"),
         (("ik", "1", "2"), "give a target X Y Z"),
         (("fk", "1", "2", "x"), "'x' is not a number"),
-        (("ik", "1", "2", "3", "--branch", "sideways"), "invalid choice"),
+        (("ik", "1", "2", "3", "--branch", "sideways"), "unknown branch"),
         (("ik", "--input", "only.csv"), "needs both --input"),
     ],
 )
@@ -153,12 +153,14 @@ def test_batch_table4_all_branches(tmp_path, capsys, arm):
 @pytest.mark.parametrize(
     "content, needle",
     [
-        ("x_mm,y_mm\n1,2\n", "missing column(s) z_mm"),
-        ("x_mm,y_mm,z_mm\n1,2,abc\n", "line 2 column z_mm: 'abc' is not a finite number"),
-        ("x_mm,y_mm,z_mm\n1,2,3\n4,,6\n", "line 3 column y_mm: '' is not a finite number"),
+        ("x_mm,y_mm\n1,2\n", "missing required column(s) z_mm"),
+        ("x_mm,y_mm,z_mm\n1,2,abc\n", "line 2 column z_mm: 'abc' is not a number"),
+        ("x_mm,y_mm,z_mm\n1,2,3\n4,,6\n", "line 3 column y_mm: empty cell"),
         ("x_mm,y_mm,z_mm\n1,2,nan\n", "column z_mm: 'nan' is not a finite number"),
         ("x_mm,y_mm,z_mm\n1,2,inf\n", "column z_mm: 'inf' is not a finite number"),
-        ("", "not a readable CSV"),
+        ("", "no header line"),
+        ("x_mm,y_mm,z_mm\n\n1,2,3\n7,200,0,700\n", "line 4: 4 field(s) where the header"),
+        ("x_mm,x_mm,z_mm\n1,2,3\n", "column 'x_mm' appears twice"),
     ],
 )
 def test_batch_bad_csv_exit_2(tmp_path, capsys, content, needle):
@@ -174,7 +176,7 @@ def test_batch_missing_file(tmp_path, capsys):
     code, _, err = run(
         capsys, "ik", "--input", str(tmp_path / "nope.csv"), "--output", str(tmp_path / "o.csv")
     )
-    assert code == 2 and "no such file" in err
+    assert code == 2 and "No such file" in err
 
 
 def test_bad_params_file_exit_2(tmp_path, capsys):

@@ -14,8 +14,8 @@ import pytest
 from analysis.kinematics.arm import BRANCHES
 from analysis.kinematics.params import paper_params
 from analysis.plc.approx import acos_f32, atan2_f32, atan_coefficients, measure_errors
-from analysis.plc.cli import generate
 from analysis.plc.emit import emit_s7200, fmt_real
+from analysis.plc.generate import generate
 from analysis.plc.ir import build_program
 from analysis.plc.memmap import MemoryMap, default_map, parse_address
 from analysis.plc.translate import translate_s7200
@@ -174,22 +174,6 @@ def test_cli_stl(tmp_path):
         cwd=ROOT,
     )
     assert r.returncode == 2 and len(r.stderr.strip().splitlines()) == 1 and "S7-200" in r.stderr
-
-
-def test_plc_errata_rows_point_at_existing_tests():
-    import csv
-    import re
-
-    path = ROOT / "data" / "errata.csv"
-    if not path.exists():
-        path = ROOT / "data" / "errata_plc_pending.csv"
-    rows = [r for r in csv.DictReader(path.open(encoding="utf-8")) if r["id"].startswith("plc-")]
-    assert rows, "the plc-* rows of the errata register are missing"
-    for r in rows:
-        assert all(r[c].strip() for c in ("location", "printed", "corrected", "kind", "check"))
-        file, test = r["check"].split("::")
-        name = test.split("[")[0]
-        assert re.search(rf"^def {name}\(", (ROOT / file).read_text(), re.M), r["check"]
 
 
 def test_plot_rounding_margin_marks_changed_counts():

@@ -13,8 +13,8 @@ import pytest
 
 from analysis.kinematics.arm import BRANCHES, Arm
 from analysis.kinematics.params import paper_params
-from analysis.plc.cli import generate
 from analysis.plc.emit import emit_s7200, emit_s7300
+from analysis.plc.generate import generate
 from analysis.plc.ir import build_program
 from analysis.plc.memmap import default_map
 from analysis.plc.paper_listings import figure_text, run_paper_listings

@@ -1,7 +1,13 @@
-"""Command line: ``python -m analysis <command>`` (contract in design.md).
+"""The command line: ``python -m analysis <command>``, one parser for everything a user can do.
 
-Every command has ``--help``, exits 0 on success and 2 on bad input with a one-line
-reason on stderr. Angles are degrees and lengths mm at this edge.
+Every command has ``--help`` with examples, exits 0 on success and 2 on bad input with one
+line ``python -m analysis <command>: error: <reason>`` on stderr (with ``--json``: a JSON
+object with ``"error"`` on stdout instead). Angles are degrees and lengths mm at this edge.
+Outputs are written atomically (a temporary file, then a rename): an error never leaves a
+half-written file, and an output may not be an input.
+
+Imports are deferred to the command that needs them: answering one ``ik`` target loads
+NumPy and the kinematics, not SymPy, pandas or Matplotlib.
 """
 
 from __future__ import annotations
@@ -13,50 +19,33 @@ import sys
 from collections.abc import Sequence
 from pathlib import Path
 
-import numpy as np
-import pandas as pd
+__all__ = ["build_parser", "main"]
 
-from analysis.kinematics.arm import (
-    BRANCHES,
-    DEFAULT_TOL_MM,
-    Arm,
-    BaseAxisError,
-    Status,
-    UnreachableError,
-    as_points,
-)
-from analysis.kinematics.params import load_table3
-from analysis.kinematics.pulses import angles_to_pulses
-
-__all__ = ["main"]
-
+PROG = "python -m analysis"
 INPUT_COLUMNS = ("x_mm", "y_mm", "z_mm")
-OUTPUT_COLUMNS = (
-    "branch",
-    "reachable",
-    "theta1_deg",
-    "theta2_deg",
-    "theta3_deg",
-    "c1",
-    "c2",
-    "c3",
-    "status",
-)
-_STATUS_TEXT = {
-    Status.OK: "ok",
-    Status.OUT_OF_REACH: "out-of-reach",
-    Status.INSIDE_REACH: "inside-inner-reach",
-    Status.BASE_AXIS: "base-axis",
-}
+EPILOG = """examples:
+  python -m analysis ik 100 100 600 --json            Table 4 row 1, the paper's branch
+  python -m analysis ik 100 100 600 --branch all      all four solutions
+  python -m analysis fk 45 10.21 -155.13              joint angles (deg) -> point (mm)
+  python -m analysis ik --input targets.csv --output solved.csv --branch all
+  python -m analysis stl --dialect s7-200 -o ik.awl --map ik_map.json
+  python -m analysis ik 250 0 100 --arm palletizer     another arm (see: arms)
+  python -m analysis errata --check                    are the registers current?
+  python -m analysis report --out build/report
+"""
 
 
 class UsageError(ValueError):
-    """Bad input from the command line: reported on stderr, exit status 2."""
+    """Bad input from the command line: reported on one line, exit status 2."""
 
 
 class _Parser(argparse.ArgumentParser):
-    def error(self, message: str) -> None:  # one line on stderr, exit 2 (argparse's own code)
+    def error(self, message: str) -> None:  # one line on stderr, exit 2 (argparse's code)
         self.exit(2, f"{self.prog}: error: {message}\n")
+
+
+class _Help(argparse.RawDescriptionHelpFormatter):
+    pass
 
 
 def _finite(text: str) -> float:
@@ -69,41 +58,88 @@ def _finite(text: str) -> float:
     return value
 
 
-def _arm(args: argparse.Namespace) -> Arm:
-    return Arm(load_table3(args.params) if args.params else load_table3())
+def _arm(args: argparse.Namespace):
+    """The arm of ``--arm`` (and ``--params``: a Table 3 file for the paper's arm)."""
+    from analysis.kinematics.arm import Arm, load_arm
+
+    if args.params:
+        if args.arm != "grabber":
+            raise UsageError("--params takes a Table 3 file: it applies to the paper's arm only")
+        from analysis.kinematics.params import load_table3
+
+        return Arm(load_table3(args.params))
+    return load_arm(args.arm)
 
 
 def _common(p: argparse.ArgumentParser) -> None:
-    p.add_argument("--params", type=Path, help="Table 3 CSV to use instead of data/table3.csv")
+    p.add_argument(
+        "--arm", default="grabber", help="arm (default: grabber, the paper's; list: arms)"
+    )
+    p.add_argument("--params", type=Path, help="a Table 3 CSV instead of data/table3.csv")
 
 
-# --- fk ------------------------------------------------------------------------------
+def _emit(args, doc: dict, text: str) -> None:
+    print(json.dumps(doc) if getattr(args, "json", False) else text)
+
+
+# --- fk --------------------------------------------------------------------------------------
 def _cmd_fk(args: argparse.Namespace) -> int:
+    import numpy as np
+
+    from analysis.kinematics.arm import MAX_JOINT_DEG
+
     arm = _arm(args)
-    theta_deg = [args.t1, args.t2, args.t3]
-    p = arm.fk(np.radians(theta_deg))
-    if args.json:
-        print(json.dumps({"theta_deg": theta_deg, "position_mm": p.tolist()}))
-    else:
-        print(
-            f"theta = ({', '.join(f'{t:.2f}' for t in theta_deg)}) deg -> "
-            f"P = ({', '.join(f'{v:.3f}' for v in p)}) mm"
+    if len(args.angles) != arm.n_joints:
+        raise UsageError(
+            f"{arm.name} has {arm.n_joints} joints: give {arm.n_joints} angles in degrees, "
+            f"got {len(args.angles)}"
         )
+    for j, a in enumerate(args.angles, 1):
+        if abs(a) > MAX_JOINT_DEG:
+            raise UsageError(
+                f"theta{j} = {a:g} deg is beyond +-{MAX_JOINT_DEG:g} deg (ten turns): "
+                "angles are in degrees"
+            )
+    p = arm.fk(np.radians(args.angles))
+    p = np.where(p == 0, 0.0, p)  # no "-0.000"
+    doc = {"arm": arm.name, "theta_deg": list(args.angles), "position_mm": p.tolist()}
+    text = (
+        f"theta = ({', '.join(f'{t:.2f}' for t in args.angles)}) deg -> "
+        f"P = ({', '.join(f'{v:.3f}' for v in p)}) mm"
+    )
+    _emit(args, doc, text)
     return 0
 
 
-# --- ik ------------------------------------------------------------------------------
-def _branches(name: str) -> tuple[str, ...]:
-    return BRANCHES if name == "all" else (name,)
-
-
+# --- ik ------------------------------------------------------------------------------------------
 def _cmd_ik(args: argparse.Namespace) -> int:
     if args.input is not None or args.output is not None:
         if args.x is not None:
             raise UsageError("give either a target X Y Z or --input/--output, not both")
         if args.input is None or args.output is None:
             raise UsageError("batch mode needs both --input IN.csv and --output OUT.csv")
-        return _ik_batch(args)
+        from analysis.app.batch import solve_csv
+
+        summary = solve_csv(
+            _arm(args),
+            args.input,
+            args.output,
+            branch=args.branch,
+            tol=args.tol,
+            theta1_on_axis=_axis(args),
+            chunk_rows=args.chunk_rows,
+            params=args.params,
+        )
+        text = (
+            f"{summary['targets']} targets, {summary['solved']} solved, "
+            + ", ".join(f"{n} {s}" for s, n in summary["status"].items() if s != "ok")
+            + f" -> {summary['output']}"
+        )
+        if args.json:
+            print(json.dumps(summary))
+        else:
+            print(text, file=sys.stderr)
+        return 0
     given = [v for v in (args.x, args.y, args.z) if v is not None]
     if len(given) != 3:
         raise UsageError(
@@ -113,93 +149,132 @@ def _cmd_ik(args: argparse.Namespace) -> int:
     return _ik_single(args)
 
 
+def _axis(args) -> float | None:
+    return None if args.theta1_on_axis is None else math.radians(args.theta1_on_axis)
+
+
 def _ik_single(args: argparse.Namespace) -> int:
+    import numpy as np
+
+    from analysis.kinematics.pulses import angles_to_pulses
+
     arm = _arm(args)
     target = [args.x, args.y, args.z]
-    t1_axis = None if args.theta1_on_axis is None else math.radians(args.theta1_on_axis)
-    sols = arm.ik_all(target, theta1_on_axis=t1_axis, tol=args.tol, branches=_branches(args.branch))
-    ppr = arm.params.pulses_per_rev
-    out = []
-    for name, theta in sols.items():
-        out.append(
-            {
-                "branch": name,
-                "theta_deg": np.degrees(theta).tolist(),
-                "pulses": angles_to_pulses(theta, ppr).tolist(),
-            }
-        )
-    if args.json:
-        print(json.dumps({"target": target, "reachable": True, "solutions": out}))
-    else:
-        print(f"target ({', '.join(f'{v:g}' for v in target)}) mm")
-        for s in out:
-            ang = ", ".join(f"{t:.2f}" for t in s["theta_deg"])
-            pul = ", ".join(str(c) for c in s["pulses"])
-            print(f"  {s['branch']:<10} theta = ({ang}) deg   pulses = ({pul})")
+    names = arm.branch_names(args.branch or arm.branches[0])
+    sols = arm.ik_all(target, theta1_on_axis=_axis(args), tol=args.tol, branches=names)
+    out = [
+        {
+            "branch": name,
+            "theta_deg": np.degrees(theta).tolist(),
+            "pulses": angles_to_pulses(theta, arm.params.pulses_per_rev).tolist(),
+        }
+        for name, theta in sols.items()
+    ]
+    lines = [f"target ({', '.join(f'{v:g}' for v in target)}) mm"]
+    for s in out:
+        ang = ", ".join(f"{t:.2f}" for t in s["theta_deg"])
+        pul = ", ".join(str(c) for c in s["pulses"])
+        lines.append(f"  {s['branch']:<10} theta = ({ang}) deg   pulses = ({pul})")
+    doc = {"target": target, "reachable": True, "solutions": out}
+    if arm.name != "grabber":
+        doc["arm"] = arm.name
+    _emit(args, doc, "\n".join(lines))
     return 0
 
 
-def _read_targets(path: Path) -> pd.DataFrame:
-    try:
-        df = pd.read_csv(path, dtype=str, keep_default_na=False)
-    except FileNotFoundError:
-        raise UsageError(f"{path}: no such file") from None
-    except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError) as exc:
-        raise UsageError(f"{path}: not a readable CSV ({str(exc).splitlines()[0]})") from None
-    missing = [c for c in INPUT_COLUMNS if c not in df.columns]
-    if missing:
-        raise UsageError(
-            f"{path}: missing column(s) {', '.join(missing)} (have: {', '.join(df.columns)})"
-        )
-    for col in INPUT_COLUMNS:
-        values = pd.to_numeric(df[col].str.strip(), errors="coerce")
-        bad = values.isna() | ~np.isfinite(values.to_numpy(dtype=float, na_value=np.nan))
-        if bad.any():
-            i = int(np.flatnonzero(bad.to_numpy())[0])
-            raise UsageError(
-                f"{path} line {i + 2} column {col}: {df[col].iloc[i]!r} is not a finite number"
-            )
-        df[col] = values.astype(float)
-    return df
+# --- stl ------------------------------------------------------------------------------------------
+def _cmd_stl(args: argparse.Namespace) -> int:
+    from analysis.app.safe_io import check_paths, write_many_atomic
+    from analysis.plc.generate import generate
+    from analysis.plc.memmap import MemoryMap
 
-
-def _ik_batch(args: argparse.Namespace) -> int:
+    check_paths(
+        inputs=[p for p in (args.layout, args.params) if p],
+        outputs=[args.output, args.map],
+        make_parents=True,
+    )
     arm = _arm(args)
-    df = _read_targets(args.input)
-    p = as_points(df[list(INPUT_COLUMNS)].to_numpy())
-    t1_axis = None if args.theta1_on_axis is None else math.radians(args.theta1_on_axis)
-    sol = arm.solve(p, _branches(args.branch), theta1_on_axis=t1_axis, tol=args.tol)
-    n, nb = sol.ok.shape
-    # one output row per target and branch, targets in input order
-    theta = sol.theta.reshape(n * nb, 3)
-    ok = sol.ok.reshape(n * nb)
-    pulses = np.zeros((n * nb, 3), dtype=np.int64)
-    if ok.any():
-        pulses[ok] = angles_to_pulses(theta[ok], arm.params.pulses_per_rev)
-    base = df.rename(columns={c: f"input_{c}" for c in df.columns if c in OUTPUT_COLUMNS})
-    out = base.loc[base.index.repeat(nb)].reset_index(drop=True)
-    out["branch"] = list(sol.branches) * n
-    out["reachable"] = np.repeat(sol.reachable, nb)
-    deg = np.degrees(theta)
-    # unsolved rows stay empty (masked), never NaN text
-    for j in range(3):
-        out[f"theta{j + 1}_deg"] = pd.arrays.FloatingArray(np.where(ok, deg[:, j], 0.0), ~ok)
-    for j in range(3):
-        out[f"c{j + 1}"] = pd.arrays.IntegerArray(pulses[:, j], ~ok)
-    out["status"] = [_STATUS_TEXT[Status(s)] for s in np.repeat(sol.status, nb)]
-    out["reachable"] = out["reachable"].map({True: "true", False: "false"})
-    args.output.parent.mkdir(parents=True, exist_ok=True)
-    out.to_csv(args.output, index=False, float_format="%.10g")
-    n_ok = int(sol.ok.any(axis=-1).sum())
+    mmap = MemoryMap.from_json(args.layout) if args.layout else None
+    text, mjson = generate(
+        args.dialect,
+        args.branch,
+        args.trig,
+        mmap,
+        params=arm.params,
+        motion=not args.no_motion,
+        theta1_on_axis=_axis(args),
+    )
+    write_many_atomic({args.output: text, args.map: mjson}, newline="", make_parents=True)
+    doc = {
+        "program": str(args.output),
+        "map": str(args.map),
+        "dialect": args.dialect,
+        "arm": arm.name,
+        "branch": args.branch or arm.branches[0],
+        "lines": text.count("\n"),
+    }
     print(
-        f"{n} targets, {n_ok} solved, {int((~sol.reachable).sum())} unreachable, "
-        f"{int((sol.status == Status.BASE_AXIS).sum())} on the base axis -> {args.output}",
-        file=sys.stderr,
+        json.dumps(doc)
+        if args.json
+        else f"wrote {args.output} ({args.dialect}, {arm.name} {doc['branch']}, "
+        f"{doc['lines']} lines) and {args.map}"
     )
     return 0
 
 
-# --- report ----------------------------------------------------------------------------
+# --- errata ------------------------------------------------------------------------------------
+def _cmd_errata(args: argparse.Namespace) -> int:
+    from analysis.audit import register as reg
+
+    papers = [args.paper] if args.paper else None
+    if args.write:
+        changed = reg.write_all(papers)
+        print("\n".join(changed) or "up to date")
+        return 0
+    if args.check:
+        stale = reg.check(papers)
+        if stale:
+            print(f"out of date: {', '.join(stale)} (run: {PROG} errata --write)", file=sys.stderr)
+            return 1
+        print("up to date")
+        return 0
+    print(reg.render_markdown(papers), end="")
+    return 0
+
+
+# --- arms ----------------------------------------------------------------------------------------
+def _cmd_arms(args: argparse.Namespace) -> int:
+    from analysis.kinematics.description import load_description
+    from analysis.paths import data_dir
+
+    docs = []
+    for path in sorted((data_dir() / "arms").glob("*.toml")):
+        d = load_description(path.stem)
+        docs.append(
+            {
+                "name": d.name,
+                "title": d.title,
+                "paper": d.paper,
+                "joints": [j.name for j in d.joints],
+                "parameters": {
+                    k: {"value": p.value, "unit": p.unit, "status": p.status}
+                    for k, p in d.parameters.items()
+                },
+            }
+        )
+    if args.json:
+        print(json.dumps(docs))
+        return 0
+    for d in docs:
+        params = ", ".join(
+            f"{k} = {v['value']:g} {v['unit']}" + (" (assumed)" if v["status"] == "assumed" else "")
+            for k, v in d["parameters"].items()
+        )
+        print(f"{d['name']:<11} {d['title']} ({len(d['joints'])} joints): {params}")
+    return 0
+
+
+# --- report ---------------------------------------------------------------------------------------
 def _cmd_report(args: argparse.Namespace) -> int:
     from analysis.app.report import build_report
 
@@ -209,97 +284,172 @@ def _cmd_report(args: argparse.Namespace) -> int:
 
 
 def build_parser() -> argparse.ArgumentParser:
-    parser = _Parser(prog="python -m analysis", description=__doc__.splitlines()[0])
+    """The one parser of the command line."""
+    parser = _Parser(
+        prog=PROG,
+        description="Audit of published robot-kinematics papers: kinematics, errata, PLC code.",
+        epilog=EPILOG,
+        formatter_class=_Help,
+    )
     sub = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
 
-    p = sub.add_parser("fk", help="joint angles (deg) -> end point (mm), eq. 2")
-    for name in ("t1", "t2", "t3"):
-        p.add_argument(name, type=_finite, metavar=name.upper(), help=f"theta{name[1]} in degrees")
+    p = sub.add_parser(
+        "fk",
+        help="joint angles (deg) -> end point (mm)",
+        description="Forward kinematics: the end point of the chain (the paper's eq. 2).",
+        epilog="example:\n  python -m analysis fk 45 10.21 -155.13 --json",
+        formatter_class=_Help,
+    )
+    p.add_argument("angles", nargs="+", type=_finite, metavar="DEG", help="joint angles [deg]")
     p.add_argument("--json", action="store_true", help="machine-readable output")
     _common(p)
     p.set_defaults(func=_cmd_fk)
 
     p = sub.add_parser(
         "ik",
-        help="target (mm) -> joint angles (deg) and pulses, eqs. 6-22",
-        description="Closed-form IK (corrected eqs. 6-19) and pulses (eqs. 20-22).",
+        help="target (mm) -> joint angles (deg) and pulses",
+        description="Closed-form IK (the paper's corrected eqs. 6-19) and stepper pulses "
+        "(eqs. 20-22), for one target or a CSV of them (columns x_mm, y_mm, z_mm; the output "
+        "has one row per target and branch, with reachable = the row is solved and status = "
+        "ok, out-of-reach, inside-reach, base-axis, joint-limits).",
+        epilog="examples:\n  python -m analysis ik 100 100 600 --json\n"
+        "  python -m analysis ik 0 0 900 --theta1-on-axis 30\n"
+        "  python -m analysis ik --input targets.csv --output solved.csv --branch all",
+        formatter_class=_Help,
     )
-    p.add_argument("x", nargs="?", type=_finite, metavar="X", help="target x in mm")
-    p.add_argument("y", nargs="?", type=_finite, metavar="Y", help="target y in mm")
-    p.add_argument("z", nargs="?", type=_finite, metavar="Z", help="target z in mm")
+    p.add_argument("x", nargs="?", type=_finite, metavar="X", help="target x [mm]")
+    p.add_argument("y", nargs="?", type=_finite, metavar="Y", help="target y [mm]")
+    p.add_argument("z", nargs="?", type=_finite, metavar="Z", help="target z [mm]")
+    p.add_argument("--branch", help="IK branch, or 'all' (default: the arm's first, the paper's)")
+    p.add_argument("--json", action="store_true", help="machine-readable output and errors")
+    p.add_argument("--input", type=Path, help="batch: CSV with columns x_mm, y_mm, z_mm")
+    p.add_argument("--output", type=Path, help="batch: output CSV (one row per target, branch)")
     p.add_argument(
-        "--branch",
-        default="front-up",
-        choices=[*BRANCHES, "all"],
-        help="IK branch (default front-up, the paper's)",
+        "--chunk-rows", type=int, default=100_000, help="batch: rows per chunk (memory bound)"
     )
-    p.add_argument("--json", action="store_true", help="machine-readable output (single target)")
-    p.add_argument("--input", type=Path, help="batch: CSV with columns x_mm,y_mm,z_mm")
-    p.add_argument("--output", type=Path, help="batch: output CSV (one row per target and branch)")
     p.add_argument(
         "--theta1-on-axis",
         type=_finite,
         metavar="DEG",
-        help="waist angle to use for targets on the base axis (else they have no solution)",
+        help="waist angle for targets on the base axis (else they are refused)",
     )
     p.add_argument(
         "--tol",
         type=_finite,
-        default=DEFAULT_TOL_MM,
-        help="distance tolerance in mm at the reach boundary and base axis "
-        f"(default {DEFAULT_TOL_MM:g})",
+        default=1e-6,
+        help="distance tolerance [mm] at the reach boundary and the base axis, 0 .. 1 "
+        "(default 1e-06)",
     )
     _common(p)
     p.set_defaults(func=_cmd_ik)
 
-    try:  # the PLC generator registers `stl` when it is installed (analysis.plc)
-        from analysis.plc.cli import add_parser as _add_stl
-    except ImportError:
-        _add_stl = None
-    if _add_stl is not None:
-        _add_stl(sub)
+    p = sub.add_parser(
+        "stl",
+        help="generate the PLC program (S7-200 STL or S7-300 AWL) and its memory map",
+        description="Generate the corrected IK program for a Siemens PLC, from the arm's "
+        "closed form (the paper's Figures 3-6 as they should be), and MAP.json naming every "
+        "input and output address.",
+        epilog="examples:\n  python -m analysis stl --dialect s7-200 -o ik.awl --map ik_map.json\n"
+        "  python -m analysis stl --dialect s7-300 --arm palletizer -o pal.awl --map pal.json",
+        formatter_class=_Help,
+    )
+    p.add_argument("--dialect", required=True, choices=("s7-200", "s7-300"))
+    p.add_argument("--branch", help="IK branch (default: the arm's first, the paper's)")
+    p.add_argument(
+        "--trig",
+        choices=("native", "subroutine"),
+        help="S7-300: native ATAN/ACOS (default) or the generated subroutines; "
+        "S7-200: subroutine only",
+    )
+    p.add_argument("--layout", type=Path, help="memory map (MAP.json format) to use")
+    p.add_argument("--no-motion", action="store_true", help="S7-200: omit the PTO motion networks")
+    p.add_argument(
+        "--theta1-on-axis", type=_finite, metavar="DEG", help="waist angle on the base axis"
+    )
+    p.add_argument("-o", "--output", required=True, type=Path, help="program file to write")
+    p.add_argument("--map", required=True, type=Path, help="MAP.json to write")
+    p.add_argument("--json", action="store_true", help="machine-readable summary and errors")
+    _common(p)
+    p.set_defaults(func=_cmd_stl)
 
     p = sub.add_parser(
         "errata",
-        add_help=False,
-        help="the errata register: --check, --write, --write-readme (see errata --help)",
+        help="the errata registers: show, --check, --write",
+        description="The registers of every paper (data/errata/<paper>.csv) and the README "
+        "block, generated from the audits.",
+        epilog="examples:\n  python -m analysis errata --check\n"
+        "  python -m analysis errata --paper grabber",
+        formatter_class=_Help,
     )
-    p.set_defaults(func=None)  # dispatched in main() before parsing
+    g = p.add_mutually_exclusive_group()
+    g.add_argument("--check", action="store_true", help="exit 1 if a generated file is stale")
+    g.add_argument("--write", action="store_true", help="rewrite the registers and README")
+    p.add_argument("--paper", help="only this paper (grabber, palletizer, picker, gr1)")
+    p.set_defaults(func=_cmd_errata)
 
     p = sub.add_parser(
-        "report", help="execute every notebook, export figures and build/report/index.html"
+        "arms",
+        help="list the arms and their parameters",
+        description="The arms described in data/arms/*.toml, with each parameter's value and "
+        "whether it is printed in the paper or assumed.",
     )
-    p.add_argument(
-        "--out",
-        type=Path,
-        default=Path("build/report"),
-        help="output folder (default build/report)",
+    p.add_argument("--json", action="store_true", help="machine-readable output")
+    p.set_defaults(func=_cmd_arms)
+
+    p = sub.add_parser(
+        "report",
+        help="execute every notebook and build the report site",
+        description="Execute every notebook fresh (the stored ones are not modified), collect "
+        "the figures and build the report under --out.",
     )
-    p.add_argument(
-        "--notebooks",
-        nargs="*",
-        type=Path,
-        help="only these notebooks (default: all in notebooks/)",
-    )
+    p.add_argument("--out", type=Path, default=Path("build/report"), help="output folder")
+    p.add_argument("--notebooks", nargs="*", type=Path, help="only these notebooks")
     p.set_defaults(func=_cmd_report)
     return parser
 
 
-def main(argv: Sequence[str] | None = None) -> int:
-    argv = list(sys.argv[1:] if argv is None else argv)
-    if argv[:1] == [
-        "errata"
-    ]:  # its options belong to analysis.audit.register, passed through whole
-        from analysis.audit import register as errata
+def _error_doc(exc: Exception, args) -> dict:
+    from analysis.kinematics.arm import BaseAxisError, UnreachableError
 
-        return errata.main(argv[1:])
+    doc: dict = {"error": " ".join(str(exc).split())}
+    if isinstance(exc, UnreachableError):
+        doc.update(
+            target=list(exc.target),
+            reachable=False,
+            status=exc.status.text,
+            distance_mm=exc.distance_mm,
+        )
+    elif isinstance(exc, BaseAxisError):
+        doc.update(target=list(exc.target), reachable=True, status="base-axis")
+    return doc
+
+
+def _hint(exc: Exception, args) -> str:
+    """A second sentence where the likely mistake is the user's units or a missing flag."""
+    from analysis.kinematics.arm import BaseAxisError, UnreachableError
+
+    if isinstance(exc, BaseAxisError):
+        return " (here: --theta1-on-axis DEG)"
+    target = getattr(exc, "target", None)
+    if isinstance(exc, UnreachableError) and target and max(abs(v) for v in target) <= 5:
+        return " (coordinates are in mm: did you give metres?)"
+    return ""
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run the command line; returns the exit status."""
     parser = build_parser()
-    args = parser.parse_args(argv)
+    args = parser.parse_args(list(sys.argv[1:] if argv is None else argv))
     try:
         return int(args.func(args) or 0)
-    except (UsageError, UnreachableError, BaseAxisError, ValueError, FileNotFoundError) as exc:
-        message = " ".join(str(exc).split())
-        if isinstance(exc, BaseAxisError):
-            message += " (here: --theta1-on-axis DEG)"
-        print(f"{parser.prog} {args.command}: error: {message}", file=sys.stderr)
+    except (ValueError, OSError) as exc:  # UsageError, UnreachableError, OutputError, ...
+        if isinstance(exc, OSError):
+            exc = ValueError(f"{getattr(exc, 'filename', '') or ''}: {exc.strerror or exc}")
+        message = " ".join(str(exc).split()) + _hint(exc, args)
+        if getattr(args, "json", False):
+            doc = _error_doc(exc, args)
+            doc["error"] = message
+            print(json.dumps(doc))
+        else:
+            print(f"{PROG} {args.command}: error: {message}", file=sys.stderr)
         return 2

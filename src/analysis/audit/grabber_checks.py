@@ -70,9 +70,7 @@ class Item:
     @property
     def check(self) -> str:
         """The test that proves the verdict."""
-        if self.verdict == "wrong":
-            return f"tests/audit/test_register.py::test_erratum[{self.id}]"
-        return f"tests/audit/test_register.py::test_item_verdict[{self.id}]"
+        return f"tests/audit/test_grabber_audit.py::test_item_verdict[{self.id}]"
 
 
 # --------------------------------------------------------------------------------------------

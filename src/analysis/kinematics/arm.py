@@ -76,11 +76,19 @@ or of digits, not a pose."""
 class UnreachableError(ValueError):
     """The target lies outside the reachable set; ``distance_mm`` says how far."""
 
-    def __init__(self, message: str, target, distance_mm: float, limit_mm: float = math.nan):
+    def __init__(
+        self,
+        message: str,
+        target,
+        distance_mm: float,
+        limit_mm: float = math.nan,
+        status: Status = Status.OUT_OF_REACH,
+    ):
         super().__init__(message)
         self.target = tuple(float(v) for v in target)
         self.distance_mm = float(distance_mm)
         self.limit_mm = float(limit_mm)
+        self.status = Status(status)
 
 
 class BaseAxisError(ValueError):
@@ -596,7 +604,7 @@ class Arm:
             )
         message, limit = self.closed_form.refusal(status, p, self.params, tol=tol, distance=outside)
         if status in (Status.OUT_OF_REACH, Status.INSIDE_REACH):
-            raise UnreachableError(message, p, outside, limit)
+            raise UnreachableError(message, p, outside, limit, status)
         if status == Status.BASE_AXIS:
             raise BaseAxisError(message, p)
         raise ValueError(message)

@@ -1,0 +1,135 @@
+"""Batch inverse kinematics from CSV to CSV, streamed in chunks with constant memory.
+
+``ik --input IN.csv --output OUT.csv``: the input is read strictly
+(:func:`analysis.app.safe_io.iter_table_chunks`: a missing, duplicate or ragged column is an
+error naming its true line), solved chunk by chunk, and written to a temporary file that
+replaces the output only when everything succeeded (:func:`~analysis.app.safe_io.
+atomic_writer`); the output may not be the input. Memory does not grow with the file:
+a chunk of targets is read, solved and written before the next is read.
+
+Output: every input column (renamed ``input_<name>`` where it clashes with an output
+column), then ``branch, reachable, theta1_deg .. thetan_deg, c1 .. cn, status``, one row per
+target and branch, targets in input order. ``reachable`` is true where the row has a
+solution; ``status`` says why not (ok, out-of-reach, inside-reach, base-axis, joint-limits,
+degenerate). Unsolved rows leave angles and pulses empty, never "nan".
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+from pathlib import Path
+
+import numpy as np
+
+from analysis.app.safe_io import atomic_writer, check_paths, iter_table_chunks
+from analysis.kinematics.arm import Arm
+from analysis.kinematics.pulses import angles_to_pulses
+from analysis.kinematics.status import STATUS_TEXT, Status
+
+__all__ = ["INPUT_COLUMNS", "WRITE_ROWS", "output_columns", "solve_csv"]
+
+INPUT_COLUMNS = ("x_mm", "y_mm", "z_mm")
+WRITE_ROWS = 25_000
+"""Targets formatted at a time (bounds the memory of the text being written)."""
+
+
+def output_columns(arm: Arm) -> list[str]:
+    """The columns ``solve_csv`` appends to the input's."""
+    n = arm.n_joints
+    return [
+        "branch",
+        "reachable",
+        *(f"theta{j + 1}_deg" for j in range(n)),
+        *(f"c{j + 1}" for j in range(n)),
+        "status",
+    ]
+
+
+def _frame(arm, names, cols, header, sol):
+    """One chunk's output rows as a DataFrame (pandas formats the CSV text)."""
+    import pandas as pd
+
+    n, nb = sol.ok.shape
+    nj = arm.n_joints
+    out_cols = output_columns(arm)
+    data = {}
+    for k in header:
+        v = cols[k]
+        name = f"input_{k}" if k in out_cols else k
+        data[name] = np.repeat(v, nb)
+    ok = sol.ok.reshape(n * nb)
+    theta = sol.theta.reshape(n * nb, nj)
+    pulses = np.zeros((n * nb, nj), dtype=np.int64)
+    if ok.any():
+        pulses[ok] = angles_to_pulses(theta[ok], arm.params.pulses_per_rev)
+    deg = np.degrees(np.where(ok[:, None], theta, 0.0))
+    status = np.repeat(sol.status, nb).astype(np.int64)
+    status = np.where((status == Status.OK) & ~ok, int(Status.JOINT_LIMITS), status)
+    data["branch"] = np.tile(np.array(names, dtype=object), n)
+    data["reachable"] = np.where(ok, "true", "false")
+    for j in range(nj):
+        data[f"theta{j + 1}_deg"] = pd.arrays.FloatingArray(deg[:, j], ~ok)
+    for j in range(nj):
+        data[f"c{j + 1}"] = pd.arrays.IntegerArray(pulses[:, j], ~ok)
+    text = np.array([STATUS_TEXT[Status(s)] for s in range(len(Status))], dtype=object)
+    data["status"] = text[status]
+    return pd.DataFrame(data), Counter(text[sol.status.astype(np.int64)].tolist())
+
+
+def solve_csv(
+    arm: Arm,
+    input_path: Path,
+    output_path: Path,
+    *,
+    branch: str | None = None,
+    tol: float = 1e-6,
+    theta1_on_axis: float | None = None,
+    chunk_rows: int = 100_000,
+    params: Path | None = None,
+) -> dict:
+    """Solve every target of ``input_path`` into ``output_path``; return a summary.
+
+    Raises ``InputError`` (bad CSV, naming line and column), ``OutputError`` (cannot write,
+    or the output is an input) or ``ValueError`` (bad options); the output is then untouched.
+    """
+    if not 1 <= chunk_rows <= 10_000_000:
+        raise ValueError(f"--chunk-rows {chunk_rows} must be in 1 .. 10,000,000")
+    check_paths(inputs=[p for p in (input_path, params) if p], outputs=[output_path],
+                make_parents=True)  # fmt: skip
+    names = arm.branch_names(branch or arm.branches[0])
+    counts: Counter = Counter()
+    total = solved = 0
+    with atomic_writer(output_path, newline="", make_parents=True) as fh:
+        first = True
+        for _, cols in iter_table_chunks(
+            input_path,
+            required=INPUT_COLUMNS,
+            numeric=INPUT_COLUMNS,
+            allow_extra=True,
+            chunk_rows=chunk_rows,
+        ):
+            header = list(cols)
+            p_all = np.stack([cols[c] for c in INPUT_COLUMNS], axis=-1)
+            for s in range(0, len(p_all), WRITE_ROWS):
+                part = {k: v[s : s + WRITE_ROWS] for k, v in cols.items()}
+                p = p_all[s : s + WRITE_ROWS]
+                sol = arm.solve(p, names, tol=tol, theta1_on_axis=theta1_on_axis)
+                df, c = _frame(arm, names, part, header, sol)
+                df.to_csv(fh, header=first, index=False, float_format="%.10g")
+                first = False
+                counts.update(c)
+                total += len(p)
+                solved += int(sol.ok.any(axis=-1).sum())
+        if first:  # no data rows: the header alone
+            import pandas as pd
+
+            pd.DataFrame(columns=[*INPUT_COLUMNS, *output_columns(arm)]).to_csv(fh, index=False)
+    return {
+        "input": str(input_path),
+        "output": str(output_path),
+        "arm": arm.name,
+        "branches": list(names),
+        "targets": total,
+        "solved": solved,
+        "status": {k: counts.get(k, 0) for k in STATUS_TEXT.values() if counts.get(k, 0)},
+    }
