@@ -135,8 +135,11 @@ class IKSolutions(NamedTuple):
         return self.theta[..., self.branches.index(name), :]
 
 
-def as_points(p: npt.ArrayLike, name: str = "target") -> npt.NDArray[np.float64]:
-    """Validate and convert targets to a float array of shape (..., 3) [mm].
+def as_points(
+    p: npt.ArrayLike, name: str = "target", inputs: Sequence[str] = ("x", "y", "z")
+) -> npt.NDArray[np.float64]:
+    """Validate and convert targets to a float array of shape (..., k), k = len(inputs)
+    (default (..., 3) = x, y, z [mm]).
 
     Raises ``ValueError`` naming the offending value for text, wrong shapes, NaN or inf.
     """
@@ -144,8 +147,10 @@ def as_points(p: npt.ArrayLike, name: str = "target") -> npt.NDArray[np.float64]
         arr = np.asarray(p, dtype=float)
     except (TypeError, ValueError) as exc:
         raise ValueError(f"{name} {p!r} is not numeric: {exc}") from None
-    if arr.ndim == 0 or arr.shape[-1] != 3:
-        raise ValueError(f"{name} has shape {arr.shape}; expected (..., 3) = (x, y, z) in mm")
+    k = len(inputs)
+    if arr.ndim == 0 or arr.shape[-1] != k:
+        what = "(x, y, z) in mm" if k == 3 else "(" + ", ".join(inputs) + ")"
+        raise ValueError(f"{name} has shape {arr.shape}; expected (..., {k}) = {what}")
     bad = ~np.isfinite(arr)
     if bad.any():
         idx = np.argwhere(bad)[0]
@@ -357,6 +362,11 @@ class Arm:
         return tuple(self.closed_form.BRANCHES)
 
     @property
+    def inputs(self) -> tuple[str, ...]:
+        """Names of the closed form's inputs (the target: px, py, pz; more for a pose)."""
+        return tuple(self.closed_form.INPUTS)
+
+    @property
     def n_joints(self) -> int:
         return len(self.description.joints)
 
@@ -485,7 +495,7 @@ class Arm:
             allocate`), reused to avoid touching fresh memory.
         """
         names = self.branch_names(branches)
-        p = as_points(p)
+        p = as_points(p, inputs=self.inputs)
         tol = check_tol(tol)
         lim = self.limits if limits else ()
         if theta1_on_axis is not None:
@@ -505,7 +515,7 @@ class Arm:
             r = solve_body(
                 numpy_ops,
                 self.closed_form,
-                tuple(p[..., k] for k in range(3)),
+                tuple(p[..., k] for k in range(p.shape[-1])),
                 self.params,
                 names,
                 tol=tol,
@@ -576,10 +586,11 @@ class Arm:
 
         Branches outside the joint limits are left out; if none is left, ValueError.
         """
-        p = as_points(p)
-        if p.shape != (3,):
+        p = as_points(p, inputs=self.inputs)
+        if p.shape != (len(self.inputs),):
             raise ValueError(
-                f"ik takes one target of shape (3,), got {p.shape}; use solve() for batches"
+                f"ik takes one target of shape ({len(self.inputs)},), got {p.shape}; "
+                "use solve() for batches"
             )
         names = self.branch_names(branches or "all")
         sol = self.solve(p, names, theta1_on_axis=theta1_on_axis, tol=tol)
@@ -588,7 +599,7 @@ class Arm:
 
     def check_target(self, p: npt.ArrayLike, *, tol: float = DEFAULT_TOL_MM, allow_axis=False):
         """Raise :class:`UnreachableError` or :class:`BaseAxisError` for one bad target."""
-        p = as_points(p)
+        p = as_points(p, inputs=self.inputs)
         sol = self.solve(p, self.branches, tol=tol, theta1_on_axis=0.0 if allow_axis else None)
         self.raise_for(p, int(sol.status), float(sol.outside_mm), tol=tol)
 

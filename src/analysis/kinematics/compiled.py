@@ -345,9 +345,9 @@ def ik_kernel(closed_form: str, params: tuple, names: tuple, limits: tuple) -> K
 
     probe = Graph()
     n_joints = len(
-        cf.ik(TraceOps(probe), (0.0, 0.0, 0.0), dict.fromkeys(params, 1.0), tol=0.0)["branches"][
-            names[0]
-        ]
+        cf.ik(TraceOps(probe), (0.0,) * len(cf.INPUTS), dict.fromkeys(params, 1.0), tol=0.0)[
+            "branches"
+        ][names[0]]
     )
     outputs = {"status": "i1", "outside": "f8"}
     outputs.update({f"ok:{b}": "b1" for b in names})
@@ -403,7 +403,7 @@ def solve(arm, p: npt.NDArray[np.float64], names, *, tol: float, limits, out=Non
     outs = [res.status.reshape(n, copy=False), res.outside_mm.reshape(n, copy=False)]
     outs += [ok[b] for b in range(len(names))]
     outs += [theta[b, j] for b in range(len(names)) for j in range(nj)]
-    kern.run(p.reshape(n, 3), [*arm.params.values(), tol], outs)
+    kern.run(p.reshape(n, p.shape[-1]), [*arm.params.values(), tol], outs)
     return IKSolutions(res.theta, res.ok, res.status, res.outside_mm, names)
 
 
