@@ -218,8 +218,8 @@ def test_generated_listings_have_no_overlapping_operands(arm_name, dialect):
     """The byte-level check of analysis.plc.stl_eval.overlaps on every generated program:
     no two addresses share a byte (the paper's Figure 5 has VD104/VD106; see the register)."""
     from analysis.kinematics.arm import load_arm
-    from analysis.plc import stl_eval
     from analysis.papers import grabber as paper
+    from analysis.plc import stl_eval
 
     text, _ = generate(dialect, params=load_arm(arm_name).params)
     area = "V" if dialect == "s7-200" else "M"
