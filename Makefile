@@ -30,7 +30,7 @@ $(STAMP): requirements.lock pyproject.toml
 # xdist workers), retries a kernel that dies at start-up and keeps each kernel's stderr in
 # build/nbval-kernel-logs/.
 test: $(STAMP)
-	MPLBACKEND=Agg $(PY) -m pytest -n 2 tests
+	MPLBACKEND=Agg $(PY) -m pytest -n 2 tests --doctest-modules src
 	MPLBACKEND=$(NB_BACKEND) $(PY) -m pytest -p tests.nbval_kernel -n 2 --dist loadfile --nbval --nbval-sanitize-with tests/nbval_sanitize.cfg notebooks
 
 test-fast: $(STAMP)
