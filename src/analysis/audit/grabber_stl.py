@@ -3,8 +3,9 @@
 Each item's ``verify(text)`` runs an STL fragment (instructions separated by ``;`` or
 newlines) through :func:`analysis.plc.stl_eval.evaluate` with the inputs a correct program
 would see, and compares with the corrected kinematics of :mod:`analysis.kinematics.arm` and the
-pulse rule of :mod:`analysis.kinematics.pulses`. Facts about the S7-200 come from
-the S7-200 System Manual's instruction descriptions (in-place arithmetic, MOVD/MOVR, ROUND, REAL format). Used by :func:`analysis.audit.register.audit`.
+pulse rule of :mod:`analysis.kinematics.pulses`. Facts about the S7-200 come from the S7-200
+System Manual's instruction descriptions (in-place arithmetic, MOVD/MOVR, ROUND, REAL
+format). Used by :func:`analysis.audit.grabber_audit.audit`.
 """
 
 from __future__ import annotations
