@@ -3,11 +3,12 @@
 from __future__ import annotations
 
 import json
+import re
 
 import nbformat
 import pytest
 
-from analysis.app.report import build_report, notebook_paths
+from analysis.app.report import NotebookFailed, build_report, notebook_paths
 
 # sphinx-book-theme 1.4 still touches an attribute Sphinx 11 will remove
 pytestmark = pytest.mark.filterwarnings("ignore:.*HandleFootnoteTransform.app")
@@ -44,8 +45,25 @@ def demo_site(tmp_path_factory):
         "print(6 * 7)\n"
     )
     _notebook(src / "99_demo.ipynb", code, "99 · A demo notebook")
-    index = build_report(tmp / "report", notebooks=[src / "99_demo.ipynb"], pdf=False)
-    return tmp, src, index
+    # a notebook that raises, with a stale stored output after the failing cell
+    broken = nbformat.v4.new_notebook(
+        cells=[
+            nbformat.v4.new_markdown_cell("# 98 · A broken notebook"),
+            nbformat.v4.new_code_cell("raise ValueError('boom')"),
+            nbformat.v4.new_code_cell(
+                "print('after')",
+                outputs=[nbformat.v4.new_output("stream", name="stdout", text="STALE OUTPUT\n")],
+            ),
+        ],
+        metadata={"kernelspec": {"name": "python3", "display_name": "Python 3"}},
+    )
+    nbformat.write(broken, src / "98_broken.ipynb")
+    with pytest.raises(NotebookFailed, match="98_broken: ValueError: boom") as failed:
+        build_report(
+            tmp / "report", notebooks=[src / "98_broken.ipynb", src / "99_demo.ipynb"], pdf=False
+        )
+    assert "the site was built" in str(failed.value)
+    return tmp, src, tmp / "report" / "index.html"
 
 
 def test_build_report_writes_the_site(demo_site):
@@ -103,6 +121,20 @@ def test_executed_notebook_and_figures_are_downloads(demo_site):
     assert "ORGANIZATION_BLOCK" in awl
     json.loads(next(out.glob("_downloads/*/ik_s7-300_map.json")).read_text())
     assert list(out.glob("_downloads/*/99-line.svg")) and list(out.glob("_images/99-line.png"))
+
+
+def _text(html: str) -> str:
+    """What a reader sees of an HTML page, roughly: tags dropped, spaces collapsed."""
+    return " ".join(re.sub(r"<[^>]+>", " ", html).split())
+
+
+def test_a_failing_notebook_is_shown_not_hidden(demo_site):
+    tmp, _, index = demo_site
+    front = _text(index.read_text())
+    assert "This build is incomplete." in front and "ValueError: boom" in front
+    page = _text((tmp / "report" / "notebooks" / "98_broken.html").read_text())
+    assert "This notebook failed when executed for this build: ValueError: boom" in page
+    assert "STALE OUTPUT" not in page  # nothing stored survives a failing cell
 
 
 def test_rebuild_refuses_a_foreign_folder(tmp_path):

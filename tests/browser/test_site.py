@@ -35,6 +35,11 @@ def _goto(page, url: str) -> None:
     page.evaluate("() => window.MathJax?.startup?.promise?.then(() => true) ?? true")
 
 
+def test_site_built_cleanly(site_dir, build_problems):
+    """Every notebook executed and the front page computed (else the site says what failed)."""
+    assert not build_problems, build_problems[0]
+
+
 def test_front_page_shows_the_verdicts(page, site_url, shots, blocked):
     from analysis.audit import register, table4
 

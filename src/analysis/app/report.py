@@ -51,8 +51,16 @@ from pathlib import Path
 
 import nbformat
 from nbclient import NotebookClient
+from nbclient.exceptions import CellExecutionError
 
-__all__ = ["build_report", "execute_notebook", "notebook_paths", "print_pdf", "serve"]
+__all__ = [
+    "NotebookFailed",
+    "build_report",
+    "execute_notebook",
+    "notebook_paths",
+    "print_pdf",
+    "serve",
+]
 
 PROJECT = Path(__file__).resolve().parents[3]
 CONF_DIR = PROJECT / "docs" / "site"
@@ -90,18 +98,29 @@ def _title(nb: nbformat.NotebookNode, fallback: str) -> str:
     return fallback
 
 
+class NotebookFailed(RuntimeError):
+    """A notebook raised; the site was still built, with the failure shown on its pages."""
+
+
 def execute_notebook(
     path: Path,
     timeout: int = 1800,
     *,
     on_cell: Callable[[int, int], None] | None = None,
+    into: nbformat.NotebookNode | None = None,
 ) -> nbformat.NotebookNode:
     """Execute a notebook top to bottom in a fresh kernel, with its folder as cwd.
 
     Returns the executed notebook; the file at ``path`` is only read. ``on_cell(i, n)`` is
-    called after each code cell (i of n code cells).
+    called after each code cell (i of n code cells). ``into``: the notebook read from
+    ``path``, executed in place (so that a caller still has its outputs up to the failing
+    cell when execution raises ``nbclient.exceptions.CellExecutionError``).
     """
-    nb = nbformat.read(path, as_version=4)
+    nb = into if into is not None else nbformat.read(path, as_version=4)
+    for cell in nb.cells:  # no stored output survives, even after a failing cell
+        if cell.cell_type == "code":
+            cell.outputs = []
+            cell.execution_count = None
     n_code = sum(c.cell_type == "code" for c in nb.cells)
     done = 0
 
@@ -261,6 +280,9 @@ def build_report(
     """Execute the notebooks and build the report site under ``out``; return its index.html.
 
     ``pdf=False`` skips the printed ``report.pdf`` (it needs Debian's Chromium anyway).
+    A notebook that raises does not stop the build: its page shows the outputs up to the
+    failing cell and the error, the front page lists it, and :class:`NotebookFailed` is
+    raised once the site is written (so ``make report`` fails, with a site to look at).
     """
     from analysis.app import site_content as site
     from analysis.app.frontpage import front_page_data
@@ -282,6 +304,7 @@ def build_report(
 
     # 1. execute every notebook (fresh kernel each); figures go to the staged figures/
     executed: list[tuple[Path, nbformat.NotebookNode, float]] = []
+    failed: dict[str, str] = {}  # notebook stem (or "front page") -> what went wrong
     n = len(paths)
     # kernels draw with the inline backend, as under nbval (make test), whatever the caller uses
     with _env(ANALYSIS_FIGURE_DIR=str(fig_dir), MPLBACKEND=NB_BACKEND):
@@ -296,11 +319,18 @@ def build_report(
                     last[0] = now
                     say(f"notebook {i}/{n}: {path.name} cell {k}/{m}, {now - t:.0f} s")
 
-            nb = execute_notebook(path, on_cell=beat)
+            nb = nbformat.read(path, as_version=4)
+            try:
+                execute_notebook(path, on_cell=beat, into=nb)
+            except CellExecutionError as exc:
+                failed[path.stem] = _first_line_of_error(exc)
             dt = time.perf_counter() - t
             nbformat.write(nb, dl_nb / path.name)
             executed.append((path, nb, dt))
-            say(f"notebook {i}/{n}: {path.name} done in {dt:.1f} s")
+            if path.stem in failed:
+                say(f"notebook {i}/{n}: {path.name} FAILED after {dt:.1f} s: {failed[path.stem]}")
+            else:
+                say(f"notebook {i}/{n}: {path.name} done in {dt:.1f} s")
 
     # 2. figures, notebooks prepared for the site, downloads, generated pages
     captions = site.figure_captions(fig_dir)
@@ -311,7 +341,9 @@ def build_report(
     )
     titles, homes = {}, {}
     for path, nb, dt in executed:
-        page, placed = site.prepare_notebook(nb, path.name, captions, seconds=dt)
+        page, placed = site.prepare_notebook(
+            nb, path.name, captions, seconds=dt, failure=failed.get(path.stem)
+        )
         nbformat.write(page, nb_dir / path.name)
         titles[path.stem] = _title(nb, path.stem)
         homes.update({s: f"notebooks/{path.stem}" for s in placed})
@@ -326,7 +358,12 @@ def build_report(
         )
         for p, _, dt in executed
     ]
-    sections = front_page_data()
+    try:
+        sections = front_page_data()
+    except Exception as exc:  # the site still shows everything else, and says what broke
+        failed["front page"] = f"front_page_data() raised {type(exc).__name__}: {exc}"
+        say(failed["front page"])
+        sections = []
     commit = _git_commit()
     total = sum(dt for _, _, dt in executed)
     intro = (
@@ -335,12 +372,15 @@ def build_report(
         "Machinery, 2016. Every printed equation, table and PLC listing re-derived, "
         "recomputed or executed. "
         f"This site was built{f' from commit `{commit}`' if commit else ''}: all {n} notebooks "
-        f"were executed for it ({total:.0f} s), and the verdicts below recomputed."
+        f"were executed for it ({total:.0f} s"
+        + (f"; {sum(k in titles for k in failed)} failed" if failed else "")
+        + "), and the verdicts below recomputed."
     )
     docs = [f"notebooks/{p.stem}" for p, _, _ in executed]
     toc = {"Notebooks": docs, "Report": ["register", "figures", "downloads"]}
     (src / "index.md").write_text(
-        site.front_page_md(sections, captions, homes, titles, intro, toc), encoding="utf-8"
+        site.front_page_md(sections, captions, homes, titles, intro, toc, problems=failed),
+        encoding="utf-8",
     )
     (src / "register.md").write_text(site.register_md(), encoding="utf-8")
     (src / "figures.md").write_text(site.figures_md(captions, homes, titles), encoding="utf-8")
@@ -373,4 +413,17 @@ def build_report(
         shutil.copyfile(src / "downloads" / "report.pdf", out / "report.pdf")
     index = out / "index.html"
     say(f"done: {index} ({warnings} Sphinx warnings)")
+    if failed:
+        raise NotebookFailed(
+            f"the site was built ({index}), but "
+            + "; ".join(f"{k}: {v}" for k, v in failed.items())
+        )
     return index
+
+
+def _first_line_of_error(exc: Exception) -> str:
+    """'ImportError: cannot import name ...' from nbclient's CellExecutionError."""
+    ename, evalue = getattr(exc, "ename", ""), getattr(exc, "evalue", "")
+    if ename:
+        return f"{ename}: {evalue}".strip()
+    return str(exc).strip().splitlines()[-1] if str(exc).strip() else type(exc).__name__

@@ -85,6 +85,16 @@ def figure_captions(fig_dir: Path, fallback: Path | None = CAPTIONS_TOML) -> dic
     return out
 
 
+def _code(text: str) -> str:
+    """Text that can sit between single backticks (an inline literal)."""
+    return " ".join(text.replace("`", "'").split())[:300]
+
+
+def _role(text: str) -> str:
+    """Link text inside a role (``{doc}`text <target>```): no backticks or angle brackets."""
+    return " ".join(text.replace("`", "'").replace("<", "‹").replace(">", "›").split())
+
+
 def _inline(text: str) -> str:
     """Plain text as MyST inline content (no markup, roles or maths triggered)."""
     return re.sub(r"([\\`*_\[\]<>{}$|#])", r"\\\1", text)
@@ -130,6 +140,7 @@ def prepare_notebook(
     captions: dict[str, str],
     *,
     seconds: float | None = None,
+    failure: str | None = None,
 ) -> tuple[nbformat.NotebookNode, list[str]]:
     """A copy of an executed notebook for the site, and the figure stems it places.
 
@@ -139,7 +150,7 @@ def prepare_notebook(
       with one captioned figure per stem, labelled ``fig-<stem>``;
     * widget outputs become a note (a static page has no kernel);
     * after the first heading, a note says the notebook was executed for this build and
-      links the executed ``.ipynb``.
+      links the executed ``.ipynb``; if it raised (``failure``), an error box at the top says so.
 
     ``nb`` itself is not modified.
     """
@@ -186,6 +197,12 @@ def prepare_notebook(
             )
             cells.insert(i + 1, nbformat.v4.new_markdown_cell(note))
             break
+    if failure:  # first thing on the page
+        box = (
+            ":::{error}\nThis notebook **failed** when executed for this build: "
+            f"`{_code(failure)}`. The outputs below stop at the failing cell.\n:::\n"
+        )
+        cells.insert(0, nbformat.v4.new_markdown_cell(box))
     nb.cells = cells
     return nb, placed
 
@@ -220,7 +237,7 @@ def _evidence(links: Iterable[tuple[str, str]], titles: dict[str, str]) -> str:
                 continue
             label = titles[stem]
             label = label if label.startswith(stem[:2]) else f"{stem[:2]} · {label}"
-        parts.append(f"{{doc}}`{_inline(label)} </{page}>`")
+        parts.append(f"{{doc}}`{_role(label)} </{page}>`")
     return "**Evidence:** " + " · ".join(parts)
 
 
@@ -231,13 +248,23 @@ def front_page_md(
     titles: dict[str, str],
     intro: str,
     toc: dict[str, list[str]],
+    problems: dict[str, str] | None = None,
 ) -> str:
     """``index.md``: title, intro, one section per :class:`Verdict`, then the contents.
 
     ``homes`` maps a figure stem to the notebook page that shows it (for the link back),
-    ``titles`` a notebook stem to its title, ``toc`` a toctree caption to its documents.
+    ``titles`` a notebook stem to its title, ``toc`` a toctree caption to its documents,
+    ``problems`` what failed in this build (shown first, in an error box).
     """
     out = ["# Audit of Li Feng et al. (2016), a 3R material-grabbing robot", "", intro, ""]
+    if problems:
+        out += [":::{error}", "**This build is incomplete.**", ""]
+        for what, why in problems.items():
+            where = (
+                f"{{doc}}`{_role(titles[what])} </notebooks/{what}>`" if what in titles else what
+            )
+            out.append(f"- {where}: `{_code(why)}`")
+        out += [":::", ""]
     for s in sections:
         out += [f"## {s.title}", ""]
         if s.counts:
