@@ -43,6 +43,8 @@ def demo_site(tmp_path_factory):
         "plt.show()\n"
         "display(sp.Matrix([[sp.Symbol('theta_1'), 0], [0, 1]]))\n"
         "print(6 * 7)\n"
+        "from ipykernel.kernelapp import IPKernelApp\n"
+        "print('transport', IPKernelApp.instance().transport)\n"
     )
     _notebook(src / "99_demo.ipynb", code, "99 · A demo notebook")
     # a notebook that raises, with a stale stored output after the failing cell
@@ -102,6 +104,7 @@ def test_executed_notebook_and_figures_are_downloads(demo_site):
     )
     outputs = "".join(o.get("text", "") for o in executed.cells[1].outputs)
     assert "42" in outputs and "99-line.svg" in outputs
+    assert "transport ipc" in outputs  # Unix sockets, no TCP port to race for
     # the source notebook is the nbval reference: it must not be modified
     assert nbformat.read(src / "99_demo.ipynb", as_version=4).cells[1].outputs == []
     downloads = (out / "downloads.html").read_text()

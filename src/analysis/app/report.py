@@ -50,6 +50,7 @@ from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import nbformat
+from jupyter_client.manager import KernelManager
 from nbclient import NotebookClient
 from nbclient.exceptions import CellExecutionError
 
@@ -130,16 +131,24 @@ def execute_notebook(
         if on_cell is not None:
             on_cell(done, n_code)
 
-    client = NotebookClient(
-        nb,
-        timeout=timeout,
-        kernel_name="python3",
-        resources={"metadata": {"path": str(path.parent)}},
-        on_cell_executed=hook,
-        # the kernel's start-up notice about TCP on loopback is noise in the progress log
-        extra_arguments=["--IPKernelApp.log_level=ERROR"],
-    )
-    client.execute()
+    # The kernel talks over Unix sockets in a private folder (IPC), not TCP: no free-port race
+    # with other kernels starting at the same time (see tests/nbval_kernel.py for the race).
+    with tempfile.TemporaryDirectory(prefix="analysis-kernel-") as ipc:
+        km = KernelManager(
+            kernel_name="python3",
+            transport="ipc",
+            ip=os.path.join(ipc, "k"),
+            connection_file=os.path.join(ipc, "k.json"),
+        )
+        client = NotebookClient(
+            nb,
+            km=km,
+            timeout=timeout,
+            kernel_name="python3",
+            resources={"metadata": {"path": str(path.parent)}},
+            on_cell_executed=hook,
+        )
+        client.execute()
     return nb
 
 
