@@ -38,6 +38,9 @@ def _goto(page, url: str) -> None:
 def test_site_built_cleanly(site_dir, build_problems):
     """Every notebook executed and the front page computed (else the site says what failed)."""
     assert not build_problems, build_problems[0]
+    front = (site_dir / "index.html").read_text()
+    at = front.find("This build is incomplete.")
+    assert at < 0, " ".join(re.sub(r"<[^>]+>", " ", front[at : at + 1500]).split())
 
 
 def test_front_page_shows_the_verdicts(page, site_url, shots, blocked):
