@@ -4,11 +4,13 @@ from __future__ import annotations
 
 import json
 import re
+import time
+from pathlib import Path
 
 import nbformat
 import pytest
 
-from analysis.app.report import NotebookFailed, build_report, notebook_paths
+from analysis.app.report import NotebookFailed, build_report, execute_notebook, notebook_paths
 
 # sphinx-book-theme 1.4 still touches an attribute Sphinx 11 will remove
 pytestmark = pytest.mark.filterwarnings("ignore:.*HandleFootnoteTransform.app")
@@ -138,6 +140,17 @@ def test_a_failing_notebook_is_shown_not_hidden(demo_site):
     page = _text((tmp / "report" / "notebooks" / "98_broken.html").read_text())
     assert "This notebook failed when executed for this build: ValueError: boom" in page
     assert "STALE OUTPUT" not in page  # nothing stored survives a failing cell
+
+
+def test_execute_notebook_shuts_its_kernel_down(tmp_path):
+    _notebook(tmp_path / "01_pid.ipynb", "import os\nprint(os.getpid())", "01 · pid")
+    nb = execute_notebook(tmp_path / "01_pid.ipynb")
+    pid = int(nb.cells[1].outputs[0]["text"])
+    for _ in range(50):  # the kernel process is gone (and reaped) once execution returns
+        if not Path(f"/proc/{pid}").exists():
+            break
+        time.sleep(0.1)
+    assert not Path(f"/proc/{pid}").exists()
 
 
 def test_rebuild_refuses_a_foreign_folder(tmp_path):

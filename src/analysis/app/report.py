@@ -148,7 +148,11 @@ def execute_notebook(
             resources={"metadata": {"path": str(path.parent)}},
             on_cell_executed=hook,
         )
-        client.execute()
+        try:
+            client.execute()
+        finally:  # a kernel manager passed in is not shut down by nbclient itself
+            if km.has_kernel:
+                km.shutdown_kernel(now=True)
     return nb
 
 
