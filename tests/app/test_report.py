@@ -79,7 +79,7 @@ def test_build_report_writes_the_site(demo_site):
     text = index.read_text()
     assert 'href="notebooks/99_demo.html"' in text and "A demo notebook" in text
     # front page: the verdicts, recomputed
-    assert "printed items hold" in text and "Table 4, recomputed" in text
+    assert "root causes against the paper" in text and "Table 4, recomputed" in text
     assert "The PLC program, executed" in text
     # MathJax is local, never a CDN (Sphinx adds it to the pages with maths)
     page = (out / "notebooks" / "99_demo.html").read_text()
@@ -115,8 +115,8 @@ def test_executed_notebook_and_figures_are_downloads(demo_site):
         "ik_s7-200_map.json",
         "ik_s7-300.awl",
         "ik_s7-300_map.json",
-        "errata.csv",
-        "paper_audit.csv",
+        "grabber.csv",
+        "grabber_items.csv",
         "table4_audit.csv",
         "99_demo.ipynb",
     ):

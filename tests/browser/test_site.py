@@ -44,28 +44,26 @@ def test_site_built_cleanly(site_dir, build_problems):
 
 
 def test_front_page_shows_the_verdicts(page, site_url, shots, blocked):
-    from analysis.audit import register, table4
+    from analysis.audit import grabber_audit, register, table4
+    from analysis.audit.schema import COUNTED
 
-    verdicts, _ = register.coverage()
-    n = verdicts["items"]
-    reg = register.load()
+    reg = register.register("grabber")
+    c = reg.counts()
+    causes = sum(c[s] for s in COUNTED)
+    places = sum(len(x.manifestations) for x in reg.causes if x.status in COUNTED)
+    n = grabber_audit.coverage()[0]["items"]
     _goto(page, site_url + "index.html")
     page.screenshot(path=shots / "front-page.png", full_page=False)
     page.screenshot(path=shots / "front-page-full.png", full_page=True)
-    cards = {
-        page.locator(".verdict-label").nth(i).inner_text(): page.locator(".verdict-number")
-        .nth(i)
-        .inner_text()
-        for i in range(page.locator(".verdict-count").count())
-    }
-    assert cards == {
-        "printed items checked": f"{n.sum():,}",
-        "hold": f"{n['holds']:,}",
-        "wrong": f"{n['wrong']:,}",
-        "register rows": f"{len(reg):,}",
-    }
+    labels = page.locator(".verdict-label").all_inner_texts()
+    numbers = page.locator(".verdict-number").all_inner_texts()
+    cards = dict(zip(labels, numbers, strict=True))
+    assert cards["root causes against the paper"] == f"{causes:,}"
+    assert cards["errors"] == f"{c['error']:,}" and cards["places they show"] == f"{places:,}"
+    assert cards["printed items checked"] == f"{n.sum():,}"
     text = page.locator("main").inner_text()
-    assert f"{n['holds']} of {n.sum()} printed items hold; {n['wrong']} are wrong" in text
+    assert f"{causes} root causes against the paper" in text
+    assert f"{n['holds']} of {n.sum()} printed items hold" in text
     for heading in (
         "What the audit found",
         "Table 4, recomputed",
@@ -196,8 +194,8 @@ def test_downloads_are_present_and_what_they_say(page, context, site_url, site_d
         "ik_s7-200_map.json",
         "ik_s7-300.awl",
         "ik_s7-300_map.json",
-        "errata.csv",
-        "paper_audit.csv",
+        "grabber.csv",
+        "grabber_items.csv",
         "table4_audit.csv",
         "report.pdf",
     } | nbs
@@ -208,8 +206,8 @@ def test_downloads_are_present_and_what_they_say(page, context, site_url, site_d
     for dialect in ("s7-200", "s7-300"):
         mmap = json.loads(body[f"ik_{dialect}_map.json"])
         assert mmap["dialect"] == dialect and {"px", "py", "pz"} <= set(mmap["inputs"])
-    assert body["errata.csv"].startswith(b"id,location,printed,corrected,kind,check")
-    assert body["paper_audit.csv"].startswith(b"id,location,verdict")
+    assert body["grabber.csv"].startswith(b"id,cause,status,kind,location,printed,corrected")
+    assert body["grabber_items.csv"].startswith(b"id,location,verdict")
     assert body["table4_audit.csv"].startswith(b"row,")
     assert body["report.pdf"].startswith(b"%PDF")
     assert len(re.findall(rb"/Type\s*/Page[^s]", body["report.pdf"])) > 20
@@ -217,7 +215,7 @@ def test_downloads_are_present_and_what_they_say(page, context, site_url, site_d
         assert json.loads(body[name])["cells"], name
     # the digests printed on the page are those of the files
     text = page.locator("main").inner_text()
-    for name in ("ik_s7-200.awl", "errata.csv", "report.pdf"):
+    for name in ("ik_s7-200.awl", "grabber.csv", "report.pdf"):
         assert hashlib.sha256(body[name]).hexdigest() in text, name
     # and a click downloads the file under its name, as a reader would
     with page.expect_download() as dl:

@@ -49,13 +49,21 @@ class Verdict:
     figures: tuple[str, ...] = field(default_factory=tuple)
 
 
+_LABEL = {  # status -> (singular, plural) for the count cards
+    "error": ("error", "errors"),
+    "omission": ("omission", "omissions"),
+    "unsupported": ("unsupported claim", "unsupported claims"),
+}
+
+
 def front_page_data() -> list[Verdict]:
     """The front page's sections: audit counts, Table 4, the PLC proof, quantization."""
     import numpy as np
 
-    from analysis.audit import register, table4
+    from analysis.audit import grabber_audit, register, table4
+    from analysis.audit.schema import COUNTED
     from analysis.kinematics.arm import paper_arm
-    from analysis.plc.cli import generate
+    from analysis.plc.generate import generate
     from analysis.plc.memmap import default_map
     from analysis.plc.paper_listings import run_paper_listings
     from analysis.plc.runner import AwlRunner
@@ -63,30 +71,39 @@ def front_page_data() -> list[Verdict]:
     from analysis.plc.verify import compare, table4_targets
     from analysis.studies import quantization, workspace
 
-    # --- the errata register -------------------------------------------------------------
-    verdicts, kinds = register.coverage()
-    n = verdicts["items"]
-    reg = register.load()
-    paper_rows = int(reg["id"].str.startswith(register.OWN_PREFIX).sum())
-    kinds = kinds[kinds["wrong items"] > 0]
+    # --- the errata register: root causes and where they show ------------------------------
+    reg = register.register("grabber")
+    c = reg.counts()
+    counted = [x for x in reg.causes if x.status in COUNTED]
+    places = sum(len(x.manifestations) for x in counted)
+    items, _ = grabber_audit.coverage()
+    n = items["items"]
+    by_kind = (
+        pd.DataFrame(
+            [(x.kind, x.status, len(x.manifestations)) for x in counted],
+            columns=["kind of cause", "status", "places"],
+        )
+        .groupby("kind of cause")
+        .agg(causes=("status", "size"), places=("places", "sum"))
+        .sort_values(["causes", "places"], ascending=False)
+    )
     audit = Verdict(
         title="What the audit found",
         verdict=(
-            f"**{n['holds']} of {n.sum()} printed items hold; {n['wrong']} are wrong**"
-            + (f"; {n['undecidable']} undecidable" if n["undecidable"] else "")
-            + ". An item is one matrix entry, equation, table cell, claim in the text or STL "
-            f"finding. The errata register has {len(reg)} rows ({paper_rows} from the paper "
-            f"audit, {len(reg) - paper_rows} from executing the paper's PLC listings), each "
-            "with the test that proves it."
+            register.headline(reg)
+            + f" Item by item (every matrix entry, equation, table cell, claim and STL "
+            f"listing checked by machine), {n['holds']} of {n.sum()} printed items hold and "
+            f"{n['wrong']} are wrong. Each cause and each place it shows has the test that "
+            "proves it."
         ),
         evidence=(("register", "the errata register"), ("notebooks/02_inverse_kinematics", "02")),
         counts=(
+            ("root causes against the paper", sum(c[s] for s in COUNTED)),
+            *((_LABEL[s][c[s] != 1], c[s]) for s in COUNTED),
+            ("places they show", places),
             ("printed items checked", int(n.sum())),
-            ("hold", int(n["holds"])),
-            ("wrong", int(n["wrong"])),
-            ("register rows", len(reg)),
         ),
-        table=kinds.rename_axis("kind of error"),
+        table=by_kind,
     )
 
     # --- Table 4 -------------------------------------------------------------------------

@@ -297,25 +297,27 @@ def register_md() -> str:
     body = register.render_markdown().splitlines()
     if body and body[0].startswith("_Generated"):
         body = body[1:]
-    reg = register.load()
-    return "\n".join(
-        [
-            "# The errata register",
+    out = [
+        "# The errata register",
+        "",
+        "Each root cause the audit found is stated once, with every place it shows in the "
+        "paper (its manifestations); each has the test that proves it. Long texts are "
+        "shortened here; the CSV files on the {doc}`downloads page </downloads>` have them "
+        "in full.",
+        *body,
+        "",
+    ]
+    for paper in register.available():
+        reg = register.load(paper)
+        out += [
+            f"## Every row of `data/errata/{paper}.csv` and its test",
             "",
-            "Every printed item of the paper was checked by machine "
-            "(`analysis.audit.register`); each discrepancy is one row of `data/errata.csv`. "
-            "Long texts are shortened here; the CSV files on the {doc}`downloads page "
-            "</downloads>` have them in full.",
-            *body,
+            "A cause row has no *cause*; its manifestations name it. The test (a `pytest` "
+            "node id) fails if the printed form were right.",
             "",
-            "## Each row and the test that proves it",
-            "",
-            "The test asserts that the corrected text passes the row's check and the printed "
-            "text fails it (`pytest` node ids).",
-            "",
-            _md_table(reg[["id", "kind", "check"]].set_index("id")),
+            _md_table(reg[["id", "cause", "status", "check"]].set_index("id")),
         ]
-    )
+    return "\n".join(out)
 
 
 def figures_md(captions: dict[str, str], homes: dict[str, str], titles: dict[str, str]) -> str:
@@ -358,9 +360,9 @@ def write_downloads(src: Path) -> list[Download]:
     """Write the PLC programs, memory maps and audit CSVs under ``src/downloads``."""
     import shutil
 
-    from analysis.audit import table4
-    from analysis.kinematics.params import data_dir
-    from analysis.plc.cli import generate
+    from analysis.audit import register, table4
+    from analysis.paths import data_dir
+    from analysis.plc.generate import generate
 
     dl = src / "downloads"
     (dl / "plc").mkdir(parents=True, exist_ok=True)
@@ -385,15 +387,25 @@ def write_downloads(src: Path) -> list[Download]:
                 how,
             ),
         ]
-    for name, what in (
-        (
-            "errata.csv",
-            "The errata register: one row per discrepancy, with the test that proves it",
-        ),
-        ("paper_audit.csv", "Every audited printed item with its verdict (items that hold too)"),
-    ):
-        shutil.copyfile(data_dir() / name, dl / "data" / name)
-        items.append(Download(f"data/{name}", "Audit tables", what, f"data/{name}"))
+    for paper in register.available():
+        name = f"{paper}.csv"
+        shutil.copyfile(register.register_path(paper), dl / "data" / name)
+        what = (
+            f"The errata register of {register.register(paper).title}: each root cause, its "
+            "manifestations beneath, every row with the test that proves it"
+        )
+        items.append(Download(f"data/{name}", "Audit tables", what, f"data/errata/{name}"))
+    items_csv = data_dir() / "errata" / "grabber_items.csv"
+    if items_csv.exists():
+        shutil.copyfile(items_csv, dl / "data" / items_csv.name)
+        items.append(
+            Download(
+                f"data/{items_csv.name}",
+                "Audit tables",
+                "Every audited printed item of seed 000 with its verdict (items that hold too)",
+                f"data/errata/{items_csv.name}",
+            )
+        )
     table4.report_table().to_csv(dl / "data" / "table4_audit.csv")
     items.append(
         Download(
