@@ -401,9 +401,10 @@ def build_report(
 
     # 3. the printed form: one page (singlehtml) printed by Chromium, then offered as download
     doctrees = work / "doctrees"
+    warnings = 0
     if pdf:
         say("sphinx: single-page version for printing ...")
-        _sphinx(src, work / "print", doctrees, "singlehtml")
+        warnings += _sphinx(src, work / "print", doctrees, "singlehtml")
         say("printing report.pdf with headless Chromium ...")
         if print_pdf(work / "print", src / "downloads" / "report.pdf"):
             items.append(
@@ -419,7 +420,7 @@ def build_report(
 
     # 4. the site
     say("sphinx: building the site ...")
-    warnings = _sphinx(src, out, doctrees, "html")
+    warnings += _sphinx(src, out, doctrees, "html")
     _prune_mathjax(out / "_static" / "mathjax")
     (out / _MARKER).write_text("written by analysis.app.report; deleted on the next build\n")
     if (src / "downloads" / "report.pdf").exists():

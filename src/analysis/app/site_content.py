@@ -304,6 +304,8 @@ def register_md() -> str:
         "paper (its manifestations); each has the test that proves it. Long texts are "
         "shortened here; the CSV files on the {doc}`downloads page </downloads>` have them "
         "in full.",
+        "",
+        "## Root causes, paper by paper",
         *body,
         "",
     ]
