@@ -111,7 +111,6 @@ def _figure(stem: str, caption: str, *, name: bool, evidence: str | None = None)
         f":::{{figure}} /figures/{stem}.png",
         *([f":name: fig-{stem}"] if name else []),
         f":alt: {alt}",
-        ":width: 100%",
         "",
         f"{cap} ({links})",
         ":::",
@@ -336,7 +335,8 @@ def figures_md(captions: dict[str, str], homes: dict[str, str], titles: dict[str
         by_nb.setdefault(stem[:2], []).append(stem)
     for num, stems in sorted(by_nb.items()):
         nb = next((t for t in titles if t.startswith(num)), None)
-        head = f"{num} · {titles[nb]}" if nb else f"Notebook {num}"
+        head = titles[nb] if nb else f"Notebook {num}"
+        head = head if head.startswith(num) else f"{num} · {head}"
         out += [f"## {_inline(head)}", ""]
         for stem in stems:
             home = homes.get(stem)
