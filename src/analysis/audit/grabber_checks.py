@@ -3,225 +3,46 @@
 Each builder holds a family of printed items of :mod:`analysis.papers.grabber` against its
 derivation: the D-H matrices (:mod:`analysis.kinematics.dh`, SymPy), FK identities, the angle
 formulas (numeric, seeded samples of :mod:`analysis.kinematics.arm`'s front-up solutions), the
-text's
-claims, Tables 1, 3, 4 (:mod:`analysis.audit.table4`) and the STL
+text's claims, Tables 1, 3, 4 (:mod:`analysis.audit.table4`) and the STL
 (:mod:`analysis.audit.grabber_stl`).
 :func:`analysis.audit.register.audit` collects them. Verdicts are computed, never typed:
-``simplify(printed - derived) == 0`` (here an exact normal form, :func:`_normal_form`), a
-numeric counterexample, or recomputation.
+``simplify(printed - derived) == 0`` (here an exact normal form,
+:func:`~analysis.audit.grabber_items.normal_form`), a numeric counterexample, or recomputation.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from dataclasses import dataclass, field
-from functools import cache
-
 import numpy as np
 import sympy as sp
 
+from analysis.audit.grabber_items import (
+    ANGLE_TOL,
+    IX,
+    OWN_PREFIX,
+    PXYZ,
+    TH,
+    Item,
+    S,
+    angle_formula_error,
+    classify,
+    derived_matrices,
+    fk_subs,
+    fmt_p,
+    is_zero,
+    normal_form,
+    parse_eq,
+    samples,
+    sstr,
+    verify_angle,
+    verify_fk_identity,
+)
+from analysis.audit.grabber_stl import stl_items
+from analysis.audit.grabber_text_checks import table_items, text_items
 from analysis.kinematics.arm import paper_arm
 from analysis.kinematics.params import paper_params
 from analysis.papers import grabber as paper
 
-__all__ = ["ANGLE_TOL", "KINDS", "OWN_PREFIX", "Item", "all_items", "derived_matrices"]
-
-KINDS: tuple[str, ...] = (
-    "sign",
-    "index",
-    "label",
-    "missing term",
-    "branch/quadrant",
-    "transcription",
-    "unit",
-    "PLC semantics",
-    "cross-reference",
-)
-"""The kinds of discrepancy a register row may have."""
-OWN_PREFIX = "paper-"
-"""Id prefix of the items (and register rows) generated here."""
-ANGLE_TOL = 1e-9
-"""Tolerance [rad] for numeric identity checks of angle formulas: float64 round-off of
-atan2/acos at |P| ~ 1e3 mm is ~1e-13 rad, far below; a wrong branch is off by >= 1e-3."""
-
-
-@dataclass(frozen=True)
-class Item:
-    """One printed statement and its machine verdict.
-
-    ``verdict`` is "holds", "wrong" or "undecidable"; ``kind`` and ``corrected`` are set
-    for wrong items; ``verify`` decides whether a text (printed or corrected, same
-    notation) is right.
-    """
-
-    id: str
-    location: str
-    printed: str
-    derived: str
-    verdict: str
-    evidence: str
-    kind: str = ""
-    corrected: str = ""
-    verify: Callable[[str], bool] = field(default=lambda text: False, repr=False, compare=False)
-
-    @property
-    def check(self) -> str:
-        """The test that proves the verdict."""
-        return f"tests/audit/test_grabber_audit.py::test_item_verdict[{self.id}]"
-
-
-# --------------------------------------------------------------------------------------------
-# derived objects
-# --------------------------------------------------------------------------------------------
-S = paper.SYMBOLS
-TH = (S["theta1"], S["theta2"], S["theta3"])
-PXYZ = (S["Px"], S["Py"], S["Pz"])
-_IX = sp.symbols("ix iy iz", real=True)
-_SC = sp.symbols("s1 s2 s3 c1 c2 c3", real=True)
-_TRIG_SUBS = {
-    **{sp.sin(t): _SC[i] for i, t in enumerate(TH)},
-    **{sp.cos(t): _SC[i + 3] for i, t in enumerate(TH)},
-}
-
-
-def _tsimp(M: sp.Matrix) -> sp.Matrix:
-    """Entry-wise trigonometric simplification (much faster than Matrix.simplify here)."""
-    return M.applyfunc(lambda e: sp.trigsimp(sp.expand(sp.expand_trig(e))))
-
-
-def _rigid_inverse(A: sp.Matrix) -> sp.Matrix:
-    """[R p; 0 1]^-1 = [R^T -R^T p; 0 1] (as :func:`analysis.kinematics.dh.inverse_transform`,
-    symbolic)."""
-    R, p = A[:3, :3], A[:3, 3]
-    top = R.T.row_join(-R.T * p)
-    return _tsimp(top.col_join(sp.Matrix([[0, 0, 0, 1]])))
-
-
-@cache
-def derived_matrices() -> dict[str, sp.Matrix]:
-    """The matrices of sections 1.2-1.3 derived from the D-H table (Table 1/3, symbolic)."""
-    A1, A2, A3 = paper_params().dh_table(symbolic=True).transforms_sym(TH)
-    T3 = _tsimp(A1 * A2 * A3)
-    inv = {k: _rigid_inverse(m) for k, m in (("A1inv", A1), ("A2inv", A2), ("A3inv", A3))}
-    return {
-        "A1": A1,
-        "A2": A2,
-        "A3": A3,
-        **inv,
-        "T3": T3,
-        "eq4": _tsimp(A2 * A3),
-        "eq12": _tsimp(inv["A3inv"] * inv["A2inv"] * inv["A1inv"]),
-        "eq12_rhs": sp.eye(4),
-    }
-
-
-def _fk_subs() -> dict:
-    T3 = derived_matrices()["T3"]
-    return dict(zip(PXYZ, (T3[0, 3], T3[1, 3], T3[2, 3]), strict=True))
-
-
-def _normal_form(expr) -> sp.Expr | None:
-    """Canonical form of a trigonometric polynomial/rational expression in theta1..3.
-
-    The sines and cosines are expanded into s_i, c_i and the numerator is reduced modulo
-    s_i^2 + c_i^2 - 1 (a Groebner basis: the leading terms s_i^2 are pairwise coprime),
-    so the result is 0 iff the expression vanishes identically. Returns ``None`` when the
-    expression has other functions (atan, acos, ...).
-    """
-    expr = sp.expand(sp.expand_trig(sp.sympify(expr)))
-    if expr == 0:
-        return sp.Integer(0)
-    num, den = sp.fraction(sp.together(expr))
-    num = sp.expand(num).subs(_TRIG_SUBS)
-    if num.atoms(sp.Function):
-        return None
-    gens = (*_SC, *sorted(num.free_symbols - set(_SC), key=str))
-    _, rem = sp.reduced(
-        num, [_SC[i] ** 2 + _SC[i + 3] ** 2 - 1 for i in range(3)], *gens, order="lex"
-    )
-    back = {v: k for k, v in _TRIG_SUBS.items()}
-    return sp.factor(sp.expand(rem).subs(back)) / den if rem != 0 else sp.Integer(0)
-
-
-def _is_zero(expr) -> bool:
-    """Exact test that ``expr`` vanishes identically (:func:`_normal_form`, else simplify)."""
-    nf = _normal_form(expr)
-    if nf is None:
-        return sp.simplify(expr) == 0
-    return nf == 0
-
-
-def _parse_eq(text: str) -> tuple[sp.Expr, sp.Expr]:
-    if text.count("=") != 1:
-        raise ValueError(f"equation {text!r} must contain exactly one '='")
-    lhs, rhs = text.split("=")
-    return paper.parse(lhs), paper.parse(rhs)
-
-
-def _classify(printed: sp.Expr, derived: sp.Expr) -> str:
-    if printed.is_number and derived.is_number:
-        return "transcription"
-    if _is_zero(printed + derived):
-        return "sign"
-    if printed == 0 and derived != 0:
-        return "missing term"
-    return "transcription"
-
-
-def _sstr(e) -> str:
-    return sp.sstr(e)
-
-
-# --------------------------------------------------------------------------------------------
-# numeric samples for formulas with atan / acos (front-up: the paper's branch)
-# --------------------------------------------------------------------------------------------
-PROBES = np.array([[-100.0, 100.0, 600.0], [-200.0, -100.0, 700.0], [150.0, -250.0, 500.0]])
-"""Targets outside Table 4's first quadrant, where single-argument tan^-1 fails (mm)."""
-
-
-@cache
-def _samples() -> tuple[np.ndarray, np.ndarray]:
-    """(P, theta) front-up pairs: Table 4's reachable rows, :data:`PROBES`, 200 seeded targets."""
-    from analysis.audit.table4 import load_printed
-
-    arm = paper_arm()
-    t4 = load_printed()[["x_mm", "y_mm", "z_mm"]].astype(float).to_numpy()
-    rng = np.random.default_rng(2016)
-    q = np.column_stack(
-        [rng.uniform(-np.pi, np.pi, 200), rng.uniform(-1.4, 1.4, 200), rng.uniform(-2.9, -0.1, 200)]
-    )
-    P = np.vstack([t4, PROBES, arm.fk(q)])
-    sol = arm.solve(P, ("front-up",))
-    keep = sol.ok[:, 0]
-    return P[keep], sol.theta[keep, 0, :]
-
-
-def _angle_formula_error(lhs: sp.Expr, rhs: sp.Expr) -> tuple[np.ndarray, np.ndarray]:
-    """|wrapped lhs - rhs| [rad] over the samples, with the sample targets."""
-    P, th = _samples()
-    prm = paper_params()
-    syms = (*PXYZ, *TH, S["L1"], S["L2"], S["L3"])
-    args = (P[:, 0], P[:, 1], P[:, 2], th[:, 0], th[:, 1], th[:, 2], prm.L1, prm.L2, prm.L3)
-    with np.errstate(all="ignore"):
-        f = sp.lambdify(syms, lhs - rhs, "numpy")
-        d = np.asarray(f(*args), dtype=float) * np.ones(len(P))
-    d = np.abs(np.mod(d + np.pi, 2 * np.pi) - np.pi)
-    return np.where(np.isfinite(d), d, np.inf), P
-
-
-def _verify_angle(text: str) -> bool:
-    lhs, rhs = _parse_eq(text)
-    err, _ = _angle_formula_error(lhs, rhs)
-    return bool(np.all(err < ANGLE_TOL))
-
-
-def _verify_fk_identity(text: str) -> bool:
-    lhs, rhs = _parse_eq(text)
-    return _is_zero((lhs - rhs).subs(_fk_subs()))
-
-
-def _fmt_p(p) -> str:
-    return "(" + ", ".join(f"{v:g}" for v in p) + ")"
+__all__ = ["all_items"]
 
 
 # --------------------------------------------------------------------------------------------
@@ -238,7 +59,7 @@ def _matrix_items() -> list[Item]:
                 text = spec["rows"][i][j]
                 derived = M[i, j]
                 pe = paper.parse(text)
-                ok = _is_zero(pe - derived)
+                ok = is_zero(pe - derived)
                 loc = spec["location"] + (
                     f" {spec['names'][i][j]}" if name == "T3" else f" row {i + 1} col {j + 1}"
                 )
@@ -247,13 +68,13 @@ def _matrix_items() -> list[Item]:
                         id=f"{OWN_PREFIX}{name.replace('_', '-')}-r{i + 1}c{j + 1}",
                         location=loc,
                         printed=text,
-                        derived=_sstr(derived),
+                        derived=sstr(derived),
                         verdict="holds" if ok else "wrong",
                         evidence="simplify(printed - derived) = "
-                        + ("0" if ok else _sstr(sp.simplify(pe - derived))),
-                        kind="" if ok else _classify(pe, derived),
-                        corrected="" if ok else _sstr(derived),
-                        verify=lambda t, d=derived: _is_zero(paper.parse(t) - d),
+                        + ("0" if ok else sstr(sp.simplify(pe - derived))),
+                        kind="" if ok else classify(pe, derived),
+                        corrected="" if ok else sstr(derived),
+                        verify=lambda t, d=derived: is_zero(paper.parse(t) - d),
                     )
                 )
     return out
@@ -282,21 +103,21 @@ def _f_items() -> list[Item]:
         k = int(fname[2]) - 1
 
         def verify(text, k=k, members=members):
-            local = {**S, "ix": _IX[0], "iy": _IX[1], "iz": _IX[2]}
+            local = {**S, "ix": IX[0], "iy": IX[1], "iz": IX[2]}
             f = sp.parse_expr(text, local_dict=local)
             for m in members:
                 c = cols[m]
-                sub = dict(zip(_IX, (T[0, c], T[1, c], T[2, c]), strict=True))
-                if not _is_zero(f.subs(sub) - M[k, c]):
+                sub = dict(zip(IX, (T[0, c], T[1, c], T[2, c]), strict=True))
+                if not is_zero(f.subs(sub) - M[k, c]):
                     return False
             return True
 
         text = paper.F_FUNCTIONS[fname]
-        derived = " ; ".join(f"{fname}({m}) = {_sstr(M[k, cols[m]])}" for m in members)
+        derived = " ; ".join(f"{fname}({m}) = {sstr(M[k, cols[m]])}" for m in members)
         ok = verify(text)
         corrected = ""
         if not ok:  # the homogeneous coordinate w is 0 for n, o, a: drop the constant term
-            corrected = _sstr(sp.parse_expr(text, local_dict={**S, "iz": _IX[2]}).subs(S["L1"], 0))
+            corrected = sstr(sp.parse_expr(text, local_dict={**S, "iz": IX[2]}).subs(S["L1"], 0))
         iset = ", ".join(members)
         out.append(
             Item(
@@ -306,7 +127,7 @@ def _f_items() -> list[Item]:
                 derived=derived,
                 verdict="holds" if ok else "wrong",
                 evidence="A1^-1 T3 entry by entry"
-                + ("" if ok else f": {fname}(n) = {_sstr(M[k, 0])}, not {text}"),
+                + ("" if ok else f": {fname}(n) = {sstr(M[k, 0])}, not {text}"),
                 kind="" if ok else "missing term",
                 corrected=corrected,
                 verify=verify,
@@ -333,10 +154,10 @@ def _derived_eq_text(key: str) -> str:
     D = derived_matrices()
     P = sp.Matrix([*PXYZ, 1])
     if key == "eq5":
-        return f"{_sstr((D['A1inv'] * P)[2])} = 0"
+        return f"{sstr((D['A1inv'] * P)[2])} = 0"
     if key in ("eq13", "eq14"):
         row = 0 if key == "eq13" else 1
-        return f"{_sstr(sp.expand((D['eq12'] * P)[row]))} = 0"
+        return f"{sstr(sp.expand((D['eq12'] * P)[row]))} = 0"
     spec = paper.EQUATIONS[key]
     return f"{spec['lhs']} = {spec['rhs']}"
 
@@ -346,8 +167,8 @@ def _fk_eq_items() -> list[Item]:
     for key, kind in _FK_EQS.items():
         spec = paper.EQUATIONS[key]
         text = f"{spec['lhs']} = {spec['rhs']}"
-        lhs, rhs = _parse_eq(text)
-        residual = _normal_form((lhs - rhs).subs(_fk_subs()))
+        lhs, rhs = parse_eq(text)
+        residual = normal_form((lhs - rhs).subs(fk_subs()))
         ok = residual == 0
         derived = _derived_eq_text(key)
         out.append(
@@ -357,10 +178,10 @@ def _fk_eq_items() -> list[Item]:
                 printed=text,
                 derived=derived,
                 verdict="holds" if ok else "wrong",
-                evidence=f"with P = FK(theta) (eq. 2): lhs - rhs = {_sstr(residual)}",
+                evidence=f"with P = FK(theta) (eq. 2): lhs - rhs = {sstr(residual)}",
                 kind="" if ok else kind,
                 corrected="" if ok else derived,
-                verify=_verify_fk_identity,
+                verify=verify_fk_identity,
             )
         )
     return out
@@ -379,8 +200,8 @@ def _atan2_text(key: str) -> str:
 
 def _verify_phi(text: str) -> bool:
     """phi must satisfy Px = rho cos(phi), Py = rho sin(phi) (text before eq. 6)."""
-    _, rhs = _parse_eq(text)
-    P, _ = _samples()
+    _, rhs = parse_eq(text)
+    P, _ = samples()
     with np.errstate(all="ignore"):
         phi = np.asarray(sp.lambdify(PXYZ, rhs, "numpy")(P[:, 0], P[:, 1], P[:, 2]), dtype=float)
     rho = np.hypot(P[:, 0], P[:, 1])
@@ -404,19 +225,19 @@ def _angle_items() -> list[Item]:
         text = f"{spec['lhs']} = {spec['rhs']}"
         if key == "eq10":
             text = text.replace("p_z", "Pz")  # the lowercase p is its own item (paper-eq10-pz)
-        verify = _verify_phi if key == "eq6_phi" else _verify_angle
+        verify = _verify_phi if key == "eq6_phi" else verify_angle
         if key == "eq6_phi":
             ok = verify(text)
-            bad = None if ok else next(p for p in _samples()[0] if p[0] < 0)
+            bad = None if ok else next(p for p in samples()[0] if p[0] < 0)
         else:
-            lhs, rhs = _parse_eq(text)
-            err, P = _angle_formula_error(lhs, rhs)
+            lhs, rhs = parse_eq(text)
+            err, P = angle_formula_error(lhs, rhs)
             ok = bool(np.all(err < ANGLE_TOL))
             bad = None if ok else P[int(np.argmax(err >= ANGLE_TOL))]
         evidence = "holds at every sample (Table 4 rows, probes, 200 seeded targets)"
         if bad is not None:
             evidence = (
-                f"counterexample at target {_fmt_p(bad)} mm (front-up, the paper's branch): "
+                f"counterexample at target {fmt_p(bad)} mm (front-up, the paper's branch): "
                 + _counter(key, text, bad)
             )
         printed = (
@@ -443,7 +264,7 @@ def _angle_items() -> list[Item]:
 def _counter(key: str, text: str, p) -> str:
     arm = paper_arm()
     q = arm.ik(p)
-    _, rhs = _parse_eq(text)
+    _, rhs = parse_eq(text)
     prm = paper_params()
     val = float(
         rhs.subs(
@@ -466,16 +287,8 @@ def _counter(key: str, text: str, p) -> str:
     return f"printed formula gives {np.degrees(val):.2f} deg, the solution is {np.degrees(want):.2f} deg"  # noqa: E501
 
 
-def _stl_items() -> list[Item]:
-    from analysis.audit.grabber_stl import stl_items
-
-    return stl_items(Item)
-
-
 def all_items() -> list[Item]:
     """Every printed item with its computed verdict, in paper order (takes seconds)."""
-    from analysis.audit.grabber_text_checks import table_items, text_items
-
     return [
         *_matrix_items(),
         *_f_items(),
@@ -483,5 +296,5 @@ def all_items() -> list[Item]:
         *_angle_items(),
         *text_items(),
         *table_items(),
-        *_stl_items(),
+        *stl_items(Item),
     ]

@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from analysis.audit.grabber_items import verify_angle
 from analysis.audit.table4 import load_printed
 from analysis.kinematics.arm import Arm, paper_arm
 from analysis.kinematics.pulses import angles_to_pulses
@@ -309,9 +310,7 @@ def _figure5_atan(a: _Audit) -> None:
 
     def v_fig5_atan(text):
         if text.startswith("theta"):
-            from analysis.audit.grabber_checks import _verify_angle
-
-            return _verify_angle(text)
+            return verify_angle(text)
         return all(
             abs(stl.real(_run(text, VD100=num(p, q), VD110=den(p, q)), "VD114") - (q[1] + q[2]))
             < 1e-5

@@ -1,6 +1,6 @@
 """The text's claims and the tables of seed 000, held against their derivation.
 
-Part of :mod:`analysis.audit.grabber_checks` (which collects everything in
+Part of the grabber audit: :mod:`analysis.audit.grabber_checks` collects everything in
 :func:`~analysis.audit.grabber_checks.all_items`): eq. 4's label, the cross-references, the
 derivation's claims and the numbers of the running text (:func:`text_items`); Tables 1 and 3,
 the pulse equations and Table 4 (:func:`table_items`).
@@ -13,16 +13,16 @@ import re
 import numpy as np
 import sympy as sp
 
-from analysis.audit.grabber_checks import (
+from analysis.audit.grabber_items import (
     OWN_PREFIX,
     PXYZ,
     TH,
     Item,
     S,
-    _is_zero,
-    _samples,
-    _sstr,
     derived_matrices,
+    is_zero,
+    samples,
+    sstr,
 )
 from analysis.kinematics.params import data_dir, paper_params
 from analysis.kinematics.pulses import angles_to_pulses
@@ -48,7 +48,7 @@ def _label_items() -> list[Item]:
         if len(names) != 2:
             return False
         prod = D[f"A{names[0]}"] * D[f"A{names[1]}"]
-        return all(_is_zero(e) for e in (prod - eq4))
+        return all(is_zero(e) for e in (prod - eq4))
 
     claim = paper.TEXT_CLAIMS["eq4_label"]
     ok = verify_label(claim["printed"])
@@ -60,7 +60,7 @@ def _label_items() -> list[Item]:
             "A_2 A_3 =",
             "holds" if ok else "wrong",
             "the printed matrix equals A2*A3 entry by entry; A3*A3 differs (e.g. row 1 col 4 "
-            f"= {_sstr(sp.simplify((D['A3'] * D['A3'])[0, 3]))})",
+            f"= {sstr(sp.simplify((D['A3'] * D['A3'])[0, 3]))})",
             "" if ok else "label",
             "" if ok else "A_2 A_3 =",
             verify_label,
@@ -136,13 +136,13 @@ def _derivation_claim_items() -> list[Item]:
     rho, phi = sp.symbols("rho", positive=True), S["phi"]
     f13 = (D["A1inv"] * sp.Matrix([*PXYZ, 1]))[2]
     sub = f13.subs({S["Px"]: rho * sp.cos(phi), S["Py"]: rho * sp.sin(phi)})
-    ok = _is_zero(sub - rho * sp.sin(TH[0] - phi))
+    ok = is_zero(sub - rho * sp.sin(TH[0] - phi))
     out.append(
         Item(
             f"{OWN_PREFIX}theta1-two-solutions",
             paper.TEXT_CLAIMS["theta1_two_solutions"]["location"],
             paper.TEXT_CLAIMS["theta1_two_solutions"]["printed"],
-            f"f13(P) = {_sstr(sp.simplify(sub))} = rho sin(theta1 - phi)",
+            f"f13(P) = {sstr(sp.simplify(sub))} = rho sin(theta1 - phi)",
             "holds" if ok else "wrong",
             "from the derived f13(P) of eq. 3 (not from the printed eq. 5, which gives sin(theta1 + phi))",  # noqa: E501
             verify=lambda t: ok,
@@ -235,8 +235,8 @@ def _verify_table1_row(text: str, i: int) -> bool:
     return (
         sp.cos(alpha) == row["cos_alpha"]
         and sp.sin(alpha) == row["sin_alpha"]
-        and all(_is_zero(e) for e in (built - derived_matrices()[f"A{i}"]))
-        and all(_is_zero(e) for e in (built - paper.matrix(f"A{i}")))
+        and all(is_zero(e) for e in (built - derived_matrices()[f"A{i}"]))
+        and all(is_zero(e) for e in (built - paper.matrix(f"A{i}")))
     )
 
 
@@ -268,7 +268,7 @@ def _verify_pulse_eq(text: str) -> bool:
     if not m:
         return False
     full, ppr = float(m.group(1)), int(m.group(2))
-    _, th = _samples()
+    _, th = samples()
     deg = np.degrees(th[:9])
     c = np.copysign(np.floor(np.abs(deg / full * ppr) + 0.5), deg).astype(int)
     return ppr in paper_params().pulses_per_rev and np.array_equal(c, angles_to_pulses(th[:9], ppr))

@@ -23,6 +23,7 @@ from analysis.kinematics.arms import closed_form
 from analysis.kinematics.ops import Ops
 from analysis.kinematics.pulses import pulse_count, pulse_value
 from analysis.kinematics.status import Status
+from analysis.plc.approx import PlcFloat32Ops
 
 __all__ = ["PLC_TOL_MM", "Prediction", "predict", "program_body"]
 
@@ -88,8 +89,6 @@ def predict(
     ``Float32Ops()`` for ideal REAL arithmetic. Targets are rounded to float32 first,
     as writing them into REAL double words does.
     """
-    from analysis.plc.approx import PlcFloat32Ops
-
     cf = closed_form(params.description.closed_form)
     branch = branch or cf.BRANCHES[0]
     m = ops if ops is not None else PlcFloat32Ops("s7-200")

@@ -29,6 +29,8 @@ from analysis.kinematics.ops import numpy_ops
 from analysis.kinematics.pulses import angles_to_pulses, pulse_value
 from analysis.kinematics.status import Status
 from analysis.paths import data_dir
+from analysis.plc.approx import PlcFloat32Ops
+from analysis.plc.model import predict
 from analysis.plc.runner import RunResult
 
 __all__ = [
@@ -246,9 +248,6 @@ def compare(
     the two counts are one revolution apart and the exact value lies within float32 error of
     +-ppr/2 (the wrap cut of theta1/theta2). Errors before ROUND are taken modulo one revolution.
     """
-    from analysis.plc.approx import PlcFloat32Ops
-    from analysis.plc.model import predict
-
     branch = branch or arm.branches[0]
     rounding = "half-away" if dialect == "s7-200" else "half-even"
     xyz = targets[["x_mm", "y_mm", "z_mm"]].to_numpy(dtype=float)

@@ -2,21 +2,11 @@
 
 from __future__ import annotations
 
-import errno
 import os
 
 __all__ = ["InputError", "OutputError", "PathLike"]
 
 PathLike = str | os.PathLike[str]
-
-# errno values a write to an already open file can fail with; an OSError with one of these
-# raised inside an atomic_writer block is reported as "cannot write <output>".
-_WRITE_ERRNOS = frozenset(
-    code
-    for code in (errno.ENOSPC, errno.EFBIG, errno.EIO, getattr(errno, "EDQUOT", None))
-    if code is not None
-)
-_SHOW = 40  # characters of a cell value quoted in a message
 
 
 def _one_line(text: str) -> str:

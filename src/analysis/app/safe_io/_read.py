@@ -11,9 +11,11 @@ from typing import IO, Any
 import numpy as np
 import numpy.typing as npt
 
-from analysis.app.safe_io._errors import _SHOW, InputError, PathLike
+from analysis.app.safe_io._errors import InputError, PathLike
 
 __all__ = ["iter_table_chunks", "read_table"]
+
+_SHOW = 40  # characters of a cell value quoted in a message
 
 
 def _show(value: str) -> str:

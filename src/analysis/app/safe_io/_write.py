@@ -13,9 +13,17 @@ from collections.abc import Iterable, Iterator, Mapping, Sequence
 from pathlib import Path
 from typing import IO, Any
 
-from analysis.app.safe_io._errors import _WRITE_ERRNOS, OutputError, PathLike
+from analysis.app.safe_io._errors import OutputError, PathLike
 
 __all__ = ["atomic_writer", "check_paths", "write_many_atomic", "write_text_atomic"]
+
+# errno values a write to an already open file can fail with; an OSError with one of these
+# raised inside an atomic_writer block is reported as "cannot write <output>".
+_WRITE_ERRNOS = frozenset(
+    code
+    for code in (errno.ENOSPC, errno.EFBIG, errno.EIO, getattr(errno, "EDQUOT", None))
+    if code is not None
+)
 
 
 def _cannot_write(path: PathLike, exc: OSError) -> OutputError:
