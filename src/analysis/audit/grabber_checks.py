@@ -188,7 +188,7 @@ def _fk_eq_items() -> list[Item]:
 
 
 def _atan2_text(key: str) -> str:
-    num, den = paper._NUM, paper._DEN
+    num, den = paper.EQ18_NUM, paper.EQ18_DEN
     return {
         "eq6_phi": "phi = atan2(Py, Px)",
         "eq6": "theta1 = atan2(Py, Px)",

@@ -321,7 +321,7 @@ def _figure5_atan(a: _Audit) -> None:
         "fig5-atan",
         "Figure 5",
         "MOVR VD100, VD114; /R VD110, VD114; CALL ARCTAN, VD114, VD114",
-        f"theta2 + theta3 = atan2({paper._NUM}, {paper._DEN})",
+        f"theta2 + theta3 = atan2({paper.EQ18_NUM}, {paper.EQ18_DEN})",
         "branch/quadrant",
         v_fig5_atan,
         f"Table 4 row 1: ARCTAN(num/den) = {np.degrees(np.arctan(num(P[0], Q[0]) / den(P[0], Q[0]))):.2f} deg, "  # noqa: E501
