@@ -90,9 +90,11 @@ def _targets() -> np.ndarray:
 
 @cache
 def _values() -> dict[str, np.ndarray]:
-    """Per target: the inputs, the lengths (primed = unprimed, sec. 3), L4' by eq. 2, the
-    triangle angles alpha1, beta1, the elevation of the shoulder-wrist line (from the
-    forward kinematics of the shared solver's angles) and those angles theta1..theta4."""
+    """Per target: the inputs, the lengths (primed = unprimed, sec. 3), and, measured on the
+    forward kinematics of the shared solver's angles (theta1..theta4, also returned): the
+    shoulder-wrist distance L4 (= L4'; eq. 2 is held against it in pal-eq2-holds), the
+    included elbow angle beta1, the elevation of the shoulder-wrist line; alpha1 by the law
+    of cosines from that L4 (not in dispute)."""
     arm = _arm()
     G = _targets()
     L1, L2, L3, h = chk.lengths(arm)
@@ -153,7 +155,7 @@ def _safe(fn):
     def wrapped(text: str) -> bool:
         try:
             return bool(fn(text))
-        except (ValueError, TypeError, ZeroDivisionError, AttributeError, KeyError):
+        except Exception:  # a text the predicate cannot read is not a right text
             return False
 
     return wrapped

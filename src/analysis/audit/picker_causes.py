@@ -45,7 +45,7 @@ def _safe(fn):
     def wrapped(text: str) -> bool:
         try:
             return bool(fn(text))
-        except (ValueError, TypeError, KeyError, IndexError, AttributeError):
+        except Exception:  # a text the predicate cannot read is not a right text
             return False
 
     return wrapped
