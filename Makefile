@@ -10,7 +10,7 @@ STAMP  := $(VENV)/.installed
 NB_BACKEND := module://matplotlib_inline.backend_inline
 export PYTHONHASHSEED := 0
 
-.PHONY: all venv test test-fast report bench lab lint clean
+.PHONY: all venv test test-fast test-browser report bench lab lint clean
 
 all: test
 
@@ -25,21 +25,38 @@ $(STAMP): requirements.lock pyproject.toml
 	$(PY) -m ipykernel install --sys-prefix --name python3 --display-name "Python 3 (analysis)" >/dev/null
 	@touch $(STAMP)
 
-# The whole suite: unit, property and cross-check tests, then every notebook under nbval.
+# The whole suite: unit, property and cross-check tests, then every notebook under nbval,
+# then the report site in a browser.
 # tests/nbval_kernel.py starts the notebook kernels over IPC (no TCP port race between the
 # xdist workers), retries a kernel that dies at start-up and keeps each kernel's stderr in
 # build/nbval-kernel-logs/.
+# tests/browser builds the site once (every notebook executed) and checks it in Debian's
+# /usr/bin/chromium; without it those tests are skipped, saying why.
 test: $(STAMP)
-	MPLBACKEND=Agg $(PY) -m pytest -n 2 tests
+	MPLBACKEND=Agg $(PY) -m pytest -n 2 tests --ignore=tests/browser --doctest-modules src
 	MPLBACKEND=$(NB_BACKEND) $(PY) -m pytest -p tests.nbval_kernel -n 2 --dist loadfile --nbval --nbval-sanitize-with tests/nbval_sanitize.cfg notebooks
+	MPLBACKEND=Agg $(PY) -m pytest tests/browser
 
 test-fast: $(STAMP)
-	$(PY) -m pytest -n 2 -x tests
+	$(PY) -m pytest -n 2 -x tests --ignore=tests/browser
 
+# The browser tests against build/report as `make report` left it (no rebuild).
+test-browser: $(STAMP)
+	ANALYSIS_SITE_DIR=build/report MPLBACKEND=Agg $(PY) -m pytest tests/browser
+
+# Executes every notebook (progress: notebook i/n, seconds) and builds the site with Sphinx.
 report: $(STAMP)
 	MPLBACKEND=$(NB_BACKEND) $(PY) -m analysis report --out build/report
 
-bench: $(STAMP)
+# The bench extra (numexpr, EAIK and what EAIK needs) is pinned in requirements-bench.lock
+# and installed only here: none of it is a runtime dependency.
+BENCH_STAMP := $(VENV)/.bench-installed
+
+$(BENCH_STAMP): $(STAMP) requirements-bench.lock
+	$(PY) -m pip install --quiet --no-deps -r requirements-bench.lock
+	@touch $(BENCH_STAMP)
+
+bench: $(BENCH_STAMP)
 	$(PY) benchmarks/run.py --out build/bench.json
 
 lab: $(STAMP)

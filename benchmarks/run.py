@@ -1,267 +1,294 @@
-"""Throughput of this project's batch kinematics against per-point peers (``make bench``).
+"""``make bench``: the derived kinematics against peers, measured in one process.
 
-All measurements run in one process, one after the other, on the same seeded data:
+Every case runs on the same seeded data, in interleaved rounds (case A, B, C, ..., then
+again), and the median of the rounds is kept, so a burst of load hits every case alike.
+Rates are targets (or configurations) per second of wall time. Nothing here asserts: the
+targets of issue 14 are checked by reading ``build/bench.json`` (``"targets"``), quoted with
+the machine's load average.
 
-- ours: ``analysis.kinematics.arm.Arm`` (numpy) and ``analysis.kinematics.fastik`` (Numba, both
-cores), batch
-  calls over ``--n`` points;
-- peers: a per-point loop over Pinocchio's ``framesForwardKinematics``
-  (``analysis.kinematics.pinocchio_model.PinocchioArm``) and a per-point loop of the same closed
-  form (eqs. 2, 6-19) in plain Python ``math``, over ``--n-peer`` points.
+Cases
+-----
+IK, all four branches, targets uniform in the reachable shell (every target solved):
+``compiled`` (``Arm.solve(backend="compiled")``, generated from the closed form),
+``compiled_out`` (the same with preallocated ``out=`` buffers), ``kernel`` (the generated
+kernel alone on preallocated arrays), ``numpy`` (``Arm.solve``), and the peers
+``handfused`` (this project's hand-written Numba kernel before the one-source design),
+``numexpr15`` and ``numpy15`` (the 15-line closed form a user would write), ``eaik``
+(EAIK's batched analytical IK, on fewer targets), and ``ceiling`` (a generated kernel doing
+only the IK's 4 atan2 and 3 sqrt per target: the fastest any kernel with these calls can be).
+FK: ``fk_compiled``, ``fk_numpy``, ``fk_pinocchio`` (per-configuration loop, fewer
+configurations) and ``fk_ceiling`` (only the 6 sin/cos per configuration).
+Cold calls: the first compiled call after a second of idling, with fresh outputs and with
+``out=``, against the warm median. CLI: ``python -m analysis ik 100 100 600 --json`` as a
+whole process, median of 5. Vectorization: packed (ymm/zmm) divide and square-root
+instructions counted in the IK kernel's assembly.
 
-Each rate is the best of ``--repeat`` timed runs (after one warm-up call that also
-JIT-compiles), in points per second. Writes a JSON list of
-``{"name", "ours_per_s", "peer", "peer_per_s", "ratio"}`` (ratio = ours / peer) plus
-``"extra"`` details, and prints a table. Benchmarks are not tests: nothing here asserts.
-
-Usage: ``python benchmarks/run.py --out build/bench.json [--n 2000000] [--n-peer 20000]``
+Usage: ``python benchmarks/run.py --out build/bench.json [--n 2000000] [--rounds 4]``
 """
 
 from __future__ import annotations
 
 import argparse
 import json
-import math
 import os
 import platform
+import re
+import statistics
+import subprocess
 import sys
 import time
 from pathlib import Path
 
 import numpy as np
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "src"))
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
 
-from analysis.kinematics import fastik
-from analysis.kinematics.arm import paper_arm
-from analysis.kinematics.pinocchio_model import PinocchioArm
-from analysis.kinematics.pulses import angles_to_pulses, pulses_to_angles
-from analysis.studies import workspace as W
+import handfused  # noqa: E402 - the peer kernel lives beside this script
+import peers  # noqa: E402
 
-CPU_RATES: dict[int, float] = {}  # id(fn) -> points per CPU-second (all threads summed)
+from analysis.kinematics import compiled  # noqa: E402
+from analysis.kinematics.arm import paper_arm  # noqa: E402
+from analysis.kinematics.pinocchio_model import PinocchioArm  # noqa: E402
+from analysis.studies import workspace as W  # noqa: E402
 
 
-def best_rate(fn, n: int, repeat: int) -> float:
-    """Points per wall-clock second of ``fn()`` over ``n`` points: best of ``repeat`` runs
-    after a warm-up. Also records points per CPU-second (``time.process_time``, summed over
-    threads) in ``CPU_RATES``: on a loaded machine wall time inflates, CPU time much less."""
-    fn()
-    best, best_cpu = math.inf, math.inf
-    for _ in range(repeat):
-        c0, t0 = time.process_time(), time.perf_counter()
+def _optional(name: str):
+    try:
+        return __import__(name)
+    except ImportError:
+        return None
+
+
+def interleaved(cases: dict, rounds: int) -> dict[str, float]:
+    """Median seconds per case over ``rounds`` interleaved rounds (after one warm-up each)."""
+    for fn, _ in cases.values():
         fn()
-        best = min(best, time.perf_counter() - t0)
-        best_cpu = min(best_cpu, time.process_time() - c0)
-    CPU_RATES[id(fn)] = n / best_cpu if best_cpu > 0 else math.inf
-    return n / best
+    times: dict[str, list[float]] = {k: [] for k in cases}
+    for _ in range(rounds):
+        for k, (fn, _) in cases.items():
+            t0 = time.perf_counter()
+            fn()
+            times[k].append(time.perf_counter() - t0)
+    return {k: statistics.median(v) for k, v in times.items()}
 
 
-def python_fk(L1, L2, L3, qs):
-    """Per-point FK (eq. 2's P column) in plain Python ``math``: the loop peer."""
-    out = []
-    cos, sin = math.cos, math.sin
-    for t1, t2, t3 in qs:
-        r = L2 * cos(t2) + L3 * cos(t2 + t3)
-        out.append((cos(t1) * r, sin(t1) * r, L1 + L2 * sin(t2) + L3 * sin(t2 + t3)))
-    return out
+def packed_instructions(kern) -> dict:
+    """Count packed divide/sqrt instructions on ymm/zmm registers in a kernel's assembly.
+
+    The cached dispatcher cannot show its assembly, so the same generated source is
+    compiled once more, uncached, and inspected after a call."""
+    import importlib.util
+    import tempfile
+
+    text = compiled.module_text(kern.source).replace("cache=True", "cache=False")
+    with tempfile.TemporaryDirectory() as tmp:
+        path = Path(tmp) / "kernel_inspect.py"
+        path.write_text(text)
+        spec = importlib.util.spec_from_file_location("kernel_inspect", path)
+        mod = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(mod)
+        k = len(kern.arrays)
+        args = [np.ones(8) for _ in range(k)] + [1.0] * len(kern.scalars)
+        outs = [np.empty(8, {"f8": float, "i1": np.int8, "b1": bool, "i8": np.int64}[d])
+                for d in kern.outputs.values()]  # fmt: skip
+        mod.kernel(8, *args, *outs)
+        asm = "\n".join(mod.kernel.inspect_asm().values())
+    count = {
+        op: len(re.findall(rf"\b{op}\s+%[yz]mm", asm)) for op in ("vdivpd", "vsqrtpd", "vmulpd")
+    }
+    count["scalar_divsd"] = len(re.findall(r"\bv?divsd\b", asm))
+    count["zmm"] = "zmm" in asm
+    return count
 
 
-def python_ik_all(L1, L2, L3, pts, tol=1e-6):
-    """Per-point corrected IK, all four branches, in plain Python ``math`` (same closed form)."""
-    out = []
-    pi = math.pi
-    for x, y, pz in pts:
-        z = pz - L1
-        rho = math.hypot(x, y)
-        D = math.hypot(rho, z)
-        if rho <= tol or D - (L2 + L3) > tol or abs(L2 - L3) - D > tol:
-            out.append(None)
-            continue
-        phi = math.atan2(y, x)
-        c3 = max(-1.0, min(1.0, (D * D - L2 * L2 - L3 * L3) / (2 * L2 * L3)))
-        t3m = math.acos(c3)
-        sols = []
-        for rs, us in ((1.0, 1.0), (1.0, -1.0), (-1.0, 1.0), (-1.0, -1.0)):
-            r = rs * rho
-            t3 = -us * rs * t3m
-            k = L2 * math.cos(t3) + L3
-            s = L2 * math.sin(t3)
-            t23 = math.atan2(z * k + r * s, r * k - z * s)
-            t1 = phi if rs > 0 else phi + pi
-            sols.append(((t1 + pi) % (2 * pi) - pi, (t23 - t3 + pi) % (2 * pi) - pi, t3))
-        out.append(sols)
-    return out
+def cli_seconds(runs: int = 5) -> float:
+    cmd = [sys.executable, "-m", "analysis", "ik", "100", "100", "600", "--json"]
+    times = []
+    for _ in range(runs):
+        t0 = time.perf_counter()
+        subprocess.run(cmd, check=True, capture_output=True)
+        times.append(time.perf_counter() - t0)
+    return statistics.median(times)
 
 
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--out", default="build/bench.json", help="JSON output file")
-    ap.add_argument("--n", type=int, default=2_000_000, help="points per batch call")
-    ap.add_argument("--n-peer", type=int, default=20_000, help="points per per-point peer loop")
-    ap.add_argument(
-        "--repeat", type=int, default=5, help="timed runs per measurement (best is kept)"
-    )
+    ap.add_argument("--n", type=int, default=2_000_000, help="targets per batch call")
+    ap.add_argument("--n-peer", type=int, default=20_000, help="targets for per-point peers")
+    ap.add_argument("--rounds", type=int, default=4, help="interleaved rounds (median kept)")
     args = ap.parse_args(argv)
-    if args.n <= 0 or args.n_peer <= 0 or args.repeat <= 0:
-        print("--n, --n-peer and --repeat must be positive", file=sys.stderr)
+    if min(args.n, args.n_peer, args.rounds) <= 0:
+        print("--n, --n-peer and --rounds must be positive", file=sys.stderr)
         return 2
-
+    load_before = os.getloadavg()
     arm = paper_arm()
-    P = arm.params
-    L1, L2, L3 = P.L1, P.L2, P.L3
+    L1, L2, L3 = (arm.params[k] for k in ("L1", "L2", "L3"))
     rng = np.random.default_rng(20161)
-    q = rng.uniform(-np.pi, np.pi, (args.n, 3))
-    # IK targets: uniform in the reachable shell (every target solved: the hard case) and
-    # uniform in the shell's bounding cube (about 52 % reachable; the rest exit early)
     p = W.sample_shell(arm, args.n, rng)
-    p_box = W.sample_box(arm, args.n, rng)
-    q_peer, p_peer, pb_peer = q[: args.n_peer], p[: args.n_peer], p_box[: args.n_peer]
-    q_list, p_list, pb_list = q_peer.tolist(), p_peer.tolist(), pb_peer.tolist()
-    pin_arm = PinocchioArm(P.dh_table())
-    n_map = min(1_000_000, args.n)  # the issue's map size (fewer only with a small --n)
-    p_map = p[:n_map]  # all in the reachable shell
+    q = rng.uniform(-np.pi, np.pi, (args.n, 3))
+    n_peer = min(args.n_peer, args.n)
+    names = arm.branches
+    out = compiled.allocate(arm.n_joints, (args.n,), names)
+    kern = compiled.ik_kernel("grabber", tuple(arm.params), names, ())
+    raw_out = [np.empty(args.n, np.int8), np.empty(args.n)]
+    raw_out += [np.empty(args.n, bool) for _ in names] + [np.empty(args.n) for _ in range(12)]
+    scal = [*arm.params.values(), 1e-6]
+    ceil_ik = compiled.build(
+        lambda m, v: {
+            "r": m.atan2(v["y"], v["x"])
+            + m.atan2(v["z"], v["x"])
+            + m.atan2(v["y"], v["z"])
+            + m.atan2(v["z"], v["y"])
+            + m.sqrt(v["x"])
+            + m.sqrt(v["y"])
+            + m.sqrt(v["z"])
+        },
+        ("x", "y", "z"),
+        (),
+        {"r": "f8"},
+    )
+    ceil_fk = compiled.build(
+        lambda m, v: {"r": sum(m.sin(v[k]) + m.cos(v[k]) for k in "abc")},
+        ("a", "b", "c"),
+        (),
+        {"r": "f8"},
+    )
+    p_abs = np.abs(p)
+    r_ik, r_fk = np.empty(args.n), np.empty(args.n)
+    fk_out = compiled.allocate_points((args.n,))
+    pin_arm = PinocchioArm(arm.table)
+    ne = _optional("numexpr")
+    eaik = _optional("eaik")
 
-    def numpy_quant_map():
-        sol = arm.solve(p_map, ("front-up",))
-        ok = sol.ok[..., 0]
-        qq = sol.theta[ok, 0, :]
-        c = angles_to_pulses(qq)
-        return np.linalg.norm(arm.fk(pulses_to_angles(c)) - p_map[ok], axis=-1)
-
-    cpu: dict[str, float] = {}
-
-    def rate(key, fn, n):
-        r = best_rate(fn, n, args.repeat)
-        cpu[key] = CPU_RATES[id(fn)]
-        return r
-
-    rates = {
-        "pinocchio_fk_loop": rate("pinocchio_fk_loop", lambda: pin_arm.fk(q_peer), args.n_peer),
-        "python_fk_loop": rate(
-            "python_fk_loop", lambda: python_fk(L1, L2, L3, q_list), args.n_peer
-        ),
-        "python_ik_loop": rate(
-            "python_ik_loop", lambda: python_ik_all(L1, L2, L3, p_list), args.n_peer
-        ),
-        "numpy_fk": rate("numpy_fk", lambda: arm.fk(q), args.n),
-        "numba_fk": rate("numba_fk", lambda: fastik.fk(arm, q), args.n),
-        "numpy_ik": rate("numpy_ik", lambda: arm.solve(p), args.n),
-        "numba_ik": rate("numba_ik", lambda: fastik.solve_all(arm, p), args.n),
-        "python_ik_loop_box": rate(
-            "python_ik_loop_box", lambda: python_ik_all(L1, L2, L3, pb_list), args.n_peer
-        ),
-        "numpy_ik_box": rate("numpy_ik_box", lambda: arm.solve(p_box), args.n),
-        "numba_ik_box": rate("numba_ik_box", lambda: fastik.solve_all(arm, p_box), args.n),
-        "numpy_quant": rate("numpy_quant", numpy_quant_map, n_map),
-        "numba_quant": rate("numba_quant", lambda: fastik.ik_front_up_pulses(arm, p_map), n_map),
+    ik_cases = {
+        "compiled": (lambda: arm.solve(p, backend="compiled"), args.n),
+        "compiled_out": (lambda: arm.solve(p, backend="compiled", out=out), args.n),
+        "kernel": (lambda: kern.run(p, scal, raw_out), args.n),
+        "numpy": (lambda: arm.solve(p), args.n),
+        "handfused": (lambda: handfused.solve_all(arm, p), args.n),
+        "numpy15": (lambda: peers.numpy15(p, L1, L2, L3), args.n),
+        "ceiling": (lambda: ceil_ik.run(p_abs, [], [r_ik]), args.n),
     }
-    shell, box = "targets in the reachable shell", "targets in the bounding cube"
-    rows = [
-        (
-            "batch FK, numba (analysis.kinematics.fastik.fk)",
-            "numba_fk",
-            "Pinocchio FK per-point loop",
-            "pinocchio_fk_loop",
-        ),
-        (
-            "batch FK, numpy (analysis.kinematics.arm.Arm.fk)",
-            "numpy_fk",
-            "Pinocchio FK per-point loop",
-            "pinocchio_fk_loop",
-        ),
-        (
-            "batch FK, numba (analysis.kinematics.fastik.fk)",
-            "numba_fk",
-            "plain-Python math FK loop",
-            "python_fk_loop",
-        ),
-        (
-            f"batch IK 4 branches, numba (fastik.solve_all), {shell}",
-            "numba_ik",
-            "plain-Python math IK loop",
-            "python_ik_loop",
-        ),
-        (
-            f"batch IK 4 branches, numpy (Arm.solve), {shell}",
-            "numpy_ik",
-            "plain-Python math IK loop",
-            "python_ik_loop",
-        ),
-        (
-            f"batch IK 4 branches, numba (fastik.solve_all), {shell}",
-            "numba_ik",
-            "numpy Arm.solve (same run)",
-            "numpy_ik",
-        ),
-        (
-            f"batch IK 4 branches, numba (fastik.solve_all), {box}",
-            "numba_ik_box",
-            "plain-Python math IK loop",
-            "python_ik_loop_box",
-        ),
-        (
-            f"batch IK 4 branches, numpy (Arm.solve), {box}",
-            "numpy_ik_box",
-            "plain-Python math IK loop",
-            "python_ik_loop_box",
-        ),
-        (
-            f"quantization map {n_map:.0e} targets, numba (fastik.ik_front_up_pulses)",
-            "numba_quant",
-            "numpy pipeline (Arm.solve, angles_to_pulses, Arm.fk)",
-            "numpy_quant",
-        ),
-    ]
-    out = [
-        {
-            "name": name,
-            "ours_per_s": rates[ours],
-            "peer": peer,
-            "peer_per_s": rates[pk],
-            "ratio": rates[ours] / rates[pk],
-            "ours_per_cpu_s": cpu[ours],
-            "peer_per_cpu_s": cpu[pk],
-            "cpu_ratio": cpu[ours] / cpu[pk],
-        }
-        for name, ours, peer, pk in rows
-    ]
-    extra = {
-        "name": "environment and absolute times",
-        "ours_per_s": rates["numba_quant"],
-        "peer": "-",
-        "peer_per_s": None,
-        "ratio": None,
-        "quant_map_targets": n_map,
-        "quant_map_seconds_numba": n_map / rates["numba_quant"],
-        "quant_map_seconds_numpy": n_map / rates["numpy_quant"],
+    if ne is not None:
+        ik_cases["numexpr15"] = (lambda: peers.numexpr15(p, L1, L2, L3), args.n)
+    if eaik is not None:
+        robot = peers.eaik_robot(L1, L2, L3)
+        poses = [robot.fwdKin(x) for x in q[:n_peer]]
+        ik_cases["eaik"] = (lambda: robot.IK_batched(poses), n_peer)
+    fk_cases = {
+        "fk_compiled": (lambda: compiled.fk(arm, q, out=fk_out), args.n),
+        "fk_numpy": (lambda: arm.fk(q), args.n),
+        "fk_pinocchio": (lambda: pin_arm.fk(q[:n_peer]), n_peer),
+        "fk_ceiling": (lambda: ceil_fk.run(q, [], [r_fk]), args.n),
+    }
+    med = interleaved({**ik_cases, **fk_cases}, args.rounds)
+    rate = {k: n / med[k] for k, (_, n) in {**ik_cases, **fk_cases}.items()}
+
+    # cold calls: after a second of idling, fresh outputs and out= buffers
+    cold = {}
+    for key, fn in (
+        ("compiled", lambda: arm.solve(p, backend="compiled")),
+        ("compiled_out", lambda: arm.solve(p, backend="compiled", out=out)),
+    ):
+        times = []
+        for _ in range(3):
+            time.sleep(1.0)
+            t0 = time.perf_counter()
+            fn()
+            times.append(time.perf_counter() - t0)
+        cold[key] = args.n / statistics.median(times)
+    cli = cli_seconds()
+    vec = packed_instructions(kern)
+    load_after = os.getloadavg()
+
+    def ratio(a, b):
+        return rate[a] / rate[b] if a in rate and b in rate else None
+
+    targets = {
+        "IK 4 branches >= 60 M/s (compiled_out)": (rate["compiled_out"] / 1e6, 60.0),
+        "IK >= 12 x numexpr": (ratio("compiled_out", "numexpr15"), 12.0),
+        "IK >= 0.9 x the hand-fused kernel": (ratio("compiled", "handfused"), 0.9),
+        "FK >= 0.9 x its ceiling": (ratio("fk_compiled", "fk_ceiling"), 0.9),
+        "FK >= 10 x a per-point Pinocchio loop": (ratio("fk_compiled", "fk_pinocchio"), 10.0),
+        "cold call within 1.5 x warm (out=)": (rate["compiled_out"] / cold["compiled_out"], 1.5),
+        "cold call within 1.5 x warm (fresh outputs)": (rate["compiled"] / cold["compiled"], 1.5),
+        "public API within 1.25 x its kernel": (ratio("kernel", "compiled_out"), 1.25),
+        "CLI answers in < 0.3 s": (cli, 0.3),
+    }
+    doc = {
+        "rates_per_s": rate,
+        "cold_rates_per_s": cold,
+        "ratios": {
+            "compiled / handfused": ratio("compiled", "handfused"),
+            "compiled_out / numexpr15": ratio("compiled_out", "numexpr15"),
+            "compiled_out / numpy15": ratio("compiled_out", "numpy15"),
+            "compiled_out / eaik": ratio("compiled_out", "eaik"),
+            "compiled_out / ceiling": ratio("compiled_out", "ceiling"),
+            "kernel / compiled_out": ratio("kernel", "compiled_out"),
+            "numpy / numpy15": ratio("numpy", "numpy15"),
+            "fk_compiled / fk_ceiling": ratio("fk_compiled", "fk_ceiling"),
+            "fk_compiled / fk_pinocchio": ratio("fk_compiled", "fk_pinocchio"),
+            "warm / cold (out=)": rate["compiled_out"] / cold["compiled_out"],
+            "warm / cold (fresh)": rate["compiled"] / cold["compiled"],
+        },
+        "targets": {k: _verdict(k, v, lim) for k, (v, lim) in targets.items()},
+        "cli_seconds_median_of_5": cli,
+        "vectorization": vec,
+        "machine": {
+            "cpu_count": os.cpu_count(),
+            "threads": compiled.threads(),
+            "python": platform.python_version(),
+            "numpy": np.__version__,
+            "load_average_before": load_before,
+            "load_average_after": load_after,
+        },
         "n": args.n,
-        "n_peer": args.n_peer,
-        "repeat": args.repeat,
-        "cpu_count": os.cpu_count(),
-        "numba_threads": fastik.numba.get_num_threads() if fastik.HAVE_NUMBA else 0,
-        "python": platform.python_version(),
-        "numpy": np.__version__,
-        "load_average_1min": os.getloadavg()[0],
+        "n_peer": n_peer,
+        "rounds": args.rounds,
     }
-    out.append(extra)
     path = Path(args.out)
     path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text(json.dumps(out, indent=2) + "\n")
-    width = max(len(r["name"]) for r in out[:-1])
-    for r in out[:-1]:
-        ours, peer = f"{r['ours_per_s']:>12.4g}/s", f"{r['peer_per_s']:>11.4g}/s"
-        print(
-            f"{r['name']:<{width}}  {ours}  vs {r['peer']:<30} {peer}  x{r['ratio']:.1f}"
-            f"  (CPU-time ratio x{r['cpu_ratio']:.1f})"
-        )
-    print(
-        f"quantization map over {n_map:.0e} targets: "
-        f"{extra['quant_map_seconds_numba']:.3f} s (numba), "
-        f"{extra['quant_map_seconds_numpy']:.3f} s (numpy); "
-        f"load average {extra['load_average_1min']:.2f}"
-    )
-    print(f"wrote {path}")
+    path.write_text(json.dumps(doc, indent=2) + "\n")
+    for k in sorted(rate, key=lambda k: -rate[k]):
+        print(f"{k:<14} {rate[k] / 1e6:10.2f} M/s")
+    for k, t in doc["targets"].items():
+        v = t["value"]
+        print(f"{'met ' if t['met'] else 'MISS'} {k}: {v if v is None else round(v, 3)}")
+    print(f"load {load_before[0]:.2f} -> {load_after[0]:.2f}; wrote {path}")
+    _plot(doc, path.with_suffix(".svg"))
     return 0
+
+
+def _verdict(name: str, value, limit) -> dict:
+    """A target is an upper bound if its name says "<" or "within", else a lower bound."""
+    upper = "<" in name or "within" in name
+    met = value is not None and (value <= limit if upper else value >= limit)
+    return {"value": value, "limit": limit, "met": met}
+
+
+def _plot(doc: dict, path: Path) -> None:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    rates = doc["rates_per_s"]
+    ik = [k for k in rates if not k.startswith("fk")]
+    fk = [k for k in rates if k.startswith("fk")]
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+    for ax, keys, title in ((axes[0], ik, "IK, 4 branches"), (axes[1], fk, "FK")):
+        keys = sorted(keys, key=lambda k: rates[k])
+        ax.barh(keys, [rates[k] / 1e6 for k in keys], color="C0")
+        ax.set_xscale("log")
+        ax.set_xlabel("million per second (log)")
+        ax.set_title(title)
+    load = doc["machine"]["load_average_before"][0]
+    fig.suptitle(f"make bench: {doc['machine']['cpu_count']} cores, load {load:.2f}")
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)
 
 
 if __name__ == "__main__":

@@ -172,3 +172,13 @@ def assert_sym_equal(actual: sp.Matrix, desired: sp.Matrix, name: str = "matrix"
     assert not bad, f"{name}: entries differ (row, col, actual, desired):\n" + "\n".join(
         map(str, bad)
     )
+
+
+def seed_file(name: str):
+    """A seed paper's text extraction, which lives outside the repository: in
+    ``$ANALYSIS_SEEDS`` or ``../shared/seeds`` beside the checkout (tests skip without it)."""
+    import os
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[1]
+    return Path(os.environ.get("ANALYSIS_SEEDS", root.parent / "shared" / "seeds")) / name

@@ -1,4 +1,4 @@
-"""The command line contract of design.md: outputs, exit status 2 and one-line reasons."""
+"""The command line contract (README): outputs, exit status 2 and one-line reasons."""
 
 from __future__ import annotations
 

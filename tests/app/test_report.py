@@ -1,10 +1,19 @@
-"""The report builder executes notebooks, exports HTML and collects the saved figures."""
+"""The report builder executes notebooks, collects their figures and builds the Sphinx site."""
 
 from __future__ import annotations
 
-import nbformat
+import json
+import re
+import time
+from pathlib import Path
 
-from analysis.app.report import build_report, notebook_paths
+import nbformat
+import pytest
+
+from analysis.app.report import NotebookFailed, build_report, execute_notebook, notebook_paths
+
+# sphinx-book-theme 1.4 still touches an attribute Sphinx 11 will remove
+pytestmark = pytest.mark.filterwarnings("ignore:.*HandleFootnoteTransform.app")
 
 
 def _notebook(path, code: str, title: str) -> None:
@@ -17,36 +26,139 @@ def _notebook(path, code: str, title: str) -> None:
     nbformat.write(nb, path)
 
 
-def test_build_report_executes_and_collects_figures(tmp_path):
-    src = tmp_path / "nbs"
+@pytest.fixture(scope="module")
+def demo_site(tmp_path_factory):
+    """A site built from one small notebook that saves a captioned figure and prints maths."""
+    tmp = tmp_path_factory.mktemp("report")
+    src = tmp / "nbs"
     src.mkdir()
     code = (
         "import matplotlib.pyplot as plt\n"
+        "import sympy as sp\n"
+        "from IPython.display import display\n"
         "from analysis.app.plotting import save_figure, style\n"
         "with style():\n"
         "    fig, ax = plt.subplots()\n"
         "    ax.plot([0, 1], [0, 1])\n"
-        "    print(save_figure(fig, '99-line'))\n"
+        "    cap = 'A straight line: y [mm] against x [mm].'\n"
+        "    print(save_figure(fig, '99-line', caption=cap))\n"
+        "plt.show()\n"
+        "display(sp.Matrix([[sp.Symbol('theta_1'), 0], [0, 1]]))\n"
         "print(6 * 7)\n"
+        "from ipykernel.kernelapp import IPKernelApp\n"
+        "print('transport', IPKernelApp.instance().transport)\n"
     )
-    _notebook(src / "99_demo.ipynb", code, "A demo notebook")
-    index = build_report(tmp_path / "report", notebooks=[src / "99_demo.ipynb"])
-    out = tmp_path / "report"
+    _notebook(src / "99_demo.ipynb", code, "99 · A demo notebook")
+    # a notebook that raises, with a stale stored output after the failing cell
+    broken = nbformat.v4.new_notebook(
+        cells=[
+            nbformat.v4.new_markdown_cell("# 98 · A broken notebook"),
+            nbformat.v4.new_code_cell("raise ValueError('boom')"),
+            nbformat.v4.new_code_cell(
+                "print('after')",
+                outputs=[nbformat.v4.new_output("stream", name="stdout", text="STALE OUTPUT\n")],
+            ),
+        ],
+        metadata={"kernelspec": {"name": "python3", "display_name": "Python 3"}},
+    )
+    nbformat.write(broken, src / "98_broken.ipynb")
+    with pytest.raises(NotebookFailed, match="98_broken: ValueError: boom") as failed:
+        build_report(
+            tmp / "report", notebooks=[src / "98_broken.ipynb", src / "99_demo.ipynb"], pdf=False
+        )
+    assert "the site was built" in str(failed.value)
+    return tmp, src, tmp / "report" / "index.html"
+
+
+def test_build_report_writes_the_site(demo_site):
+    tmp, _, index = demo_site
+    out = tmp / "report"
     assert index == out / "index.html"
+    for page in ("index", "register", "figures", "downloads", "search", "notebooks/99_demo"):
+        assert (out / f"{page}.html").exists(), page
     text = index.read_text()
     assert 'href="notebooks/99_demo.html"' in text and "A demo notebook" in text
-    assert (out / "figures" / "99-line.svg").exists() and (out / "figures" / "99-line.png").exists()
-    assert 'src="figures/99-line.png"' in text
-    executed = nbformat.read(out / "notebooks" / "99_demo.ipynb", as_version=4)
+    # front page: the verdicts, recomputed
+    assert "root causes against the paper" in text and "Table 4, recomputed" in text
+    assert "The PLC program, executed" in text
+    # MathJax is local, never a CDN (Sphinx adds it to the pages with maths)
+    page = (out / "notebooks" / "99_demo.html").read_text()
+    assert "_static/mathjax/tex-chtml.js" in page and "cdn.jsdelivr" not in page
+    assert (out / "_static" / "mathjax" / "tex-chtml.js").exists()
+
+
+def test_notebook_page_has_the_captioned_figure_and_maths(demo_site):
+    tmp, _, _ = demo_site
+    page = (tmp / "report" / "notebooks" / "99_demo.html").read_text()
+    assert "A straight line: y [mm] against x [mm]." in page
+    assert "<figcaption>" in page and "99-line.png" in page
+    # the printed file names are replaced by the figure; the SymPy output is maths
+    assert "[&#39;99-line.svg&#39;, &#39;99-line.png&#39;]" not in page
+    assert "$\\displaystyle" not in page and "math notranslate" in page
+    assert "42" in page
+
+
+def test_executed_notebook_and_figures_are_downloads(demo_site):
+    tmp, src, _ = demo_site
+    out = tmp / "report"
+    executed = nbformat.read(
+        tmp / "report-src" / "site" / "downloads" / "notebooks" / "99_demo.ipynb", 4
+    )
     outputs = "".join(o.get("text", "") for o in executed.cells[1].outputs)
     assert "42" in outputs and "99-line.svg" in outputs
+    assert "transport ipc" in outputs  # Unix sockets, no TCP port to race for
     # the source notebook is the nbval reference: it must not be modified
     assert nbformat.read(src / "99_demo.ipynb", as_version=4).cells[1].outputs == []
-    # the audit tables travel with the report, as HTML and CSV
-    assert "Table 4, row by row" in text and "Errata register" in text
-    assert (out / "tables" / "table4_audit.csv").exists() and (
-        out / "tables" / "errata.csv"
-    ).exists()
+    downloads = (out / "downloads.html").read_text()
+    for name in (
+        "ik_s7-200.awl",
+        "ik_s7-200_map.json",
+        "ik_s7-300.awl",
+        "ik_s7-300_map.json",
+        "grabber.csv",
+        "grabber_items.csv",
+        "table4_audit.csv",
+        "99_demo.ipynb",
+    ):
+        assert name in downloads, name
+        assert list(out.glob(f"_downloads/*/{name}")), name
+    awl = next(out.glob("_downloads/*/ik_s7-200.awl")).read_text()
+    assert "ORGANIZATION_BLOCK" in awl
+    json.loads(next(out.glob("_downloads/*/ik_s7-300_map.json")).read_text())
+    assert list(out.glob("_downloads/*/99-line.svg")) and list(out.glob("_images/99-line.png"))
+
+
+def _text(html: str) -> str:
+    """What a reader sees of an HTML page, roughly: tags dropped, spaces collapsed."""
+    return " ".join(re.sub(r"<[^>]+>", " ", html).split())
+
+
+def test_a_failing_notebook_is_shown_not_hidden(demo_site):
+    tmp, _, index = demo_site
+    front = _text(index.read_text())
+    assert "This build is incomplete." in front and "ValueError: boom" in front
+    page = _text((tmp / "report" / "notebooks" / "98_broken.html").read_text())
+    assert "This notebook failed when executed for this build: ValueError: boom" in page
+    assert "STALE OUTPUT" not in page  # nothing stored survives a failing cell
+
+
+def test_execute_notebook_shuts_its_kernel_down(tmp_path):
+    _notebook(tmp_path / "01_pid.ipynb", "import os\nprint(os.getpid())", "01 · pid")
+    nb = execute_notebook(tmp_path / "01_pid.ipynb")
+    pid = int(nb.cells[1].outputs[0]["text"])
+    for _ in range(50):  # the kernel process is gone (and reaped) once execution returns
+        if not Path(f"/proc/{pid}").exists():
+            break
+        time.sleep(0.1)
+    assert not Path(f"/proc/{pid}").exists()
+
+
+def test_rebuild_refuses_a_foreign_folder(tmp_path):
+    (tmp_path / "report").mkdir()
+    (tmp_path / "report" / "precious.txt").write_text("not a report")
+    with pytest.raises(FileExistsError):
+        build_report(tmp_path / "report", notebooks=[tmp_path / "none.ipynb"], pdf=False)
+    assert (tmp_path / "report" / "precious.txt").exists()
 
 
 def test_notebook_paths_lists_numbered_notebooks(tmp_path):

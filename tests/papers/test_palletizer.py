@@ -13,6 +13,7 @@ import pytest
 import sympy as sp
 
 from analysis.papers import palletizer as paper
+from helpers import seed_file
 
 MODULE = Path(paper.__file__)
 
@@ -54,7 +55,7 @@ def test_parse_rejects_unknown_names_and_bad_syntax():
 
 def test_extracted_runs_occur_verbatim_in_the_seed():
     """Skipped where the seed (outside the repository) is not mounted."""
-    seed = Path(paper.SOURCE)
+    seed = seed_file(paper.SOURCE)
     if not seed.is_file():
         pytest.skip(f"{seed} not available")
     text = seed.read_text(encoding="utf-8")

@@ -11,6 +11,7 @@ import pytest
 import sympy as sp
 
 from analysis.papers import picker as paper
+from helpers import seed_file
 
 
 def test_data_only_imports():
@@ -25,7 +26,7 @@ def test_data_only_imports():
 
 
 def test_extracted_runs_occur_verbatim_in_the_seed():
-    seed = Path(paper.SOURCE)
+    seed = seed_file(paper.SOURCE)
     if not seed.is_file():
         pytest.skip(f"{seed} not available")
     text = seed.read_text(encoding="utf-8")

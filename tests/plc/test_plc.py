@@ -210,3 +210,22 @@ def test_custom_layout_round_trip_and_execution(tmp_path):
     res = r.solve([[100.0, 100.0, 600.0], [200.0, 500.0, 600.0]], sentinel=7)
     assert res.pulses.tolist() == [[500, 113, -1724], [7, 7, 7]]
     assert res.reachable.tolist() == [True, False]
+
+
+@pytest.mark.parametrize("arm_name", ["grabber", "palletizer"])
+@pytest.mark.parametrize("dialect", ["s7-200", "s7-300"])
+def test_generated_listings_have_no_overlapping_operands(arm_name, dialect):
+    """The byte-level check of analysis.plc.stl_eval.overlaps on every generated program:
+    no two addresses share a byte (the paper's Figure 5 has VD104/VD106; see the register)."""
+    from analysis.kinematics.arm import load_arm
+    from analysis.papers import grabber as paper
+    from analysis.plc import stl_eval
+
+    text, _ = generate(dialect, params=load_arm(arm_name).params)
+    area = "V" if dialect == "s7-200" else "M"
+    v_text = text.replace(f"{area}D", "VD") if area == "M" else text
+    instrs = stl_eval.parse_stl(v_text)
+    assert len(instrs) > 100
+    assert stl_eval.overlaps(instrs) == []
+    fig5 = stl_eval.overlaps(stl_eval.parse_stl(paper.FIGURE_STL[5]))
+    assert [(a, b) for a, b, _ in fig5] == [("VD104", "VD106")]

@@ -16,7 +16,8 @@ def test_parse_call_with_and_without_comma():
 
 
 def test_movd_stores_bits_and_movr_converts():
-    """stl_reference 1.2: MOVD 100 is 16#00000064, a denormal as REAL; MOVR 100.0 is 100.0."""
+    """S7-200 System Manual (MOVD, MOVR): MOVD 100 is 16#00000064, a denormal as REAL;
+    MOVR 100.0 is 100.0."""
     m = stl.evaluate(stl.parse_stl("MOVD 100, VD0\nMOVR 100.0, VD4"))
     assert m["VD0"] == 0x64
     assert stl.real(m, "VD0") == struct.unpack(">f", bytes([0, 0, 0, 0x64]))[0]
@@ -26,7 +27,7 @@ def test_movd_stores_bits_and_movr_converts():
 
 @pytest.mark.parametrize(("op", "expected"), [("+R", 7.0), ("-R", 3.0), ("*R", 10.0), ("/R", 2.5)])
 def test_in_place_arithmetic(op, expected):
-    """stl_reference 1.1: 'op IN1, OUT' computes OUT := OUT op IN1."""
+    """S7-200 System Manual (math instructions): 'op IN1, OUT' computes OUT := OUT op IN1."""
     m = stl.evaluate(stl.parse_stl(f"{op} VD4, VD0"), stl.real_memory(VD0=5.0, VD4=2.0))
     assert stl.real(m, "VD0") == expected
 

@@ -9,6 +9,7 @@ through :func:`save_figure`.
 from __future__ import annotations
 
 import contextlib
+import json
 import os
 from collections.abc import Iterator
 from pathlib import Path
@@ -50,17 +51,30 @@ def figure_dir() -> Path:
     return Path(env) if env else Path(__file__).resolve().parents[3] / "build" / "figures"
 
 
-def save_figure(fig: mpl.figure.Figure, stem: str, folder: str | Path | None = None) -> list[str]:
+def save_figure(
+    fig: mpl.figure.Figure,
+    stem: str,
+    folder: str | Path | None = None,
+    *,
+    caption: str | None = None,
+) -> list[str]:
     """Save ``fig`` as ``<stem>.svg`` and ``<stem>.png`` in ``folder`` (default :func:`figure_dir`).
 
     ``stem`` starts with the notebook number (``"05-workspace-xz"``). Returns the file
     names (not absolute paths, so notebook outputs do not depend on the machine).
     SVGs carry no date, so re-running a notebook reproduces them byte for byte.
+
+    ``caption`` (what the figure shows and in which units) is written to a sidecar
+    ``<stem>.json`` (``{"stem": ..., "caption": ...}``) beside the images; the report site
+    prints it under the figure (:mod:`analysis.app.site_content`). The returned names are
+    the same with or without it, so printed notebook outputs do not change.
     """
     if not stem[:2].isdigit():
         raise ValueError(
             f"figure stem {stem!r} must start with the notebook number, e.g. '05-workspace'"
         )
+    if caption is not None and not caption.strip():
+        raise ValueError(f"figure {stem!r}: empty caption")
     out = Path(folder) if folder is not None else figure_dir()
     out.mkdir(parents=True, exist_ok=True)
     names = []
@@ -69,6 +83,11 @@ def save_figure(fig: mpl.figure.Figure, stem: str, folder: str | Path | None = N
         with mpl.rc_context({"svg.hashsalt": "analysis"}):
             fig.savefig(out / name, format=ext, metadata=meta)
         names.append(name)
+    if caption is not None:
+        side = {"stem": stem, "caption": " ".join(caption.split())}
+        (out / f"{stem}.json").write_text(
+            json.dumps(side, ensure_ascii=False, indent=1) + "\n", encoding="utf-8"
+        )
     return names
 
 

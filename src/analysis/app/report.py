@@ -1,29 +1,84 @@
-"""Build the HTML report: execute every notebook, collect its figures, write an index.
+"""Build the report site: execute every notebook, then render it with Sphinx + MyST-NB.
 
-``python -m analysis report --out build/report`` (and ``make report``) writes::
+``python -m analysis report --out build/report`` (and ``make report``) writes a static site::
 
-    build/report/index.html            the entry page: notebooks, figures, audit summary
-    build/report/notebooks/NN_*.html   each notebook, freshly executed, as HTML
-    build/report/notebooks/NN_*.ipynb  the executed notebooks themselves
-    build/report/figures/*.svg|png     every figure the notebooks saved (save_figure)
-    build/report/tables/*.csv          Table 4 explained and the errata register
+    build/report/index.html            front page: the verdicts, each linking to its evidence
+    build/report/notebooks/NN_*.html   each notebook, executed for this build
+    build/report/register.html         the errata register
+    build/report/figures.html          every saved figure with its caption
+    build/report/downloads.html        PLC programs, memory maps, CSVs, executed notebooks, PDF
+    build/report/search.html           full-text search (Sphinx's index, no server needed)
+    build/report/report.pdf            the whole report, printed by Chromium (if installed)
 
-The stored notebooks in ``notebooks/`` are not modified: they are the nbval references.
+and keeps its sources in ``build/report-src`` (the staged Sphinx source folder). The stored
+notebooks in ``notebooks/`` are never modified: they are the nbval references. Each one is
+executed top to bottom in a fresh kernel by :func:`execute_notebook` (nbclient), with
+``ANALYSIS_FIGURE_DIR`` pointing at the staged ``figures/`` so that ``save_figure`` puts
+its SVG/PNG (and caption sidecar) there; progress goes to the console (notebook i/n,
+seconds, total elapsed).
+
+Why Sphinx + MyST-NB + sphinx-book-theme (the engine of Jupyter Book 1, used directly)
+----------------------------------------------------------------------------------------
+* It gives what the report lacked without custom web code: a contents sidebar, previous/
+  next links, the start page first in the sidebar, a search page whose index is a static
+  file, per-page contents, a "print to PDF" button and print styles, numbered figures with
+  captions, MathJax for the SymPy (``text/latex``) outputs.
+* All of it installs from PyPI at pinned versions and builds offline. MathJax 3 is served
+  from the site itself (``docs/site/conf.py``): nothing is fetched at build or view time.
+* MyST-NB renders notebooks without executing them (``nb_execution_mode = "off"``), so
+  execution stays here, with our progress, timeouts and figure collection.
+* Jupyter Book 1 (``jupyter-book`` 1.0.4) is a thin wrapper around the same packages; it is
+  in maintenance mode and pins Sphinx 7 and an older theme, so its engine is used directly
+  at current versions. Jupyter Book 2 / mystmd need Node and download their site theme at
+  build time, which this project does not allow. nbconvert's HTML (the previous report)
+  has no navigation and loads MathJax from a CDN; Quarto needs its own binary.
 """
 
 from __future__ import annotations
 
-import html
+import contextlib
+import functools
+import http.server
 import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import nbformat
+from jupyter_client.manager import KernelManager
 from nbclient import NotebookClient
-from nbconvert import HTMLExporter
+from nbclient.exceptions import CellExecutionError
 
-__all__ = ["build_report", "notebook_paths"]
+__all__ = [
+    "NotebookFailed",
+    "build_report",
+    "execute_notebook",
+    "notebook_paths",
+    "print_pdf",
+    "serve",
+]
 
 PROJECT = Path(__file__).resolve().parents[3]
+CONF_DIR = PROJECT / "docs" / "site"
+CHROMIUM = "/usr/bin/chromium"
+# flags for Debian's Chromium on a machine without a display or outside network
+CHROMIUM_FLAGS = (
+    "--headless",
+    "--no-sandbox",
+    "--disable-gpu",
+    "--disable-quic",
+    "--no-first-run",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+)
+_MARKER = ".analysis-report"
+NB_BACKEND = "module://matplotlib_inline.backend_inline"
 
 
 def notebook_paths(folder: Path | None = None) -> list[Path]:
@@ -39,106 +94,350 @@ def _title(nb: nbformat.NotebookNode, fallback: str) -> str:
     for cell in nb.cells:
         if cell.cell_type == "markdown":
             for line in cell.source.splitlines():
-                if line.startswith("#"):
+                if line.startswith("# "):
                     return line.lstrip("#").strip()
     return fallback
 
 
-def execute_notebook(path: Path, timeout: int = 1800) -> nbformat.NotebookNode:
-    """Execute a notebook top to bottom in a fresh kernel, with its folder as cwd."""
-    nb = nbformat.read(path, as_version=4)
-    client = NotebookClient(
-        nb,
-        timeout=timeout,
-        kernel_name="python3",
-        resources={"metadata": {"path": str(path.parent)}},
-    )
-    client.execute()
+class NotebookFailed(RuntimeError):
+    """A notebook raised; the site was still built, with the failure shown on its pages."""
+
+
+def execute_notebook(
+    path: Path,
+    timeout: int = 1800,
+    *,
+    on_cell: Callable[[int, int], None] | None = None,
+    into: nbformat.NotebookNode | None = None,
+) -> nbformat.NotebookNode:
+    """Execute a notebook top to bottom in a fresh kernel, with its folder as cwd.
+
+    Returns the executed notebook; the file at ``path`` is only read. ``on_cell(i, n)`` is
+    called after each code cell (i of n code cells). ``into``: the notebook read from
+    ``path``, executed in place (so that a caller still has its outputs up to the failing
+    cell when execution raises ``nbclient.exceptions.CellExecutionError``).
+    """
+    nb = into if into is not None else nbformat.read(path, as_version=4)
+    for cell in nb.cells:  # no stored output survives, even after a failing cell
+        if cell.cell_type == "code":
+            cell.outputs = []
+            cell.execution_count = None
+    n_code = sum(c.cell_type == "code" for c in nb.cells)
+    done = 0
+
+    def hook(**_):
+        nonlocal done
+        done += 1
+        if on_cell is not None:
+            on_cell(done, n_code)
+
+    # The kernel talks over Unix sockets in a private folder (IPC), not TCP: no free-port race
+    # with other kernels starting at the same time (see tests/nbval_kernel.py for the race).
+    with tempfile.TemporaryDirectory(prefix="analysis-kernel-") as ipc:
+        km = KernelManager(
+            kernel_name="python3",
+            transport="ipc",
+            ip=os.path.join(ipc, "k"),
+            connection_file=os.path.join(ipc, "k.json"),
+        )
+        client = NotebookClient(
+            nb,
+            km=km,
+            timeout=timeout,
+            kernel_name="python3",
+            resources={"metadata": {"path": str(path.parent)}},
+            on_cell_executed=hook,
+        )
+        try:
+            client.execute()
+        finally:  # a kernel manager passed in is not shut down by nbclient itself
+            if km.has_kernel:
+                km.shutdown_kernel(now=True)
     return nb
 
 
-def build_report(out: str | Path = "build/report", notebooks: list[Path] | None = None) -> Path:
-    """Execute the notebooks, export HTML and figures under ``out``; return index.html."""
-    out = Path(out).resolve()
-    nb_dir, fig_dir = out / "notebooks", out / "figures"
-    nb_dir.mkdir(parents=True, exist_ok=True)
-    fig_dir.mkdir(parents=True, exist_ok=True)
-    paths = [Path(p).resolve() for p in notebooks] if notebooks else notebook_paths()
-    previous = os.environ.get("ANALYSIS_FIGURE_DIR")
-    os.environ["ANALYSIS_FIGURE_DIR"] = str(fig_dir)  # inherited by the kernels
-    os.environ.setdefault("MPLBACKEND", "module://matplotlib_inline.backend_inline")
-    exporter = HTMLExporter()
-    entries = []
+@contextlib.contextmanager
+def _env(**values: str) -> Iterator[None]:
+    old = {k: os.environ.get(k) for k in values}
+    os.environ.update(values)
     try:
-        for path in paths:
-            print(f"executing {path.name} ...", flush=True)
-            nb = execute_notebook(path)
-            nbformat.write(nb, nb_dir / path.name)
-            body, _ = exporter.from_notebook_node(nb)
-            (nb_dir / f"{path.stem}.html").write_text(body, encoding="utf-8")
-            entries.append((path.stem, _title(nb, path.stem)))
+        yield
     finally:
-        if previous is None:
-            os.environ.pop("ANALYSIS_FIGURE_DIR", None)
-        else:
-            os.environ["ANALYSIS_FIGURE_DIR"] = previous
+        for k, v in old.items():
+            if v is None:
+                os.environ.pop(k, None)
+            else:
+                os.environ[k] = v
+
+
+def _fresh_dir(path: Path) -> None:
+    """Empty ``path`` for a new build; refuse a non-empty folder this module did not write."""
+    if path.exists():
+        ours = (path / _MARKER).exists() or (path / "index.html").exists()
+        if any(path.iterdir()) and not ours:
+            raise FileExistsError(f"{path} is not empty and not a report build: not deleting it")
+        shutil.rmtree(path)
+    path.mkdir(parents=True)
+    (path / _MARKER).write_text("written by analysis.app.report; deleted on the next build\n")
+
+
+def _sphinx(src: Path, out: Path, doctrees: Path, builder: str = "html") -> int:
+    """Run Sphinx in this process; return the number of warnings."""
+    from sphinx.application import Sphinx
+    from sphinx.util.console import nocolor
+    from sphinx.util.docutils import docutils_namespace, patch_docutils
+
+    if not sys.stderr.isatty():
+        nocolor()
+    with patch_docutils(CONF_DIR), docutils_namespace():
+        app = Sphinx(
+            str(src),
+            str(CONF_DIR),
+            str(out),
+            str(doctrees),
+            builder,
+            status=None,  # our own progress lines instead of Sphinx's per-file log
+            warning=sys.stderr,
+            freshenv=False,
+            verbosity=0,
+        )
+        app.build(force_all=True)
+        if app.statuscode:
+            raise RuntimeError(f"sphinx-build ({builder}) failed with status {app.statuscode}")
+        return int(app._warncount)
+
+
+class _QuietHandler(http.server.SimpleHTTPRequestHandler):
+    def log_message(self, *args) -> None:  # no access log on the console
+        pass
+
+
+@contextlib.contextmanager
+def serve(folder: Path) -> Iterator[str]:
+    """Serve ``folder`` over HTTP on 127.0.0.1 (a free port) for the duration; yield the URL."""
+    handler = functools.partial(_QuietHandler, directory=str(folder))
+    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
+    thread = threading.Thread(target=server.serve_forever, daemon=True)
+    thread.start()
+    try:
+        yield f"http://127.0.0.1:{server.server_address[1]}/"
+    finally:
+        server.shutdown()
+        server.server_close()
+        thread.join()
+
+
+def print_pdf(html_dir: Path, pdf: Path, chromium: str = CHROMIUM, timeout: int = 300) -> bool:
+    """Print ``html_dir/index.html`` to ``pdf`` with Debian's headless Chromium.
+
+    The page is served on 127.0.0.1 (so that MathJax loads its fonts) and given a virtual
+    time budget to typeset the maths before printing. Returns False (and prints why) where
+    no Chromium is installed or printing failed; a missing PDF never fails the build.
+    """
+    if not Path(chromium).exists():
+        print(f"[pdf] skipped: no Chromium at {chromium} (apt-get install chromium)", flush=True)
+        return False
+    with tempfile.TemporaryDirectory() as profile, serve(html_dir) as url:
+        cmd = [
+            chromium,
+            *CHROMIUM_FLAGS,
+            f"--user-data-dir={profile}",
+            "--no-pdf-header-footer",
+            "--virtual-time-budget=60000",
+            "--run-all-compositor-stages-before-draw",
+            f"--print-to-pdf={pdf}",
+            url + "index.html",
+        ]
+        try:
+            run = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+        except subprocess.TimeoutExpired:
+            print(f"[pdf] skipped: Chromium did not finish in {timeout} s", flush=True)
+            return False
+    if run.returncode != 0 or not pdf.exists() or pdf.stat().st_size == 0:
+        print(f"[pdf] skipped: Chromium exited {run.returncode}: {run.stderr[-500:]}", flush=True)
+        return False
+    return True
+
+
+def _prune_mathjax(folder: Path) -> None:
+    """Drop the MathJax entry points the site does not load (it loads ``tex-chtml.js``).
+
+    The combined components (``tex-svg.js``, ``mml-chtml.js``, ...) are alternatives to
+    ``tex-chtml.js`` and ``latest.js`` would fetch MathJax from a CDN; the folders
+    (extensions, fonts, accessibility) stay, since ``tex-chtml.js`` loads from them.
+    """
+    for f in folder.glob("*.js"):
+        if f.name != "tex-chtml.js":
+            f.unlink()
+
+
+def _git_commit() -> str | None:
+    try:
+        run = subprocess.run(
+            ["git", "-C", str(PROJECT), "rev-parse", "--short", "HEAD"],
+            capture_output=True,
+            text=True,
+            timeout=10,
+        )
+    except (OSError, subprocess.TimeoutExpired):
+        return None
+    return run.stdout.strip() or None if run.returncode == 0 else None
+
+
+def build_report(
+    out: str | Path = "build/report",
+    notebooks: list[Path] | None = None,
+    *,
+    pdf: bool = True,
+) -> Path:
+    """Execute the notebooks and build the report site under ``out``; return its index.html.
+
+    ``pdf=False`` skips the printed ``report.pdf`` (it needs Debian's Chromium anyway).
+    A notebook that raises does not stop the build: its page shows the outputs up to the
+    failing cell and the error, the front page lists it, and :class:`NotebookFailed` is
+    raised once the site is written (so ``make report`` fails, with a site to look at).
+    """
+    from analysis.app import site_content as site
+    from analysis.app.frontpage import front_page_data
+
+    t0 = time.perf_counter()
+
+    def say(msg: str) -> None:
+        print(f"[{time.perf_counter() - t0:6.1f} s] {msg}", flush=True)
+
+    out = Path(out).resolve()
+    work = out.with_name(out.name + "-src")
+    _fresh_dir(out)
+    _fresh_dir(work)
+    src = work / "site"
+    fig_dir, nb_dir, dl_nb = src / "figures", src / "notebooks", src / "downloads" / "notebooks"
+    for d in (fig_dir, nb_dir, dl_nb):
+        d.mkdir(parents=True)
+    paths = [Path(p).resolve() for p in notebooks] if notebooks else notebook_paths()
+
+    # 1. execute every notebook (fresh kernel each); figures go to the staged figures/
+    executed: list[tuple[Path, nbformat.NotebookNode, float]] = []
+    failed: dict[str, str] = {}  # notebook stem (or "front page") -> what went wrong
+    n = len(paths)
+    # kernels draw with the inline backend, as under nbval (make test), whatever the caller uses
+    with _env(ANALYSIS_FIGURE_DIR=str(fig_dir), MPLBACKEND=NB_BACKEND):
+        for i, path in enumerate(paths, start=1):
+            say(f"notebook {i}/{n}: executing {path.name} ...")
+            t = time.perf_counter()
+            last = [t]
+
+            def beat(k: int, m: int, i=i, path=path, t=t, last=last) -> None:
+                now = time.perf_counter()
+                if now - last[0] >= 10:
+                    last[0] = now
+                    say(f"notebook {i}/{n}: {path.name} cell {k}/{m}, {now - t:.0f} s")
+
+            nb = nbformat.read(path, as_version=4)
+            try:
+                execute_notebook(path, on_cell=beat, into=nb)
+            except CellExecutionError as exc:
+                failed[path.stem] = _first_line_of_error(exc)
+            dt = time.perf_counter() - t
+            nbformat.write(nb, dl_nb / path.name)
+            executed.append((path, nb, dt))
+            if path.stem in failed:
+                say(f"notebook {i}/{n}: {path.name} FAILED after {dt:.1f} s: {failed[path.stem]}")
+            else:
+                say(f"notebook {i}/{n}: {path.name} done in {dt:.1f} s")
+
+    # 2. figures, notebooks prepared for the site, downloads, generated pages
+    captions = site.figure_captions(fig_dir)
+    missing = [s for s, c in captions.items() if not c]
+    say(
+        f"{len(captions)} figures saved"
+        + (f"; no caption for {', '.join(missing)}" if missing else "")
+    )
+    titles, homes = {}, {}
+    for path, nb, dt in executed:
+        page, placed = site.prepare_notebook(
+            nb, path.name, captions, seconds=dt, failure=failed.get(path.stem)
+        )
+        nbformat.write(page, nb_dir / path.name)
+        titles[path.stem] = _title(nb, path.stem)
+        homes.update({s: f"notebooks/{path.stem}" for s in placed})
+    say("recomputing the front-page verdicts and writing the downloads ...")
+    items = site.write_downloads(src)
+    items += [
+        site.Download(
+            f"notebooks/{p.name}",
+            "Executed notebooks",
+            f"{p.stem}: {titles[p.stem]}",
+            f"executed in {dt:.1f} s",
+        )
+        for p, _, dt in executed
+    ]
+    try:
+        sections = front_page_data()
+    except Exception as exc:  # the site still shows everything else, and says what broke
+        failed["front page"] = f"front_page_data() raised {type(exc).__name__}: {exc}"
+        say(failed["front page"])
+        sections = []
+    commit = _git_commit()
+    total = sum(dt for _, _, dt in executed)
+    intro = (
+        "Li Feng, Zhang Xue-song, Yue Yun, Zhang Zhong-mei. *Research on self-navigation "
+        "system of material grabbing robot based on the inverse kinematics analysis.* Food & "
+        "Machinery, 2016. Every printed equation, table and PLC listing re-derived, "
+        "recomputed or executed. "
+        f"This site was built{f' from commit `{commit}`' if commit else ''}: all {n} notebooks "
+        f"were executed for it ({total:.0f} s"
+        + (f"; {sum(k in titles for k in failed)} failed" if failed else "")
+        + "), and the verdicts below recomputed."
+    )
+    docs = [f"notebooks/{p.stem}" for p, _, _ in executed]
+    toc = {"Notebooks": docs, "Report": ["register", "figures", "downloads"]}
+    (src / "index.md").write_text(
+        site.front_page_md(sections, captions, homes, titles, intro, toc, problems=failed),
+        encoding="utf-8",
+    )
+    (src / "register.md").write_text(site.register_md(), encoding="utf-8")
+    (src / "figures.md").write_text(site.figures_md(captions, homes, titles), encoding="utf-8")
+    (src / "downloads.md").write_text(site.downloads_md(src, items), encoding="utf-8")
+
+    # 3. the printed form: one page (singlehtml) printed by Chromium, then offered as download
+    doctrees = work / "doctrees"
+    warnings = 0
+    if pdf:
+        say("sphinx: single-page version for printing ...")
+        warnings += _sphinx(src, work / "print", doctrees, "singlehtml")
+        say("printing report.pdf with headless Chromium ...")
+        if print_pdf(work / "print", src / "downloads" / "report.pdf"):
+            items.append(
+                site.Download(
+                    "report.pdf",
+                    "Printable report",
+                    "The whole report as one PDF (A4), printed from the single-page HTML by "
+                    "headless Chromium",
+                    "make report",
+                )
+            )
+            (src / "downloads.md").write_text(site.downloads_md(src, items), encoding="utf-8")
+
+    # 4. the site
+    say("sphinx: building the site ...")
+    warnings += _sphinx(src, out, doctrees, "html")
+    _prune_mathjax(out / "_static" / "mathjax")
+    (out / _MARKER).write_text("written by analysis.app.report; deleted on the next build\n")
+    if (src / "downloads" / "report.pdf").exists():
+        shutil.copyfile(src / "downloads" / "report.pdf", out / "report.pdf")
     index = out / "index.html"
-    index.write_text(_index_html(entries, sorted(fig_dir.glob("*.png")), out), encoding="utf-8")
+    say(f"done: {index} ({warnings} Sphinx warnings)")
+    if failed:
+        raise NotebookFailed(
+            f"the site was built ({index}), but "
+            + "; ".join(f"{k}: {v}" for k, v in failed.items())
+        )
     return index
 
 
-def _tables_html(out: Path) -> str:
-    """Table 4 explained and the errata register, as HTML and as CSV files under tables/."""
-    from analysis.audit import register as errata
-    from analysis.audit import table4
-
-    tables = out / "tables"
-    tables.mkdir(exist_ok=True)
-    t4 = table4.report_table()
-    reg = errata.load()
-    t4.to_csv(tables / "table4_audit.csv")
-    reg.to_csv(tables / "errata.csv", index=False)
-    return (
-        '<h2>Table 4, row by row</h2>\n<p>(<a href="tables/table4_audit.csv">CSV</a>; '
-        "details in notebook 03)</p>\n"
-        + t4.to_html(escape=True, border=0, classes="errata")
-        + '\n<h2>Errata register</h2>\n<p>(<a href="tables/errata.csv">CSV</a>; every row has '
-        "the test that proves it, column <code>check</code>)</p>\n"
-        + reg.to_html(index=False, escape=True, border=0, classes="errata")
-    )
-
-
-def _index_html(entries: list[tuple[str, str]], figures: list[Path], out: Path) -> str:
-    items = "\n".join(
-        f'<li><a href="notebooks/{stem}.html">{html.escape(stem)}</a>: {html.escape(title)}</li>'
-        for stem, title in entries
-    )
-    figs = "\n".join(
-        f'<figure><a href="{f.relative_to(out).with_suffix(".svg").as_posix()}">'
-        f'<img src="{f.relative_to(out).as_posix()}" alt="{html.escape(f.stem)}"></a>'
-        f"<figcaption>{html.escape(f.stem)}</figcaption></figure>"
-        for f in figures
-    )
-    return f"""<!DOCTYPE html>
-<html lang="en"><head><meta charset="utf-8">
-<title>Audit of Li Feng et al. (2016): material grabbing robot kinematics</title>
-<style>
-body {{ font-family: sans-serif; max-width: 70em; margin: 2em auto; line-height: 1.4; }}
-figure {{ display: inline-block; margin: 0.5em; width: 30em; vertical-align: top; }}
-figure img {{ width: 100%; }}
-table.errata {{ border-collapse: collapse; font-size: 0.85em; }}
-table.errata td, table.errata th {{ border: 1px solid #ccc; padding: 0.2em 0.4em;
-  vertical-align: top; }}
-</style></head><body>
-<h1>Audit of Li Feng et al. (2016), a 3R material grabbing robot</h1>
-<p>Every notebook below was executed top to bottom for this report; the figures are the
-files the notebooks saved.</p>
-<h2>Notebooks</h2>
-<ul>
-{items}
-</ul>
-<h2>Figures</h2>
-{figs}
-{_tables_html(out)}
-</body></html>
-"""
+def _first_line_of_error(exc: Exception) -> str:
+    """'ImportError: cannot import name ...' from nbclient's CellExecutionError."""
+    ename, evalue = getattr(exc, "ename", ""), getattr(exc, "evalue", "")
+    if ename:
+        return f"{ename}: {evalue}".strip()
+    return str(exc).strip().splitlines()[-1] if str(exc).strip() else type(exc).__name__

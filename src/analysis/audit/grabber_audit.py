@@ -71,7 +71,8 @@ def corrected_closed_form() -> dict[str, sp.Expr]:
 
     P = {k: S[k] for k in ("L1", "L2", "L3")}
     sol = grabber.ik(sympy_ops, PXYZ, P, tol=0)
-    t1, t2, t3 = sol["branches"]["front-up"]
+    # the closed form's float literals (2.0 L2 L3, 1.0 - c) are exact: make them rationals
+    t1, t2, t3 = (sp.nsimplify(e, rational=True) for e in sol["branches"]["front-up"])
     return {"theta1": t1, "theta2": t2, "theta3": t3}
 
 

@@ -3,8 +3,9 @@
 Each item's ``verify(text)`` runs an STL fragment (instructions separated by ``;`` or
 newlines) through :func:`analysis.plc.stl_eval.evaluate` with the inputs a correct program
 would see, and compares with the corrected kinematics of :mod:`analysis.kinematics.arm` and the
-pulse rule of :mod:`analysis.kinematics.pulses`. Facts about the S7-200 come from
-``../shared/stl_reference.md`` (sections 1.1-1.4). Used by :func:`analysis.audit.register.audit`.
+pulse rule of :mod:`analysis.kinematics.pulses`. Facts about the S7-200 come from the S7-200
+System Manual's instruction descriptions (in-place arithmetic, MOVD/MOVR, ROUND, REAL
+format). Used by :func:`analysis.audit.grabber_audit.audit`.
 """
 
 from __future__ import annotations
@@ -201,7 +202,7 @@ def stl_items(Item) -> list:
         "PLC semantics",
         v_alias,
         "IN parameters are copied to L memory at the call, OUT written back at return "
-        "(stl_reference 1.4): same result as with a separate OUT address",
+        "(S7-200 System Manual, in-place math): same result as with a separate OUT address",
         derived="same as CALL ARCTAN, VD12, VD20",
     )
 
@@ -410,6 +411,6 @@ def stl_items(Item) -> list:
         "PLC semantics",
         v_reach,
         f"Table 4 row 8 ({t4[7, 0]:g}, {t4[7, 1]:g}, {t4[7, 2]:g}): ARCCOS argument {arg[7]:.4f} > 1, "  # noqa: E501
-        "the listing has no branch for it (NaN; a NaN in a REAL compare stops an S7-200, stl_reference 1.3)",  # noqa: E501
+        "the listing has no branch for it (NaN; a NaN in a REAL compare stops an S7-200 (System Manual))",  # noqa: E501
     )
     return items

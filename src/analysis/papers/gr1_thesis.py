@@ -36,7 +36,7 @@ Greek letter of chapter 3 to ``?``; these names are the assumed reading, see
 Cubic trajectories use :data:`CUBIC_SYMBOLS` (``a0 .. a3`` there are polynomial
 coefficients, not link lengths). Parse with :func:`parse`.
 
-Source: ``../shared/seeds/004_cea62f71caa87fb1.txt``, a text extraction of the PDF (the
+Source: a text extraction of the thesis's PDF (seed 004, ``004_cea62f71caa87fb1.txt``; the
 thesis runs to its line 1042; the appended translation and foreign original are not
 part of this transcription). The extraction joined lines, dropped table bodies and
 turned symbol-font characters (Greek letters, +, -, =, brackets) into ``?``.
@@ -87,7 +87,7 @@ SOURCE: dict[str, str] = {
     "supervisor": "毛美姣 (Mao Meijiao)",
     "date": "2007-06-02",
     "kind": "undergraduate thesis (毕业设计说明书)",
-    "extraction": "../shared/seeds/004_cea62f71caa87fb1.txt, lines 1-1042",
+    "extraction": "seed 004 (004_cea62f71caa87fb1.txt), lines 1-1042",
 }
 """Bibliographic facts from the title page and task sheet."""
 

@@ -12,7 +12,7 @@ target, ``n_x .. a_z`` the orientation columns of eq. 2, ``p_z`` the lowercase p
 in eq. 10. ``atan`` stands for the printed single-argument ``tan^-1`` and ``acos`` for
 ``cos^-1``. Matrices are lists of rows of strings. Equations are ``(lhs, rhs)`` pairs.
 
-Source: ``../shared/seeds/000_b7929d144425993c.txt`` (a text extraction of the PDF; the
+Source: a text extraction of the paper's PDF (seed 000; the
 equations survived as LaTeX, Figures 5-6 as scrambled multi-column text, see
 :data:`FIGURE_STL_EXTRACTED` and :data:`FIGURE_STL`). Where the extraction leaves a
 reading uncertain the item says so in :data:`UNCERTAIN`.

@@ -43,7 +43,7 @@ __all__ = [
     "parse",
 ]
 
-SOURCE = "/work/shared/seeds/001_d07c5622ca21ee76.txt"
+SOURCE = "001_d07c5622ca21ee76.txt"
 """The text extraction this module transcribes (outside the repository, read-only)."""
 
 # --- symbols ------------------------------------------------------------------------------

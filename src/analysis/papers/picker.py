@@ -35,7 +35,7 @@ __all__ = [
     "joint_law",
 ]
 
-SOURCE = "/work/shared/seeds/002_9c33c7a2088bff5e.txt"
+SOURCE = "002_9c33c7a2088bff5e.txt"
 """The text extraction this module transcribes (outside the repository, read-only)."""
 
 EXTRACTED: dict[str, tuple[str, ...]] = {

@@ -1,6 +1,6 @@
 """Emitters: :class:`~.ir.Program` -> S7-200 STL (Micro/WIN text) and S7-300/400 AWL.
 
-S7-200 (the paper's dialect, stl_reference.md part 1)
+S7-200 (the paper's dialect; S7-200 System Manual, STL instructions)
     Two-operand in-place REAL math (``+R IN1, OUT``: OUT := OUT + IN1; ``-R``, ``/R``:
     OUT := OUT op IN1; ``*R``: OUT := IN1 * OUT), so ``d = a op b`` becomes ``MOVR a, d`` +
     ``op b, d``; ``d = a - d`` becomes ``-R a, d`` + ``*R -1.0, d`` (exact negation).

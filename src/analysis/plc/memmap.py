@@ -1,4 +1,4 @@
-"""Memory map of the generated PLC program (design.md, "PLC program"; ``--map MAP.json``).
+"""Memory map of the generated PLC program (``stl --map MAP.json``, see the README).
 
 Addresses are written in each dialect's own notation: V memory on the S7-200 (``VD0``,
 ``V112.0``), M memory on the S7-300 (``MD0``, ``M112.0``). The byte offsets are the same

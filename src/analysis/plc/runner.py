@@ -1,7 +1,8 @@
 """Execute generated AWL on awlsim (PyPI ``awlsim``, GPL-2.0-or-later, used as a tool).
 
 One program load, then one OB1 cycle per target: write Px, Py, Pz into the input
-addresses, ``runCycle()``, read c1..c3 and the reach flag back (stl_reference.md 2.3).
+addresses, ``runCycle()``, read c1..c3 and the reach flag back (awlsim's Python API:
+``AwlSim``, ``runCycle``).
 The M area (2048 bytes by default) is read and written directly, big-endian.
 
 awlsim evaluates REAL operations in Python doubles and rounds every accumulator store to

@@ -137,6 +137,7 @@ def quantization_error(
     --------
     Table 4 row 1, (100, 100, 600) mm: pulses (500, 113, -1724), 0.10 mm off target:
 
+    >>> from analysis.kinematics.arm import paper_arm
     >>> r = quantization_error(paper_arm(), [100, 100, 600])
     >>> r.pulses.tolist(), round(float(r.error_mm), 2)
     ([500, 113, -1724], 0.1)

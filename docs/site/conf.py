@@ -1,0 +1,62 @@
+"""Sphinx configuration of the report site (``make report``; see src/analysis/app/report.py).
+
+Sphinx reads a staged source folder written by ``analysis.app.report``: the executed
+notebooks (``notebooks/*.ipynb``, rendered by MyST-NB without executing them again), the
+generated pages (``index.md``, ``register.md``, ``figures.md``, ``downloads.md``), the
+figures and the downloads. This folder only holds the configuration, the style sheet and
+the figure captions (captions.toml).
+
+Nothing is loaded from the network when the site is viewed: MathJax 3 is served from
+``_static/mathjax`` (the files of the pinned PyPI package ``sphinx-mathjax-offline``),
+the theme's fonts and scripts are bundled by the theme, and MyST-NB's widget scripts (a
+CDN) are switched off.
+"""
+
+from __future__ import annotations
+
+from importlib.metadata import distribution
+from pathlib import Path
+
+project = "Audit of Li Feng et al. (2016)"
+author = "analysis"
+copyright = "the analysis project"
+html_title = "Audit: material-grabbing robot (Li Feng et al., 2016)"
+
+extensions = ["myst_nb", "sphinx.ext.mathjax"]
+myst_enable_extensions = ["dollarmath", "amsmath", "colon_fence"]
+myst_heading_anchors = 3
+
+# The notebooks were executed by analysis.app.report just before (fresh kernels, progress
+# on the console); here they are only rendered.
+nb_execution_mode = "off"
+nb_merge_streams = True
+nb_ipywidgets_js: dict = {}  # the default loads require.js and the widget manager from a CDN
+nb_output_stderr = "show"
+
+exclude_patterns = ["downloads/**", "figures/**", "**.ipynb_checkpoints"]
+suppress_warnings = ["mystnb.unknown_mime_type"]
+numfig = True
+numfig_format = {"figure": "Figure %s"}
+
+# --- MathJax 3, served locally ------------------------------------------------------------
+_MATHJAX = Path(str(distribution("sphinx-mathjax-offline").locate_file("sphinx-mathjax-offline")))
+html_static_path = ["_static", str(_MATHJAX / "static")]  # -> _static/mathjax/...
+mathjax_path = "mathjax/tex-chtml.js"
+
+# --- theme: sphinx-book-theme (sidebar contents, previous/next, search, print) ---------------
+html_theme = "sphinx_book_theme"
+html_css_files = ["report.css"]
+html_copy_source = True  # the header's download button offers the page source (.ipynb, .md)
+html_show_sourcelink = False
+html_last_updated_fmt = None
+html_theme_options = {
+    "home_page_in_toc": True,  # the start page is the first entry of the sidebar
+    "show_navbar_depth": 1,
+    "show_toc_level": 2,  # the page's own contents, right-hand side
+    "use_download_button": True,  # .ipynb/.md source and "print to PDF"
+    "use_fullscreen_button": False,
+    "use_repository_button": False,
+    "use_sidenotes": False,
+    "show_prev_next": True,
+    "navigation_with_keys": False,
+}

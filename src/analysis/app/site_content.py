@@ -1,0 +1,451 @@
+"""The report site's generated pages, figure captions and downloads (MyST Markdown).
+
+:mod:`analysis.app.report` executes the notebooks and runs Sphinx; this module writes what
+Sphinx reads besides the executed notebooks:
+
+* ``index.md``: the front page, rendered from :func:`analysis.app.frontpage.front_page_data`;
+* ``register.md``: the errata register (:func:`analysis.audit.register.render_markdown`);
+* ``figures.md``: every figure the notebooks saved, grouped by notebook, with its caption;
+* ``downloads.md``: the generated PLC programs and memory maps, the register CSVs, the
+  Table 4 audit CSV, the executed notebooks (and the PDF when one was printed);
+
+and it prepares each executed notebook for the site (:func:`prepare_notebook`): a figure
+that a cell saved with :func:`analysis.app.plotting.save_figure` is shown as a numbered
+figure with its caption and SVG/PNG links, in place of the inline image and the printed
+file names; widget outputs, which need a kernel, become a note.
+
+Figure captions come from data, never from file names (:func:`figure_captions`): the sidecar
+``<stem>.json`` that ``save_figure(..., caption=...)`` writes, else the entry for the stem in
+``docs/site/captions.toml``. A figure with neither is shown with a visible
+"caption missing" notice (and the browser tests fail on it).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import re
+import tomllib
+from collections.abc import Iterable
+from dataclasses import dataclass
+from pathlib import Path
+
+import nbformat
+import pandas as pd
+
+from analysis.app.frontpage import Verdict
+
+__all__ = [
+    "CAPTIONS_TOML",
+    "MISSING_CAPTION",
+    "Download",
+    "downloads_md",
+    "figure_captions",
+    "figures_md",
+    "front_page_md",
+    "prepare_notebook",
+    "register_md",
+    "saved_stems",
+    "write_downloads",
+]
+
+PROJECT = Path(__file__).resolve().parents[3]
+SITE = PROJECT / "docs" / "site"
+CAPTIONS_TOML = SITE / "captions.toml"
+MISSING_CAPTION = "Caption missing: pass caption=... to save_figure() for"
+WIDGET_MIME = "application/vnd.jupyter.widget-view+json"
+WIDGET_NOTE = (
+    "*Interactive widget (sliders, branch picker, 3D view). A static page has no Python "
+    "kernel to drive it: run `make lab` and open `notebooks/{name}` to use it.*"
+)
+# what ``print(save_figure(fig, stem))`` prints: ['05-workspace-xz.svg', '05-workspace-xz.png']
+_SAVED = re.compile(r"^\['(?P<stem>\d\d-[^'\s/]+)\.svg', '(?P=stem)\.png'\]\s*$", re.M)
+
+
+# --------------------------------------------------------------------------------------------
+# captions
+# --------------------------------------------------------------------------------------------
+def figure_captions(fig_dir: Path, fallback: Path | None = CAPTIONS_TOML) -> dict[str, str]:
+    """Caption of every figure (``<stem>.png``) in ``fig_dir``; '' where none is recorded.
+
+    The sidecar ``<stem>.json`` written by ``save_figure(..., caption=...)`` wins; else
+    ``[captions]`` in ``fallback`` (TOML, stem = caption).
+    """
+    table: dict[str, str] = {}
+    if fallback is not None and Path(fallback).exists():
+        with Path(fallback).open("rb") as fh:
+            table = {str(k): str(v) for k, v in tomllib.load(fh).get("captions", {}).items()}
+    out = {}
+    for png in sorted(Path(fig_dir).glob("*.png")):
+        side = png.with_suffix(".json")
+        caption = ""
+        if side.exists():
+            caption = str(json.loads(side.read_text(encoding="utf-8")).get("caption", ""))
+        out[png.stem] = " ".join((caption or table.get(png.stem, "")).split())
+    return out
+
+
+def _code(text: str) -> str:
+    """Text that can sit between single backticks (an inline literal)."""
+    return " ".join(text.replace("`", "'").split())[:300]
+
+
+def _role(text: str) -> str:
+    """Link text inside a role (``{doc}`text <target>```): no backticks or angle brackets."""
+    return " ".join(text.replace("`", "'").replace("<", "‹").replace(">", "›").split())
+
+
+def _inline(text: str) -> str:
+    """Plain text as MyST inline content (no markup, roles or maths triggered)."""
+    return re.sub(r"([\\`*_\[\]<>{}$|#])", r"\\\1", text)
+
+
+def _figure(stem: str, caption: str, *, name: bool, evidence: str | None = None) -> str:
+    """A MyST figure: the PNG, its caption, SVG/PNG downloads, optionally where it comes from."""
+    cap = _inline(caption) if caption else f"**{MISSING_CAPTION} `{stem}`.**"
+    alt = caption.replace("\n", " ") if caption else f"figure {stem} (no caption recorded)"
+    links = f"{{download}}`SVG </figures/{stem}.svg>` · {{download}}`PNG </figures/{stem}.png>`"
+    if evidence:
+        links += f" · in {evidence}"
+    lines = [
+        f":::{{figure}} /figures/{stem}.png",
+        *([f":name: fig-{stem}"] if name else []),
+        f":alt: {alt}",
+        "",
+        f"{cap} ({links})",
+        ":::",
+        "",
+    ]
+    return "\n".join(lines)
+
+
+# --------------------------------------------------------------------------------------------
+# notebooks
+# --------------------------------------------------------------------------------------------
+def saved_stems(cell: nbformat.NotebookNode) -> list[str]:
+    """Figure stems a code cell saved, from the names ``print(save_figure(...))`` printed."""
+    stems: list[str] = []
+    for o in cell.get("outputs", []):
+        if o.get("output_type") == "stream":
+            for m in _SAVED.finditer(o.get("text", "")):
+                if m["stem"] not in stems:
+                    stems.append(m["stem"])
+    return stems
+
+
+def prepare_notebook(
+    nb: nbformat.NotebookNode,
+    name: str,
+    captions: dict[str, str],
+    *,
+    seconds: float | None = None,
+    failure: str | None = None,
+) -> tuple[nbformat.NotebookNode, list[str]]:
+    """A copy of an executed notebook for the site, and the figure stems it places.
+
+    * a code cell that saved figures (in ``captions``, i.e. found in the figure folder)
+      loses the printed file names and its inline images (when there are no more images
+      than saved figures: they are the same figures), and is followed by a Markdown cell
+      with one captioned figure per stem, labelled ``fig-<stem>``;
+    * widget outputs become a note (a static page has no kernel);
+    * after the first heading, a note says the notebook was executed for this build and
+      links the executed ``.ipynb``; if it raised (``failure``), an error box at the top says so.
+
+    ``nb`` itself is not modified.
+    """
+    nb = nbformat.from_dict(json.loads(json.dumps(nb)))  # deep copy
+    nb.metadata.pop("widgets", None)
+    cells, placed = [], []
+    for cell in nb.cells:
+        cells.append(cell)
+        if cell.cell_type != "code":
+            continue
+        for o in cell.get("outputs", []):
+            if WIDGET_MIME in o.get("data", {}):
+                o["data"] = {"text/markdown": WIDGET_NOTE.format(name=name)}
+                o.pop("metadata", None)
+        stems = [s for s in saved_stems(cell) if s in captions and s not in placed]
+        if not stems:
+            continue
+        images = [o for o in cell.outputs if "image/png" in o.get("data", {})]
+        keep = []
+        for o in cell.outputs:
+            if o.get("output_type") == "stream":
+                o["text"] = _SAVED.sub("", o["text"]).strip("\n")
+                if o["text"]:
+                    o["text"] += "\n"
+                    keep.append(o)
+            elif o in images and len(images) <= len(stems):
+                continue
+            else:
+                keep.append(o)
+        cell.outputs = keep
+        cells.append(
+            nbformat.v4.new_markdown_cell(
+                "\n".join(_figure(s, captions[s], name=True) for s in stems)
+            )
+        )
+        placed += stems
+    for i, cell in enumerate(cells):
+        if cell.cell_type == "markdown" and re.search(r"^# ", cell.source, re.M):
+            took = f" in {seconds:.1f} s" if seconds is not None else ""
+            note = (
+                f":::{{note}}\nExecuted top to bottom in a fresh kernel for this build{took}. "
+                f"The executed notebook: {{download}}`{name} </downloads/notebooks/{name}>`; "
+                "the stored one in `notebooks/` is the nbval reference.\n:::\n"
+            )
+            cells.insert(i + 1, nbformat.v4.new_markdown_cell(note))
+            break
+    if failure:  # first thing on the page
+        box = (
+            ":::{error}\nThis notebook **failed** when executed for this build: "
+            f"`{_code(failure)}`. The outputs below stop at the failing cell.\n:::\n"
+        )
+        cells.insert(0, nbformat.v4.new_markdown_cell(box))
+    nb.cells = cells
+    return nb, placed
+
+
+# --------------------------------------------------------------------------------------------
+# pages
+# --------------------------------------------------------------------------------------------
+def _md_table(df: pd.DataFrame) -> str:
+    """A GFM pipe table (MyST renders it, Sphinx search indexes it)."""
+    show_index = df.index.name is not None
+    cols = ([df.index.name] if show_index else []) + [str(c) for c in df.columns]
+
+    def cell(v) -> str:
+        return _inline(" ".join(str(v).split()))
+
+    rows = [
+        ([cell(i)] if show_index else []) + [cell(v) for v in r]
+        for i, r in zip(df.index, df.itertuples(index=False), strict=True)
+    ]
+    lines = ["| " + " | ".join(cell(c) for c in cols) + " |", "|" + "---|" * len(cols)]
+    lines += ["| " + " | ".join(r) + " |" for r in rows]
+    return "\n".join(lines) + "\n"
+
+
+def _evidence(links: Iterable[tuple[str, str]], titles: dict[str, str]) -> str:
+    parts = []
+    for page, label in links:
+        if page.startswith("notebooks/"):
+            stem = page.split("/", 1)[1]
+            if stem not in titles:  # not part of this build
+                parts.append(f"notebook {_inline(stem)}")
+                continue
+            label = titles[stem]
+            label = label if label.startswith(stem[:2]) else f"{stem[:2]} · {label}"
+        parts.append(f"{{doc}}`{_role(label)} </{page}>`")
+    return "**Evidence:** " + " · ".join(parts)
+
+
+def front_page_md(
+    sections: list[Verdict],
+    captions: dict[str, str],
+    homes: dict[str, str],
+    titles: dict[str, str],
+    intro: str,
+    toc: dict[str, list[str]],
+    problems: dict[str, str] | None = None,
+) -> str:
+    """``index.md``: title, intro, one section per :class:`Verdict`, then the contents.
+
+    ``homes`` maps a figure stem to the notebook page that shows it (for the link back),
+    ``titles`` a notebook stem to its title, ``toc`` a toctree caption to its documents,
+    ``problems`` what failed in this build (shown first, in an error box).
+    """
+    out = ["# Audit of Li Feng et al. (2016), a 3R material-grabbing robot", "", intro, ""]
+    if problems:
+        out += [":::{error}", "**This build is incomplete.**", ""]
+        for what, why in problems.items():
+            where = (
+                f"{{doc}}`{_role(titles[what])} </notebooks/{what}>`" if what in titles else what
+            )
+            out.append(f"- {where}: `{_code(why)}`")
+        out += [":::", ""]
+    for s in sections:
+        out += [f"## {s.title}", ""]
+        if s.counts:
+            cards = "".join(
+                f'<div class="verdict-count"><span class="verdict-number">{n:,}</span>'
+                f'<span class="verdict-label">{label}</span></div>'
+                for label, n in s.counts
+            )
+            out += [f'<div class="verdict-counts">{cards}</div>', ""]
+        out += [s.verdict, ""]
+        if s.table is not None:
+            out += [_md_table(s.table), ""]
+        for stem in s.figures:
+            if stem in captions:
+                home = homes.get(stem)
+                where = (
+                    f"{{ref}}`notebook {home.split('/')[-1][:2]} <fig-{stem}>`" if home else None
+                )
+                out.append(_figure(stem, captions[stem], name=False, evidence=where))
+        out += [_evidence(s.evidence, titles), ""]
+    for caption, docs in toc.items():
+        out += ["```{toctree}", f":caption: {caption}", ":maxdepth: 1", "", *docs, "```", ""]
+    return "\n".join(out)
+
+
+def register_md() -> str:
+    """``register.md``: the README's audit block and every register row with its test."""
+    from analysis.audit import register
+
+    body = register.render_markdown().splitlines()
+    if body and body[0].startswith("_Generated"):
+        body = body[1:]
+    out = [
+        "# The errata register",
+        "",
+        "Each root cause the audit found is stated once, with every place it shows in the "
+        "paper (its manifestations); each has the test that proves it. Long texts are "
+        "shortened here; the CSV files on the {doc}`downloads page </downloads>` have them "
+        "in full.",
+        "",
+        "## Root causes, paper by paper",
+        *body,
+        "",
+    ]
+    for paper in register.available():
+        reg = register.load(paper)
+        out += [
+            f"## Every row of `data/errata/{paper}.csv` and its test",
+            "",
+            "A cause row has no *cause*; its manifestations name it. The test (a `pytest` "
+            "node id) fails if the printed form were right.",
+            "",
+            _md_table(reg[["id", "cause", "status", "check"]].set_index("id")),
+        ]
+    return "\n".join(out)
+
+
+def figures_md(captions: dict[str, str], homes: dict[str, str], titles: dict[str, str]) -> str:
+    """``figures.md``: every saved figure, grouped by notebook number, with its caption."""
+    out = [
+        "# Figures",
+        "",
+        "Every figure the notebooks saved in this build, with its caption; SVG and PNG "
+        "downloads under each.",
+        "",
+    ]
+    by_nb: dict[str, list[str]] = {}
+    for stem in captions:
+        by_nb.setdefault(stem[:2], []).append(stem)
+    for num, stems in sorted(by_nb.items()):
+        nb = next((t for t in titles if t.startswith(num)), None)
+        head = titles[nb] if nb else f"Notebook {num}"
+        head = head if head.startswith(num) else f"{num} · {head}"
+        out += [f"## {_inline(head)}", ""]
+        for stem in stems:
+            home = homes.get(stem)
+            where = f"{{ref}}`notebook {num} <fig-{stem}>`" if home else None
+            out.append(_figure(stem, captions[stem], name=False, evidence=where))
+    return "\n".join(out)
+
+
+# --------------------------------------------------------------------------------------------
+# downloads
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class Download:
+    """A file offered on the downloads page (``path`` relative to the site source)."""
+
+    path: str
+    group: str
+    what: str
+    how: str = ""
+
+
+def write_downloads(src: Path) -> list[Download]:
+    """Write the PLC programs, memory maps and audit CSVs under ``src/downloads``."""
+    import shutil
+
+    from analysis.audit import register, table4
+    from analysis.paths import data_dir
+    from analysis.plc.generate import generate
+
+    dl = src / "downloads"
+    (dl / "plc").mkdir(parents=True, exist_ok=True)
+    (dl / "data").mkdir(parents=True, exist_ok=True)
+    items = []
+    for dialect, kind in (("s7-200", "S7-200 STL (Micro/WIN text)"), ("s7-300", "S7-300 AWL")):
+        prog, mmap = f"plc/ik_{dialect}.awl", f"plc/ik_{dialect}_map.json"
+        text, mjson = generate(dialect)
+        (dl / prog).write_text(text, encoding="utf-8", newline="")
+        (dl / mmap).write_text(mjson, encoding="utf-8")
+        how = (
+            f"python -m analysis stl --dialect {dialect} -o ik_{dialect}.awl "
+            f"--map ik_{dialect}_map.json"
+        )
+        items += [
+            Download(prog, "PLC programs", f"Corrected IK program (front-up), {kind}", how),
+            Download(
+                mmap,
+                "PLC programs",
+                f"Memory map of the {dialect.upper()} program: every input/output address "
+                "(MAP.json)",
+                how,
+            ),
+        ]
+    for paper in register.available():
+        name = f"{paper}.csv"
+        shutil.copyfile(register.register_path(paper), dl / "data" / name)
+        what = (
+            f"The errata register of {register.register(paper).title}: each root cause, its "
+            "manifestations beneath, every row with the test that proves it"
+        )
+        items.append(Download(f"data/{name}", "Audit tables", what, f"data/errata/{name}"))
+    items_csv = data_dir() / "errata" / "grabber_items.csv"
+    if items_csv.exists():
+        shutil.copyfile(items_csv, dl / "data" / items_csv.name)
+        items.append(
+            Download(
+                f"data/{items_csv.name}",
+                "Audit tables",
+                "Every audited printed item of seed 000 with its verdict (items that hold too)",
+                f"data/errata/{items_csv.name}",
+            )
+        )
+    table4.report_table().to_csv(dl / "data" / "table4_audit.csv")
+    items.append(
+        Download(
+            "data/table4_audit.csv",
+            "Audit tables",
+            "Table 4 row by row: printed and corrected angles, FK error, verdict and cause",
+            "analysis.audit.table4.report_table()",
+        )
+    )
+    return items
+
+
+def downloads_md(src: Path, items: list[Download]) -> str:
+    """``downloads.md``: one table per group, each file with its size and SHA-256."""
+    out = [
+        "# Downloads",
+        "",
+        "Everything below was generated by this build. Sizes in bytes; the SHA-256 digest "
+        "lets you check a copy.",
+        "",
+    ]
+    groups: dict[str, list[Download]] = {}
+    for it in items:
+        groups.setdefault(it.group, []).append(it)
+    for group, rows in groups.items():
+        out += [
+            f"## {group}",
+            "",
+            "| file | what | bytes | SHA-256 | made by |",
+            "|---|---|---|---|---|",
+        ]
+        for it in rows:
+            f = src / "downloads" / it.path
+            data = f.read_bytes()
+            out.append(
+                f"| {{download}}`{Path(it.path).name} </downloads/{it.path}>` | {_inline(it.what)} "
+                f"| {len(data):,} | `{hashlib.sha256(data).hexdigest()}` "
+                f"| {'`' + it.how + '`' if it.how else ''} |"
+            )
+        out.append("")
+    return "\n".join(out)

@@ -1,0 +1,1 @@
+"""Browser tests of the report site (Playwright + Debian Chromium)."""
