@@ -32,7 +32,16 @@ from analysis.plc.memmap import MemoryMap
 from analysis.plc.runner import AwlRunner, RunResult
 from analysis.plc.verify import Comparison, compare
 
-__all__ = ["SENTINEL", "PlcRun", "half_pulse_targets", "program", "run", "sweep_targets"]
+__all__ = [
+    "SENTINEL",
+    "PlcRun",
+    "cut_targets",
+    "half_pulse_targets",
+    "program",
+    "real_errors",
+    "run",
+    "sweep_targets",
+]
 
 SENTINEL = -999_999
 """Written to c1..c4 before each cycle: a refused target must leave it there."""
@@ -84,8 +93,40 @@ def half_pulse_targets(arm: Arm, n: int, rng: np.random.Generator) -> npt.NDArra
     return np.concatenate(out)[:n]
 
 
+def cut_targets(arm: Arm, n: int, rng: np.random.Generator) -> npt.NDArray[np.float64]:
+    """Targets where theta1, theta2 or theta4 (the wrapped joints of the closed form) is
+    +-180 deg, or within 1e-9 .. 1e-4 rad of it: level configurations inside the elbow stop
+    with that joint set there (theta2 or theta4 moved with it, to keep the gripper level),
+    the waist facing the target. Float32 and float64 may wrap such an angle to opposite ends
+    of (-180, 180]: the same joint position, counted one revolution apart."""
+    from analysis.audit.palletizer_checks import level_configurations
+
+    out = []
+    lo, hi = arm.limits[2]
+    k = 0
+    while sum(len(o) for o in out) < n:
+        q = level_configurations(arm, 4 * n, rng, margin_deg=5.0)
+        j = np.array([0, 1, 3])[(np.arange(len(q)) + k) % 3]
+        off = rng.choice([-1.0, 0.0, 1.0], len(q)) * 10.0 ** rng.uniform(-9, -4, len(q))
+        rows = np.arange(len(q))
+        q[rows, j] = np.pi + off
+        two = j == 1
+        q[two, 3] = np.pi / 2 - q[two, 1] - q[two, 2]
+        four = j == 3
+        q[four, 1] = np.pi / 2 - q[four, 2] - q[four, 3]
+        q = (q + np.pi) % (2 * np.pi) - np.pi  # the same positions, angles in [-pi, pi)
+        q[:, 2] = np.where(q[:, 2] < 0, q[:, 2] + 2 * np.pi, q[:, 2])  # theta3 unwrapped
+        p = arm.fk(q)
+        keep = (p[:, 0] * np.cos(q[:, 0]) + p[:, 1] * np.sin(q[:, 0]) > 1.0) & (
+            (q[:, 2] > lo + 1e-3) & (q[:, 2] < hi - 1e-3)
+        )
+        out.append(p[keep])
+        k += 1
+    return np.concatenate(out)[:n]
+
+
 def sweep_targets(
-    arm: Arm, n_random: int = 600, seed: int = 20210401, n_half: int = 160
+    arm: Arm, n_random: int = 600, seed: int = 20210401, n_half: int = 160, n_cut: int = 60
 ) -> pd.DataFrame:
     """Test targets for the palletizer program, labelled by kind.
 
@@ -96,8 +137,8 @@ def sweep_targets(
     ``outer-1mm`` (the same about L1 + L2), ``shoulder`` (wrist within 1 mm of the shoulder,
     exactly on it for one: L4 = 0, status "degenerate" when L1 = L2), ``axis`` (0 .. 1 mm from
     the base axis, 5 exactly on it: status "base axis"), ``half-pulse``
-    (:func:`half_pulse_targets`), ``bad`` (NaN/inf) and ``huge`` (finite, squares overflow
-    float32).
+    (:func:`half_pulse_targets`), ``bad`` (NaN/inf), ``huge`` (finite, squares overflow
+    float32) and ``cut`` (:func:`cut_targets`, drawn last so the other kinds do not change).
 
     Returns
     -------
@@ -150,6 +191,8 @@ def sweep_targets(
     parts.append(("half-pulse", half_pulse_targets(arm, n_half, rng)))
     parts.append(("bad", np.array([[np.nan, 100, 50], [100, np.inf, 50], [100, 100, -np.inf]])))
     parts.append(("huge", np.array([[1e20, -1e20, 50.0], [3e38, 0.0, 0.0], [-1e30, 1e30, -1e30]])))
+    if n_cut:
+        parts.append(("cut", cut_targets(arm, n_cut, rng)))
     rows = [pd.DataFrame(p, columns=["x_mm", "y_mm", "z_mm"]).assign(kind=k) for k, p in parts]
     df = pd.concat(rows, ignore_index=True)
     return df[["kind", "x_mm", "y_mm", "z_mm"]]
@@ -208,8 +251,9 @@ def run(
 
 def real_errors(arm: Arm, targets: pd.DataFrame, dialect: str = "s7-200") -> pd.DataFrame:
     """Largest |float32 value handed to ROUND - exact pulse value| [pulses] per target kind
-    and joint, over the targets both Python and the program solve (the float32 model of the
-    program, :func:`analysis.plc.model.predict`, which reproduces awlsim bit for bit)."""
+    and joint, modulo one revolution (at the wrap cut the two may be a turn apart), over the
+    targets both Python and the program solve (the float32 model of the program,
+    :func:`analysis.plc.model.predict`, which reproduces awlsim bit for bit)."""
     from analysis.plc.approx import PlcFloat32Ops
     from analysis.plc.model import predict
     from analysis.plc.verify import reference_pulses
@@ -219,7 +263,9 @@ def real_errors(arm: Arm, targets: pd.DataFrame, dialect: str = "s7-200") -> pd.
     _, ok, _, exact = reference_pulses(arm, xyz, arm.branches[0], rounding)
     model = predict(arm.params, xyz, arm.branches[0], ops=PlcFloat32Ops(dialect))
     both = ok & model.reachable
-    err = np.abs(model.counts.astype(float) - exact)
+    ppr = np.asarray(arm.params.pulses_per_rev, dtype=float)
+    diff = model.counts.astype(float) - exact
+    err = np.abs(diff - ppr * np.round(diff / ppr))  # modulo one revolution (the wrap cut)
     cols = [f"c{j + 1}" for j in range(err.shape[1])]
     df = pd.DataFrame(err[both], columns=cols).assign(kind=targets["kind"].to_numpy()[both])
     return df.groupby("kind").max()
