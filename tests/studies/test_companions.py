@@ -1,156 +1,19 @@
-"""Companion papers (seeds 001, 002, 004) against independent references: the D-H chain,
-Pinocchio, pin.exp6, a linear solve of seed 004's constraint system, finite differences."""
+"""Seed 004's cubic trajectories (analysis.studies.companions) against independent
+references: a linear solve of the constraint system, finite differences, sampled maxima.
+
+Seed 001 (palletizer) and seed 002 (POE) moved: tests/audit/test_palletizer_checks.py,
+tests/kinematics/test_palletizer_arm.py and tests/kinematics/test_poe.py."""
 
 import numpy as np
-import pinocchio as pin
 import pytest
 
-from analysis.kinematics.pinocchio_model import PinocchioArm
 from analysis.kinematics.pulses import angles_to_pulses
 from analysis.studies.companions import (
-    PRINTED_FORMULAS,
     cubic_coefficients,
     cubic_trajectory,
-    exp_twist,
-    gamma_printed,
-    load_palletizer,
-    palletizer_ik_printed,
     peak_pulse_rates,
-    poe_fk,
-    screw_axes,
     trajectory_pulses,
 )
-
-# Lengths are a few hundred mm; 1e-8 mm is far above float64 round-off (~1e-13 mm) and far
-# below anything physical, so a wrong formula cannot pass.
-ATOL_MM = 1e-8
-
-
-@pytest.fixture(scope="module")
-def pal():
-    return load_palletizer()
-
-
-def reachable_targets(pal, rng, n=400):
-    """Seeded random grasp points with L4 strictly inside the reach (acos well-conditioned)."""
-    G = rng.uniform([-450, -450, -300], [450, 450, 450], size=(4 * n, 3))
-    rho = np.hypot(G[:, 0], G[:, 1])
-    L4 = np.hypot(rho - pal.L3, G[:, 2] + pal.h)
-    keep = (L4 < 0.99 * (pal.L1 + pal.L2)) & (L4 > 0.05 * (pal.L1 + pal.L2)) & (rho > 1)
-    assert keep.sum() >= n
-    return G[keep][:n]
-
-
-# ----------------------------------------------------------------------------- seed 001
-def test_palletizer_ik_round_trip(pal, rng):
-    G = reachable_targets(pal, rng)
-    np.testing.assert_allclose(pal.fk(pal.ik(G)), G, atol=ATOL_MM)
-
-
-def test_palletizer_dh_matches_pinocchio(pal, rng):
-    q = rng.uniform(-np.pi, np.pi, size=(50, 4))
-    np.testing.assert_allclose(pal.fk(q), PinocchioArm(pal.table).fk(q), atol=ATOL_MM)
-
-
-def test_palletizer_gripper_stays_level(pal, rng):
-    """Section 3 assumption: the gripper stays parallel to the base (only turned by gamma)."""
-    G = reachable_targets(pal, rng, 100)
-    q = pal.ik(G)
-    R = pal.table.fk(q)[:, :3, :3]
-    R_home = pal.table.fk([0, -np.pi / 2, np.pi / 2, np.pi / 2])[:3, :3]
-    c, s = np.cos(q[:, 0]), np.sin(q[:, 0])
-    Rz = np.zeros((len(q), 3, 3))
-    Rz[:, 0, 0], Rz[:, 0, 1], Rz[:, 1, 0], Rz[:, 1, 1], Rz[:, 2, 2] = c, -s, s, c, 1
-    np.testing.assert_allclose(R, Rz @ R_home, atol=1e-12)
-
-
-def test_palletizer_initial_pose_is_eq7(pal):
-    """The initial pose (upper arm up, forearm forward) gives eq. 7's D-H angles."""
-    G = [pal.L2 + pal.L3, 0.0, pal.L1 - pal.h]
-    np.testing.assert_allclose(pal.motor_angles(G), 0.0, atol=1e-12)
-    np.testing.assert_allclose(pal.ik(G), [0, -np.pi / 2, np.pi / 2, np.pi / 2], atol=1e-12)
-
-
-def test_palletizer_ik_vectorized_shape(pal, rng):
-    G = reachable_targets(pal, rng, 24).reshape(2, 3, 4, 3)
-    q = pal.ik(G)
-    assert q.shape == (2, 3, 4, 4)
-    np.testing.assert_allclose(q[1, 2, 3], pal.ik(G[1, 2, 3]), atol=1e-15)
-
-
-@pytest.mark.parametrize(
-    ("target", "match"),
-    [([0.0, 0.0, 100.0], "base axis"), ([500.0, 0.0, 130.0], "L4 = "), ([50.0, 0, -70.0], "L4")],
-)
-def test_palletizer_bad_targets_raise(pal, target, match):
-    with pytest.raises(ValueError, match=match):
-        pal.ik(target)
-
-
-def test_gamma_printed_quadrants():
-    """Eq. 6 as printed: right in quadrants 1 and 4 (signed arctan), wrong in 2 and 3."""
-    x = np.array([200.0, -200.0, -200.0, 200.0])
-    y = np.array([100.0, 100.0, -100.0, -100.0])
-    truth = np.degrees(np.arctan2(y, x))
-    signed = np.degrees(gamma_printed(x, y))
-    acute = np.degrees(gamma_printed(x, y, "abs"))
-    np.testing.assert_allclose(signed[[0, 3]], truth[[0, 3]], atol=1e-12)
-    np.testing.assert_allclose(signed[[1, 2]], [206.56505118, -63.43494882], atol=1e-7)
-    np.testing.assert_allclose(acute[[0, 1]], truth[[0, 1]], atol=1e-12)
-    assert not np.isclose(acute[2], truth[2]) and not np.isclose(acute[3], truth[3])
-    with pytest.raises(ValueError, match="undefined"):
-        gamma_printed(-100.0, 0.0)
-
-
-@pytest.mark.parametrize(
-    ("formula", "target"),
-    [
-        ("gamma", [-200.0, -100.0, 80.0]),
-        ("alpha2", [30.0, 10.0, 100.0]),  # wrist behind the base axis: rho < L3
-        ("alpha", [250.0, 0.0, 130.0]),  # even the initial pose
-        ("theta4", [250.0, 0.0, 130.0]),
-    ],
-)
-def test_each_printed_formula_misses(pal, formula, target):
-    assert np.linalg.norm(pal.fk(palletizer_ik_printed(pal, target, (formula,))) - target) > 10
-    assert np.linalg.norm(pal.fk(palletizer_ik_printed(pal, target, ())) - target) < ATOL_MM
-
-
-def test_printed_formula_names_checked(pal):
-    assert set(PRINTED_FORMULAS) == {"gamma", "alpha2", "alpha", "theta4"}
-    with pytest.raises(ValueError, match="unknown formula"):
-        palletizer_ik_printed(pal, [250.0, 0, 130], ("beta",))
-
-
-# ----------------------------------------------------------------------------- seed 002
-def test_poe_equals_arm_dh_and_pinocchio(arm, rng):
-    q = rng.uniform(-np.pi, np.pi, size=(60, 3))
-    T = poe_fk(q)
-    np.testing.assert_allclose(T[:, :3, 3], arm.fk(q), atol=ATOL_MM)
-    np.testing.assert_allclose(T, arm.params.dh_table().fk(q), atol=ATOL_MM)
-    pin_arm = PinocchioArm(arm.params.dh_table())
-    for qk, Tk in zip(q[:10], T[:10], strict=True):
-        np.testing.assert_allclose(Tk, pin_arm.placement(qk), atol=ATOL_MM)
-
-
-def test_exp_twist_matches_pin_exp6(rng):
-    S, _ = screw_axes()
-    theta = rng.uniform(-4, 4, size=7)
-    for Si in S:
-        T = exp_twist(Si, theta)
-        for th, Tk in zip(theta, T, strict=True):
-            ref = pin.exp6(np.concatenate([Si[3:], Si[:3]]) * th).homogeneous  # (v, w)
-            np.testing.assert_allclose(Tk, ref, atol=1e-9)
-
-
-def test_home_pose_and_bad_screw(arm):
-    np.testing.assert_allclose(
-        poe_fk(np.zeros(3)), arm.params.dh_table().fk(np.zeros(3)), atol=1e-12
-    )
-    with pytest.raises(ValueError, match="unit omega"):
-        exp_twist([0, 0, 2, 0, 0, 0], 0.1)
-    with pytest.raises(ValueError, match=r"expected \(\.\.\., 3\)"):
-        poe_fk(np.zeros(4))
 
 
 # ----------------------------------------------------------------------------- seed 004
