@@ -28,10 +28,18 @@ __all__ = [
     "Comparison",
     "compare",
     "half_pulse_targets",
+    "input_columns",
     "reference_pulses",
     "sweep_targets",
     "table4_targets",
 ]
+
+
+def input_columns(arm: Arm) -> list[str]:
+    """Target columns of a targets table for ``arm``: ``x_mm, y_mm, z_mm`` for a point
+    (inputs px, py, pz), else the closed form's input names (the GR-1's pose)."""
+    inputs = list(arm.inputs)
+    return ["x_mm", "y_mm", "z_mm"] if inputs == ["px", "py", "pz"] else inputs
 
 
 def table4_targets() -> npt.NDArray[np.float64]:
@@ -114,7 +122,8 @@ def sweep_targets(
 def reference_pulses(
     arm: Arm, targets: npt.ArrayLike, branch: str | None = None, rounding: str = "half-away"
 ) -> tuple[npt.NDArray, npt.NDArray, npt.NDArray, npt.NDArray]:
-    """Python's answer (float64) for targets (N, 3) given as float32 REALs, as the PLC sees them.
+    """Python's answer (float64) for targets (N, k) given as float32 REALs, as the PLC sees
+    them (k = the arm's inputs: 3 for a point, 6 for the GR-1's pose).
 
     Returns
     -------
@@ -188,6 +197,8 @@ def compare(
 ) -> Comparison:
     """Compare PLC results (run with ``sentinel`` in the outputs) with Python and the model.
 
+    ``targets`` has a ``kind`` column and the target columns :func:`input_columns` names.
+
     The Python reference is float64 (:func:`reference_pulses`, with the dialect's tie rule);
     the model is :func:`analysis.plc.model.predict` with the dialect's REAL arithmetic
     (``trig`` "native" only on the S7-300), which gives the float32 value each count had
@@ -201,7 +212,8 @@ def compare(
 
     branch = branch or arm.branches[0]
     rounding = "half-away" if dialect == "s7-200" else "half-even"
-    xyz = targets[["x_mm", "y_mm", "z_mm"]].to_numpy(dtype=float)
+    cols = input_columns(arm)
+    xyz = targets[cols].to_numpy(dtype=float)
     ref, ok, status, exact = reference_pulses(arm, xyz, branch, rounding)
     model = predict(arm.params, xyz, branch, ops=PlcFloat32Ops(dialect, trig))
     model_exact = bool(
@@ -218,9 +230,7 @@ def compare(
         rows.append(
             {
                 "kind": targets["kind"].iloc[i],
-                "x_mm": xyz[i, 0],
-                "y_mm": xyz[i, 1],
-                "z_mm": xyz[i, 2],
+                **{c: xyz[i, k] for k, c in enumerate(cols)},
                 "joint": f"c{j + 1}",
                 "python": int(ref[i, j]),
                 "plc": int(result.pulses[i, j]),
@@ -229,7 +239,7 @@ def compare(
                 "plc_real": float(model.counts[i, j]),
             }
         )
-    columns = ["kind", "x_mm", "y_mm", "z_mm", "joint", "python", "plc", "exact", "dist_half"]
+    columns = ["kind", *cols, "joint", "python", "plc", "exact", "dist_half"]
     table = pd.DataFrame(rows, columns=[*columns, "plc_real"])
     err = np.abs(model.counts.astype(float) - exact)[both]
     half = (np.minimum(table["python"], table["plc"]) + 0.5).to_numpy(dtype=float)

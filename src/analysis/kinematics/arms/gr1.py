@@ -26,14 +26,18 @@ thesis printed)::
 
 Branches
 --------
-============  ==================  ========================================================
-name          theta1              elbow (physically above / below the shoulder-wrist line)
-============  ==================  ========================================================
-front-up      atan2(py, px)       above: theta3 <= 0
-front-down    atan2(py, px)       below: theta3 >= 0
-back-up       atan2(py, px) + pi  above: theta3 >= 0
-back-down     atan2(py, px) + pi  below: theta3 <= 0
-============  ==================  ========================================================
+============  ==================  ======================================
+name          theta1              elbow
+============  ==================  ======================================
+front-up      atan2(py, px)       up: theta3 <= 0
+front-down    atan2(py, px)       down: theta3 >= 0
+back-up       atan2(py, px) + pi  up: theta3 >= 0 (the plane is mirrored)
+back-down     atan2(py, px) + pi  down: theta3 <= 0
+============  ==================  ======================================
+
+"up": seen in the vertical plane of the pose with its azimuth pointing right, the elbow
+lies left of the line from the shoulder to the wrist: above it when the wrist is in front
+of the base axis (as for the paper's arm of seed 000), below it when the wrist lies behind.
 
 Back branches keep the approach vector ``a`` but reverse the hand (theta234 -> -theta234,
 theta5 -> theta5 + pi): their wrist lies at ``p + a4 x4`` instead of ``p - a4 x4``, so a pose
