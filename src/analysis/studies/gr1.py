@@ -181,9 +181,9 @@ def counter_presets(
     counter lets the joint turn, signed) and ``error_deg`` (moved - delta).
     """
     q0, qf = np.asarray(q0, dtype=float), np.asarray(qf, dtype=float)
-    res = np.broadcast_to(np.asarray(resolution_deg, dtype=float), q0.shape)
     if q0.shape != (5,) or qf.shape != (5,) or not np.isfinite([*q0, *qf]).all():
         raise ValueError(f"q0, qf must be 5 finite joint angles [rad], got {q0!r}, {qf!r}")
+    res = np.broadcast_to(np.asarray(resolution_deg, dtype=float), q0.shape)
     delta = np.degrees(qf - q0)
     exact = np.abs(delta) / res
     preset = np.floor(exact + 0.5).astype(np.int64)
