@@ -175,7 +175,7 @@ def ik(m, p, P, *, tol, theta1_on_axis=None, orientation_tol=ORIENTATION_TOL_RAD
         phi = m.select(on_axis, theta1_on_axis, phi)
         c1 = m.select(on_axis, m.cos(theta1_on_axis), c1)
         s1 = m.select(on_axis, m.sin(theta1_on_axis), s1)
-    c1, s1 = m.let("c1", c1), m.let("s1", s1)
+    c1, s1 = m.let("cos_theta1", c1), m.let("sin_theta1", s1)
     theta1 = m.let("theta1", m.wrap(phi))
     m.section("orientation n, o, a (eq. 3.15); a must lie in the arm plane: s1 ax - c1 ay = 0")
     (nx, ny, _), (ox, oy, _), (ax, ay, az) = rpy_columns(m, alpha, beta, gamma)
