@@ -16,9 +16,7 @@ import numpy as np
 import pytest
 
 from analysis.kinematics.status import Status
-from analysis.plc.emit import emit_s7200, emit_s7300
 from analysis.plc.generate import generate
-from analysis.plc.ir import build_program
 from analysis.plc.memmap import MemoryMap, default_map
 from analysis.plc.model import predict
 from analysis.plc.pose_targets import pose_sweep_targets
@@ -34,13 +32,15 @@ COLS = list(ARM.inputs)
 
 
 def _source(variant: str, branch: str):
-    if variant.startswith("s7-300"):
-        trig = "native" if variant == "s7-300-native" else "subroutine"
-        prog = build_program(ARM.params, branch, trig)
-        return emit_s7300(prog, startup_target=None), default_map("s7-300", COLS, 5), prog
-    prog = build_program(ARM.params, branch)
-    src = translate_s7200(emit_s7200(prog, startup_target=None)).awl
-    return src, default_map("s7-200", COLS, 5), prog
+    """AWL source, memory map and trig mode of the program ``plc.generate`` writes (the
+    ``stl`` command's path); the S7-200 text translated to AWL for awlsim."""
+    dialect = "s7-300" if variant.startswith("s7-300") else "s7-200"
+    trig = "native" if variant == "s7-300-native" else "subroutine"
+    text, map_json = generate(dialect, branch, trig, params=ARM.params)
+    mmap = MemoryMap.from_dict(json.loads(map_json))
+    src = text if dialect == "s7-300" else translate_s7200(text).awl
+    assert mmap == default_map(dialect, COLS, 5)
+    return src, mmap, trig
 
 
 @pytest.fixture(scope="module")
@@ -61,11 +61,11 @@ def targets():
     ],
 )
 def test_sweep_matches_python(variant, branch, targets):
-    src, mmap, prog = _source(variant, branch)
+    src, mmap, trig = _source(variant, branch)
     runner = AwlRunner(src, mmap)
     res = runner.solve(targets[COLS].to_numpy(), sentinel=SENTINEL)
     dialect = "s7-300" if variant.startswith("s7-300") else "s7-200"
-    cmp = compare(res, targets, ARM, branch, dialect, SENTINEL, prog.trig)
+    cmp = compare(res, targets, ARM, branch, dialect, SENTINEL, trig)
     assert cmp.n == 1044 and not runner.stopped  # no REAL compare saw a NaN
     assert cmp.model_exact  # the float32 model = awlsim, status and pulses, bit for bit
     assert cmp.status_mismatch == 0 and cmp.flag_mismatch == 0 and cmp.unchanged_ok
