@@ -434,9 +434,12 @@ def build_program(
         "ATAN2/ACOS: generated subroutines"
         if trig == "subroutine"
         else "ATAN/ACOS: native instructions",
-        "status: 0 ok, 1 out of reach, 2 inside reach, 3 base axis, 4 joint limits, "
-        + ("5 degenerate, " if Status.DEGENERATE in labels else "")
-        + "6 not finite",
+        "status: 0 ok, 1 out of reach, 2 inside reach, 3 base axis, 4 joint limits, 6 not finite"
+        + "".join(
+            f", {int(c)} {Status(c).text}"
+            for c in (Status.DEGENERATE, Status.ORIENTATION)
+            if c in labels
+        ),
     )
     return Program(
         code,

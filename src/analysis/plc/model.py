@@ -37,7 +37,8 @@ def program_body(m: Ops, params, p, branch: str, *, tol=PLC_TOL_MM, theta1_on_ax
 
     Returns a dict: ``c`` (pulse counts per joint, in ``m``), ``theta`` (the branch's
     angles), ``refusals`` [(Status, condition), ...] in the order the program tests them
-    (the closed form's, then the joint limits).
+    (the closed form's, then its ``branch_refusals`` for this branch, then the joint
+    limits).
     """
     cf = closed_form(params.description.closed_form)
     if branch not in cf.BRANCHES:
@@ -45,7 +46,7 @@ def program_body(m: Ops, params, p, branch: str, *, tol=PLC_TOL_MM, theta1_on_ax
     opts = {} if theta1_on_axis is None else {"theta1_on_axis": float(theta1_on_axis)}
     sol = cf.ik(m, p, dict(params), tol=tol, **opts)
     q = sol["branches"][branch]
-    refusals = list(sol["refusals"])
+    refusals = list(sol["refusals"]) + list(sol.get("branch_refusals", {}).get(branch, ()))
     limited = [(qj, j) for qj, j in zip(q, params.description.joints, strict=True)]
     limited = [(qj, j) for qj, j in limited if not j.unlimited]
     if limited:

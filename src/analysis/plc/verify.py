@@ -38,10 +38,18 @@ __all__ = [
     "compare",
     "cut_targets",
     "half_pulse_targets",
+    "input_columns",
     "reference_pulses",
     "sweep_targets",
     "table4_targets",
 ]
+
+
+def input_columns(arm: Arm) -> list[str]:
+    """Target columns of a targets table for ``arm``: ``x_mm, y_mm, z_mm`` for a point
+    (inputs px, py, pz), else the closed form's input names (the GR-1's pose)."""
+    inputs = list(arm.inputs)
+    return ["x_mm", "y_mm", "z_mm"] if inputs == ["px", "py", "pz"] else inputs
 
 
 def table4_targets() -> npt.NDArray[np.float64]:
@@ -153,7 +161,8 @@ def reference_pulses(
     *,
     theta1_on_axis: float | None = None,
 ) -> tuple[npt.NDArray, npt.NDArray, npt.NDArray, npt.NDArray]:
-    """Python's answer (float64) for targets (N, 3) given as float32 REALs, as the PLC sees them.
+    """Python's answer (float64) for targets (N, k) given as float32 REALs, as the PLC sees
+    them (k = the arm's inputs: 3 for a point, 6 for the GR-1's pose).
 
     ``theta1_on_axis`` as given to the program's generator (None: base axis refused).
 
@@ -237,6 +246,8 @@ def compare(
 ) -> Comparison:
     """Compare PLC results (run with ``sentinel`` in the outputs) with Python and the model.
 
+    ``targets`` has a ``kind`` column and the target columns :func:`input_columns` names.
+
     The Python reference is float64 (:func:`reference_pulses`, with the dialect's tie rule);
     the model is :func:`analysis.plc.model.predict` with the dialect's REAL arithmetic
     (``trig`` "native" only on the S7-300; ``theta1_on_axis`` as the program was generated
@@ -250,7 +261,8 @@ def compare(
     """
     branch = branch or arm.branches[0]
     rounding = "half-away" if dialect == "s7-200" else "half-even"
-    xyz = targets[["x_mm", "y_mm", "z_mm"]].to_numpy(dtype=float)
+    cols = input_columns(arm)
+    xyz = targets[cols].to_numpy(dtype=float)
     ref, ok, status, exact = reference_pulses(
         arm, xyz, branch, rounding, theta1_on_axis=theta1_on_axis
     )
@@ -274,9 +286,7 @@ def compare(
         rows.append(
             {
                 "kind": targets["kind"].iloc[i],
-                "x_mm": xyz[i, 0],
-                "y_mm": xyz[i, 1],
-                "z_mm": xyz[i, 2],
+                **{c: xyz[i, k] for k, c in enumerate(cols)},
                 "joint": f"c{j + 1}",
                 "python": int(ref[i, j]),
                 "plc": int(result.pulses[i, j]),
@@ -287,7 +297,7 @@ def compare(
                 "ppr": float(ppr[i, j]),
             }
         )
-    columns = ["kind", "x_mm", "y_mm", "z_mm", "joint", "python", "plc", "exact", "dist_half"]
+    columns = ["kind", *cols, "joint", "python", "plc", "exact", "dist_half"]
     table = pd.DataFrame(rows, columns=[*columns, "cut", "plc_real", "ppr"])
     lap = ppr * np.round((model.counts.astype(float) - exact) / ppr)
     err = np.abs(model.counts.astype(float) - lap - exact)[both]
