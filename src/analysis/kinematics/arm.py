@@ -48,6 +48,7 @@ from analysis.kinematics.solution import (
     as_points,
     check_joints,
     check_tol,
+    refusal_options,
     solve_body,
 )
 from analysis.kinematics.status import Status
@@ -303,6 +304,8 @@ class Arm:
         limits: bool = True,
         backend: str = "numpy",
         out: IKSolutions | None = None,
+        margin_mm: float = 0.0,
+        margin_rad: float = 0.0,
     ) -> IKSolutions:
         """Batch closed-form IK; never raises for unreachable targets.
 
@@ -325,10 +328,16 @@ class Arm:
         out : IKSolutions, optional
             Preallocated result (compiled backend; see :func:`~analysis.kinematics.compiled.
             allocate`), reused to avoid touching fresh memory.
+        margin_mm, margin_rad : float
+            Refuse a band around the boundaries, as the generated PLC programs do: within
+            ``margin_mm`` inside a reach shell or of a singular set, within ``margin_rad`` of
+            the arm's angular tolerance (:func:`~analysis.kinematics.solution.
+            refusal_options`; numpy backend). Joint limits stay as described.
         """
         names = self.branch_names(branches)
         p = as_points(p, inputs=self.inputs)
         tol = check_tol(tol)
+        options = refusal_options(tol, margin_mm, margin_rad)
         lim = self.limits if limits else ()
         if theta1_on_axis is not None:
             t = np.asarray(theta1_on_axis, dtype=float)
@@ -337,12 +346,18 @@ class Arm:
         if backend == "compiled":
             if theta1_on_axis is not None:
                 raise ValueError("the compiled backend takes no theta1_on_axis; use numpy")
+            if margin_mm or margin_rad:
+                raise ValueError("the compiled backend takes no margin; use numpy")
             from analysis.kinematics import compiled
 
             return compiled.solve(self, p, names, tol=tol, limits=lim, out=out)
         if backend != "numpy":
             raise ValueError(f"backend {backend!r}: expected 'numpy' or 'compiled'")
         opts = {} if theta1_on_axis is None else {"theta1_on_axis": theta1_on_axis}
+        if margin_mm or margin_rad:
+            opts.update(options)
+            del opts["tol"]
+            tol = options["tol"]
         with np.errstate(invalid="ignore", divide="ignore"):
             r = solve_body(
                 numpy_ops,

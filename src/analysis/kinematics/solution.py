@@ -30,6 +30,7 @@ __all__ = [
     "as_points",
     "check_joints",
     "check_tol",
+    "refusal_options",
     "solve_body",
 ]
 
@@ -172,6 +173,29 @@ def check_tol(tol) -> float:
 # --------------------------------------------------------------------------------------------
 # parameters
 # --------------------------------------------------------------------------------------------
+
+
+def refusal_options(tol: float, margin_mm: float = 0.0, margin_rad: float = 0.0) -> dict:
+    """The closed-form tolerances for a solve with a refusal band of ``margin_mm`` [mm].
+
+    Without a margin: ``tol`` at the reach shells and the singular sets. With one: a target
+    is refused within ``margin_mm`` inside a shell (``tol = -margin_mm``) and within
+    ``max(tol, margin_mm)`` of a singular set, and angular tolerances shrink by
+    ``margin_rad`` (:mod:`analysis.kinematics.arms`). The generated PLC programs solve with
+    such a band (:mod:`analysis.plc.model`).
+
+    >>> refusal_options(1e-6)
+    {'tol': 1e-06, 'axis_tol': 1e-06, 'margin_rad': 0.0}
+    >>> refusal_options(1e-6, 1e-3, 2e-5)
+    {'tol': -0.001, 'axis_tol': 0.001, 'margin_rad': 2e-05}
+    """
+    if not 0.0 <= margin_mm <= MAX_TOL_MM:
+        raise ValueError(f"margin_mm = {margin_mm!r} mm: expected 0 .. {MAX_TOL_MM:g} mm")
+    if not 0.0 <= margin_rad <= 0.1:
+        raise ValueError(f"margin_rad = {margin_rad!r} rad: expected 0 .. 0.1 rad")
+    if margin_mm == 0.0:
+        return {"tol": tol, "axis_tol": tol, "margin_rad": margin_rad}
+    return {"tol": -margin_mm, "axis_tol": max(tol, margin_mm), "margin_rad": margin_rad}
 
 
 def solve_body(

@@ -33,11 +33,12 @@ from analysis.kinematics.arms import closed_form
 from analysis.kinematics.status import Status
 from analysis.kinematics.trace import Graph, Node, TraceOps
 from analysis.plc.approx import ATAN_DEGREE, atan2_from_atan, atan2_poly
-from analysis.plc.model import PLC_TOL_MM, program_body
+from analysis.plc.model import PLC_MARGIN_MM, PLC_MARGIN_RAD, program_body
 
 __all__ = [
     "CMP",
-    "PLC_TOL_MM",
+    "PLC_MARGIN_MM",
+    "PLC_MARGIN_RAD",
     "Instr",
     "Lowering",
     "Program",
@@ -378,7 +379,7 @@ def build_program(
     g = Graph()
     m = _PlcTrace(g, trig)
     p = [g.input(k) for k in cf.INPUTS]
-    body = program_body(m, params, p, branch, tol=PLC_TOL_MM, theta1_on_axis=theta1_on_axis)
+    body = program_body(m, params, p, branch, theta1_on_axis=theta1_on_axis)
     refusals = body["refusals"]
     outs = {f"c{j + 1}": c for j, c in enumerate(body["c"])}
     ppr = params.pulses_per_rev
@@ -440,6 +441,13 @@ def build_program(
             for c in (Status.DEGENERATE, Status.ORIENTATION)
             if c in labels
         ),
+        f"refuses a band: {PLC_MARGIN_MM:g} mm inside the reach and around the base axis"
+        + (
+            f", {PLC_MARGIN_RAD:g} rad off the orientation tolerance"
+            if Status.ORIENTATION in labels
+            else ""
+        )
+        + " (REAL rounding cannot accept what float64 refuses)",
     )
     return Program(
         code,

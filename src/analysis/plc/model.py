@@ -22,18 +22,32 @@ import numpy.typing as npt
 from analysis.kinematics.arms import closed_form
 from analysis.kinematics.ops import Ops
 from analysis.kinematics.pulses import pulse_count, pulse_value
+from analysis.kinematics.solution import DEFAULT_TOL_MM, refusal_options
 from analysis.kinematics.status import Status
 from analysis.plc.approx import PlcFloat32Ops
 
-__all__ = ["PLC_TOL_MM", "Prediction", "predict", "program_body"]
+__all__ = ["PLC_MARGIN_MM", "PLC_MARGIN_RAD", "Prediction", "predict", "program_body"]
 
-PLC_TOL_MM = 1e-6
-"""The reach and base-axis tolerance compiled into the programs: the Python default
-(:data:`analysis.kinematics.arm.DEFAULT_TOL_MM`)."""
+PLC_MARGIN_MM = 1e-3
+"""The band [mm] the programs refuse inside every reach shell and around every singular set
+(the base axis, a wrist on the shoulder). REAL arithmetic puts a distance of ~500 mm within
+~1e-4 mm (float32 steps there are 3e-5 mm), so with this band the PLC never accepts a target
+that Python (float64, tolerance :data:`analysis.kinematics.solution.DEFAULT_TOL_MM`) refuses,
+and it refuses nothing more than 1e-3 mm (plus that error) away from a boundary."""
+
+PLC_MARGIN_RAD = 2e-5
+"""The band [rad] the programs take off an arm's angular tolerance (the GR-1's orientation,
+whose test value float32 gets within ~1e-7). Joint limits get no band: a pose on a stop is
+legitimate (the palletizer's eq. 7 pose has theta3 on its 90 deg stop); there the PLC
+decides with its float32 angle, within rounding of the exact one
+(:func:`analysis.plc.verify.compare` explains each such case)."""
 
 
-def program_body(m: Ops, params, p, branch: str, *, tol=PLC_TOL_MM, theta1_on_axis=None):
-    """The generated program, in namespace ``m``.
+def program_body(m: Ops, params, p, branch: str, *, theta1_on_axis=None):
+    """The generated program, in namespace ``m``: the arm's closed form solved with the
+    refusal band (:data:`PLC_MARGIN_MM`, :data:`PLC_MARGIN_RAD`;
+    :func:`~analysis.kinematics.solution.refusal_options`), as
+    ``Arm.solve(..., margin_mm=PLC_MARGIN_MM, margin_rad=PLC_MARGIN_RAD)`` does in float64.
 
     Returns a dict: ``c`` (pulse counts per joint, in ``m``), ``theta`` (the branch's
     angles), ``refusals`` [(Status, condition), ...] in the order the program tests them
@@ -43,16 +57,19 @@ def program_body(m: Ops, params, p, branch: str, *, tol=PLC_TOL_MM, theta1_on_ax
     cf = closed_form(params.description.closed_form)
     if branch not in cf.BRANCHES:
         raise ValueError(f"unknown branch {branch!r}; expected one of {', '.join(cf.BRANCHES)}")
-    opts = {} if theta1_on_axis is None else {"theta1_on_axis": float(theta1_on_axis)}
-    sol = cf.ik(m, p, dict(params), tol=tol, **opts)
+    opts = refusal_options(DEFAULT_TOL_MM, PLC_MARGIN_MM, PLC_MARGIN_RAD)
+    if theta1_on_axis is not None:
+        opts["theta1_on_axis"] = float(theta1_on_axis)
+    sol = cf.ik(m, p, dict(params), **opts)
     q = sol["branches"][branch]
     refusals = list(sol["refusals"]) + list(sol.get("branch_refusals", {}).get(branch, ()))
-    limited = [(qj, j) for qj, j in zip(q, params.description.joints, strict=True)]
-    limited = [(qj, j) for qj, j in limited if not j.unlimited]
+    joints = params.description.joints
+    bounds = [None if j.unlimited else (j.lower, j.upper) for j in joints]
+    limited = [(qj, lim) for qj, lim in zip(q, bounds, strict=True) if lim is not None]
     if limited:
         m.section("joint limits")
-        for qj, j in limited:
-            refusals.append((Status.JOINT_LIMITS, m.or_(m.lt(qj, j.lower), m.gt(qj, j.upper))))
+        for qj, (lo, hi) in limited:
+            refusals.append((Status.JOINT_LIMITS, m.or_(m.lt(qj, lo), m.gt(qj, hi))))
     ppr = params.pulses_per_rev
     m.section(f"pulses c = ROUND(theta_deg / 360 * {ppr[0]:g}) (eqs. 20-22); reach flag on")
     c = [pulse_count(m, qj, n) for qj, n in zip(q, ppr, strict=True)]
@@ -65,7 +82,9 @@ class Prediction(NamedTuple):
 
     pulses : int64 (N, n) (0 where refused); status : int64 (N,); reachable : bool (N,);
     theta : float32 (N, n) (the REAL joint angles before the pulse conversion);
-    counts : float32 (N, n) (the REAL values the program hands to ROUND/RND).
+    counts : float32 (N, n) (the REAL values the program hands to ROUND/RND);
+    computed : int64 (N, n) (the rounded counts, also where the program refuses: what the
+    arithmetic gives, meaningful wherever the closed form has a solution).
     """
 
     pulses: npt.NDArray[np.int64]
@@ -73,6 +92,7 @@ class Prediction(NamedTuple):
     reachable: npt.NDArray[np.bool_]
     theta: npt.NDArray[np.float32]
     counts: npt.NDArray[np.float32]
+    computed: npt.NDArray[np.int64]
 
 
 def predict(
@@ -109,5 +129,8 @@ def predict(
     c = np.stack([np.broadcast_to(cj, status.shape) for cj in r["c"]], axis=-1)
     theta = np.stack([np.broadcast_to(q, status.shape) for q in r["theta"]], axis=-1)
     counts = np.stack([np.broadcast_to(v, status.shape) for v in r["count"]], axis=-1)
-    pulses = np.where(ok[:, None], c, 0).astype(np.int64)
-    return Prediction(pulses, status, ok, theta.astype(np.float32), counts.astype(np.float32))
+    computed = np.where(np.isfinite(c), c, 0).astype(np.int64)
+    pulses = np.where(ok[:, None], computed, 0)
+    return Prediction(
+        pulses, status, ok, theta.astype(np.float32), counts.astype(np.float32), computed
+    )

@@ -30,7 +30,7 @@ from analysis.kinematics.pulses import angles_to_pulses, pulse_value
 from analysis.kinematics.status import Status
 from analysis.paths import data_dir
 from analysis.plc.approx import PlcFloat32Ops
-from analysis.plc.model import predict
+from analysis.plc.model import PLC_MARGIN_MM, PLC_MARGIN_RAD, predict
 from analysis.plc.runner import RunResult
 
 __all__ = [
@@ -39,6 +39,7 @@ __all__ = [
     "cut_targets",
     "half_pulse_targets",
     "input_columns",
+    "plc_targets",
     "reference_pulses",
     "sweep_targets",
     "table4_targets",
@@ -153,6 +154,14 @@ def sweep_targets(
     return df[["kind", "x_mm", "y_mm", "z_mm"]]
 
 
+def plc_targets(targets: npt.ArrayLike) -> tuple[npt.NDArray, npt.NDArray]:
+    """Targets as the PLC holds them (float32 REALs): ``finite`` (N,) and the targets with
+    non-finite rows replaced by 0, as float64 (N, k)."""
+    t32 = np.asarray(targets, dtype=float).astype(np.float32).astype(float)
+    finite = np.isfinite(t32).all(axis=1)
+    return finite, np.where(finite[:, None], t32, 0.0)
+
+
 def reference_pulses(
     arm: Arm,
     targets: npt.ArrayLike,
@@ -160,11 +169,15 @@ def reference_pulses(
     rounding: str = "half-away",
     *,
     theta1_on_axis: float | None = None,
+    band: float = 1.0,
 ) -> tuple[npt.NDArray, npt.NDArray, npt.NDArray, npt.NDArray]:
     """Python's answer (float64) for targets (N, k) given as float32 REALs, as the PLC sees
     them (k = the arm's inputs: 3 for a point, 6 for the GR-1's pose).
 
     ``theta1_on_axis`` as given to the program's generator (None: base axis refused).
+    ``band`` scales the programs' refusal band (:data:`~analysis.plc.model.PLC_MARGIN_MM`,
+    :data:`~analysis.plc.model.PLC_MARGIN_RAD`): 1 solves as the program does, 0 as Python
+    does by default.
 
     Returns
     -------
@@ -175,11 +188,14 @@ def reference_pulses(
         Unrounded pulse values theta_deg / 360 * ppr (NaN where refused).
     """
     branch = branch or arm.branches[0]
-    t = np.asarray(targets, dtype=float)
-    t32 = t.astype(np.float32).astype(float)  # the PLC stores the target as REAL
-    finite = np.isfinite(t32).all(axis=1)
-    safe = np.where(finite[:, None], t32, 0.0)
-    sol = arm.solve(safe, [branch], theta1_on_axis=theta1_on_axis)
+    finite, safe = plc_targets(targets)
+    sol = arm.solve(
+        safe,
+        [branch],
+        theta1_on_axis=theta1_on_axis,
+        margin_mm=band * PLC_MARGIN_MM,
+        margin_rad=band * PLC_MARGIN_RAD,
+    )
     ok = sol.ok[:, 0] & finite
     status = np.where(finite, sol.status, int(Status.INVALID)).astype(np.int64)
     theta = np.where(ok[:, None], sol.theta[:, 0, :], 0.0)
@@ -196,6 +212,9 @@ class Comparison:
     n: int
     n_reachable: int
     status_mismatch: int
+    unsafe: int
+    band_refusals: int
+    limit_straddles: int
     flag_mismatch: int
     unchanged_ok: bool
     pulse_mismatch: int
@@ -221,6 +240,9 @@ class Comparison:
             "targets": self.n,
             "reachable": self.n_reachable,
             "status mismatches": self.status_mismatch,
+            "accepted where Python refuses": self.unsafe,
+            "refused in the band only": self.band_refusals,
+            "decided across a joint limit by float32": self.limit_straddles,
             "reach-flag mismatches": self.flag_mismatch,
             "outputs unchanged when refused": self.unchanged_ok,
             "pulse mismatches": self.pulse_mismatch,
@@ -231,6 +253,34 @@ class Comparison:
             "of which float32 value exactly k + 1/2": self.float32_ties,
             "float32 model = PLC, bit for bit": self.model_exact,
         }
+
+
+def _limit_straddles(arm, xyz, branch, theta32, theta1_on_axis) -> npt.NDArray[np.bool_]:
+    """Targets where the float32 angles and the exact ones (joint limits not applied) fall on
+    different sides of a joint limit."""
+    bounds = arm.limits
+    if all(b is None for b in bounds):
+        return np.zeros(len(xyz), dtype=bool)
+    finite, safe = plc_targets(xyz)
+    sol = arm.solve(
+        safe,
+        [branch],
+        limits=False,
+        theta1_on_axis=theta1_on_axis,
+        margin_mm=PLC_MARGIN_MM,
+        margin_rad=PLC_MARGIN_RAD,
+    )
+
+    def inside(theta):
+        ok = np.ones(len(xyz), dtype=bool)
+        for j, b in enumerate(bounds):
+            if b is not None:
+                ok &= (theta[:, j] >= b[0]) & (theta[:, j] <= b[1])
+        return ok
+
+    exact = sol.theta[:, 0, :]
+    solved = np.isfinite(exact).all(axis=1) & finite
+    return solved & (inside(exact) != inside(np.asarray(theta32, dtype=float)))
 
 
 def compare(
@@ -258,14 +308,22 @@ def compare(
     float32 value and the exact value lie on opposite sides of the same half pulse, or (``cut``)
     the two counts are one revolution apart and the exact value lies within float32 error of
     +-ppr/2 (the wrap cut of theta1/theta2). Errors before ROUND are taken modulo one revolution.
+
+    Statuses: the programs refuse a band around the reach shells, the singular sets and the
+    arm's angular tolerance (:mod:`analysis.plc.model`). ``unsafe`` counts targets the PLC
+    accepts and Python (default tolerances) refuses, other than at a joint limit that the
+    float32 angle and the exact one straddle (``limit_straddles``; joint limits get no
+    band): it must be 0. ``band_refusals`` counts targets only the band refuses.
+    ``status_mismatch`` counts what neither explains: a target the PLC accepts that Python
+    with half the band refuses, one it refuses that Python with twice the band accepts, or a
+    refusal whose code differs from Python's with half the band. Pulses are compared with
+    Python solving as the program does (band 1).
     """
     branch = branch or arm.branches[0]
     rounding = "half-away" if dialect == "s7-200" else "half-even"
     cols = input_columns(arm)
     xyz = targets[cols].to_numpy(dtype=float)
-    ref, ok, status, exact = reference_pulses(
-        arm, xyz, branch, rounding, theta1_on_axis=theta1_on_axis
-    )
+    ref, ok, _, exact = reference_pulses(arm, xyz, branch, rounding, theta1_on_axis=theta1_on_axis)
     model = predict(
         arm.params, xyz, branch, ops=PlcFloat32Ops(dialect, trig), theta1_on_axis=theta1_on_axis
     )
@@ -273,7 +331,23 @@ def compare(
         (model.status == result.status).all()
         and (model.pulses[model.reachable] == result.pulses[model.reachable]).all()
     )
-    flag_mm = int((result.reachable != ok).sum())
+    refs = {
+        b: reference_pulses(arm, xyz, branch, rounding, theta1_on_axis=theta1_on_axis, band=b)
+        for b in (0.0, 0.5, 2.0)
+    }
+    plc_ok = result.reachable
+    unsafe = plc_ok & ~refs[0.0][1]
+    missed = plc_ok & ~refs[0.5][1]
+    extra = ~plc_ok & refs[2.0][1]
+    code = ~plc_ok & ~refs[0.5][1] & (result.status != refs[0.5][2])
+    # near a joint limit the PLC decides with its float32 angle: a disagreement there is
+    # explained where the float32 and the exact angle lie on opposite sides of the limit
+    across = _limit_straddles(arm, xyz, branch, model.theta, theta1_on_axis)
+    limit_codes = (result.status == Status.JOINT_LIMITS) | (refs[0.5][2] == Status.JOINT_LIMITS)
+    missed, extra = missed & ~across, extra & ~across
+    code = code & ~(across & limit_codes)
+    unsafe = unsafe & ~across
+    flag_mm = int((result.reachable != (result.status == 0)).sum())
     unchanged = bool((result.pulses[~result.reachable] == sentinel).all())
     both = ok & result.reachable
     diff = np.where(both[:, None], result.pulses - ref, 0)
@@ -316,7 +390,10 @@ def compare(
     return Comparison(
         len(xyz),
         int(ok.sum()),
-        int((result.status != status).sum()),
+        int((missed | extra | code).sum()),
+        int(unsafe.sum()),
+        int((~plc_ok & refs[0.0][1]).sum()),
+        int((across & (plc_ok != refs[0.0][1])).sum()),
         flag_mm,
         unchanged,
         int((diff != 0).sum()),

@@ -374,8 +374,9 @@ def pulses_float32(
     :func:`analysis.plc.model.predict` with :class:`~analysis.kinematics.ops.Float32Ops`:
     every input, constant and intermediate a float32 (a PLC's REAL), correctly rounded
     trigonometry (the best a PLC's REAL routines could do; the generated S7-200
-    subroutines are modelled by ``predict``'s default). Only meaningful where the float64
-    solution exists; refused targets get pulses 0.
+    subroutines are modelled by ``predict``'s default). The counts are what that arithmetic
+    computes, also within the program's refusal band (1e-3 mm inside a reach shell, where the
+    program itself would stop); only meaningful where the float64 solution exists.
 
     Returns
     -------
@@ -393,4 +394,4 @@ def pulses_float32(
     )
     r = predict(params, p.reshape(-1, 3), ops=Float32Ops())
     shape = p.shape[:-1]
-    return r.pulses.reshape(*shape, -1), r.theta.reshape(*shape, -1)
+    return r.computed.reshape(*shape, -1), r.theta.reshape(*shape, -1)

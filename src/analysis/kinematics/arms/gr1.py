@@ -115,7 +115,17 @@ def geometry(P) -> dict:
     }
 
 
-def ik(m, p, P, *, tol, theta1_on_axis=None, orientation_tol=ORIENTATION_TOL_RAD):
+def ik(
+    m,
+    p,
+    P,
+    *,
+    tol,
+    axis_tol=None,
+    margin_rad=0.0,
+    theta1_on_axis=None,
+    orientation_tol=ORIENTATION_TOL_RAD,
+):
     """All four branches for the pose ``p = (px, py, pz, alpha, beta, gamma)``.
 
     Parameters
@@ -125,7 +135,12 @@ def ik(m, p, P, *, tol, theta1_on_axis=None, orientation_tol=ORIENTATION_TOL_RAD
         Position [mm] and RPY angles [rad] (eq. 3.14).
     P : mapping with a2, a3, a4, d1 [mm]
     tol : float or value of ``m``
-        Distance tolerance [mm] at the reach shells and the base axis.
+        Distance tolerance [mm] at the reach shells (negative: refuse a band inside them).
+    axis_tol : float, optional
+        Distance [mm] from the base axis and of the wrist from the shoulder within which the
+        pose is singular (default ``tol``).
+    margin_rad : float
+        Narrows ``orientation_tol`` (the PLC's band; see :mod:`analysis.kinematics.arms`).
     theta1_on_axis : float, optional
         Waist angle [rad] for poses on the base axis; None refuses them.
     orientation_tol : float or None
@@ -164,8 +179,9 @@ def ik(m, p, P, *, tol, theta1_on_axis=None, orientation_tol=ORIENTATION_TOL_RAD
     out_box = m.any_(m.gt(m.abs(px), box), m.gt(m.abs(py), box), m.gt(m.abs(z0), box))
     refusals = [(Status.OUT_OF_REACH, out_box)]
     m.section("theta1 = atan2(py, px) (sec. 4.2 prints arctan(py/px)); the base axis")
+    axis_tol = tol if axis_tol is None else axis_tol
     rho = m.let("rho", m.sqrt(px * px + py * py))
-    on_axis = m.le(rho, tol)
+    on_axis = m.le(rho, axis_tol)
     phi = m.atan2(py, px)
     rho_safe = m.select(on_axis, 1.0, rho)
     c1, s1 = px / rho_safe, py / rho_safe
@@ -181,7 +197,13 @@ def ik(m, p, P, *, tol, theta1_on_axis=None, orientation_tol=ORIENTATION_TOL_RAD
     (nx, ny, _), (ox, oy, _), (ax, ay, az) = rpy_columns(m, alpha, beta, gamma)
     off = m.let("off_plane", s1 * ax - c1 * ay)
     if orientation_tol is not None:
-        limit = math.sin(min(float(orientation_tol), math.pi / 2))
+        narrowed = float(orientation_tol) - float(margin_rad)
+        if not narrowed > 0:
+            raise ValueError(
+                f"orientation_tol = {orientation_tol} rad leaves nothing after the margin "
+                f"{margin_rad} rad"
+            )
+        limit = math.sin(min(narrowed, math.pi / 2))
         refusals.append((Status.ORIENTATION, m.gt(m.abs(off), limit)))
     m.section("theta234 = atan2(c1 ax + s1 ay, -az), theta5 = atan2(s1 nx - c1 ny, s1 ox - c1 oy)")
     t234 = m.let("theta234", m.atan2(c1 * ax + s1 * ay, -az))
@@ -208,7 +230,7 @@ def ik(m, p, P, *, tol, theta1_on_axis=None, orientation_tol=ORIENTATION_TOL_RAD
         conds = [
             (Status.OUT_OF_REACH, m.gt(beyond, tol)),
             (Status.INSIDE_REACH, m.gt(within, tol)),
-            (Status.DEGENERATE, m.le(d, tol)),
+            (Status.DEGENERATE, m.le(d, axis_tol)),
         ]
         c3 = m.let(f"c3_{side}", m.clip((d2 - (a2 * a2 + a3 * a3)) / (2.0 * a2 * a3), -1.0, 1.0))
         t3 = m.let(f"acos_c3_{side}", m.acos(c3))  # [0, pi]

@@ -78,7 +78,7 @@ def geometry(P) -> dict:
     }
 
 
-def ik(m, p, P, *, tol, theta1_on_axis=None):
+def ik(m, p, P, *, tol, axis_tol=None, margin_rad=0.0, theta1_on_axis=None):
     """All four branches for target ``p = (Px, Py, Pz)`` [mm] (corrected eqs. 6-19).
 
     Parameters
@@ -87,7 +87,12 @@ def ik(m, p, P, *, tol, theta1_on_axis=None):
     p : 3 values of ``m``
     P : mapping with L1, L2, L3 [mm] (numbers, or values of ``m``)
     tol : float or value of ``m``
-        Distance tolerance [mm] at the reach shell and the base axis.
+        Distance tolerance [mm] at the reach shell (negative: refuse a band inside it).
+    axis_tol : float, optional
+        Distance [mm] from the base axis within which theta1 is undefined (default ``tol``).
+    margin_rad : float
+        Unused: this arm has no angular tolerance (the contract's, see
+        :mod:`analysis.kinematics.arms`).
     theta1_on_axis : float, optional
         Waist angle [rad] for targets on the base axis; None refuses them.
 
@@ -128,7 +133,7 @@ def ik(m, p, P, *, tol, theta1_on_axis=None):
         (Status.INSIDE_REACH, m.gt(within, tol)),
     ]
     m.section("theta1 = atan2(Py, Px) (eq. 6; Fig. 4); the base axis")
-    on_axis = m.le(rho, tol)
+    on_axis = m.le(rho, tol if axis_tol is None else axis_tol)
     phi = m.atan2(y, x)
     r = rho
     if theta1_on_axis is None:

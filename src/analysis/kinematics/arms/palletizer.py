@@ -62,11 +62,14 @@ def geometry(P) -> dict:
     }
 
 
-def ik(m, p, P, *, tol, theta1_on_axis=None):
+def ik(m, p, P, *, tol, axis_tol=None, margin_rad=0.0, theta1_on_axis=None):
     """Both elbow branches for grasp point ``p`` [mm] (corrected eqs. 1-6 and 12).
 
     Returns ``branches`` {name: (theta1..theta4)} [rad], ``refusals`` in priority order and
-    ``outside`` (signed distance of the wrist outside its reach [mm]).
+    ``outside`` (signed distance of the wrist outside its reach [mm]). ``tol`` is the
+    distance tolerance at the reach shells, ``axis_tol`` (default ``tol``) at the base axis
+    and the shoulder; ``margin_rad`` is unused (no angular tolerance; see
+    :mod:`analysis.kinematics.arms`).
 
     Examples
     --------
@@ -96,14 +99,15 @@ def ik(m, p, P, *, tol, theta1_on_axis=None):
         (Status.INSIDE_REACH, m.gt(within, tol)),
     ]
     m.section("gamma = atan2(Y0, X0) (eqs. 1, 6); the base axis")
-    on_axis = m.le(rho, tol)
+    axis_tol = tol if axis_tol is None else axis_tol
+    on_axis = m.le(rho, axis_tol)
     gamma = m.atan2(y, x)
     if theta1_on_axis is None:
         refusals.append((Status.BASE_AXIS, on_axis))
     else:
         gamma = m.select(on_axis, theta1_on_axis, gamma)
     gamma = m.let("theta1", m.wrap(gamma))
-    wrist_on_shoulder = m.le(l4, tol)
+    wrist_on_shoulder = m.le(l4, axis_tol)
     refusals.append((Status.DEGENERATE, wrist_on_shoulder))
     m.section("alpha1, alpha2, beta1 (eq. 3)")
     l4safe = m.select(wrist_on_shoulder, 1.0, l4)
