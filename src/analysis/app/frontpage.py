@@ -63,12 +63,13 @@ def front_page_data() -> list[Verdict]:
     from analysis.audit import grabber_audit, register, table4
     from analysis.audit.schema import COUNTED
     from analysis.kinematics.arm import paper_arm
+    from analysis.kinematics.pulses import angles_to_pulses
     from analysis.plc.generate import generate
     from analysis.plc.memmap import default_map
     from analysis.plc.paper_listings import run_paper_listings
     from analysis.plc.runner import AwlRunner
     from analysis.plc.translate import translate_s7200
-    from analysis.plc.verify import compare, table4_targets
+    from analysis.plc.verify import compare, sweep_targets, table4_targets
     from analysis.studies import quantization, workspace
 
     # --- the errata register: root causes and where they show ------------------------------
@@ -139,15 +140,20 @@ def front_page_data() -> list[Verdict]:
                 "program (generated)": f"{dialect.upper()} ({lang})",
                 "Table 4 targets": c.n,
                 "reachable": c.n_reachable,
-                "reach-flag mismatches": c.flag_mismatch,
+                "status mismatches": c.status_mismatch,
+                "accepted where Python refuses": c.unsafe,
                 "pulse mismatches vs Python": c.pulse_mismatch,
             }
         )
     plc = pd.DataFrame(rows).set_index("program (generated)")
     paper_c1 = int(run_paper_listings(xyz[:1]).table["c1"].iloc[0])
     ok = bool(
-        (plc["pulse mismatches vs Python"] == 0).all() & (plc["reach-flag mismatches"] == 0).all()
+        (plc["pulse mismatches vs Python"] == 0).all()
+        & (plc["status mismatches"] == 0).all()
+        & (plc["accepted where Python refuses"] == 0).all()
     )
+    row1_c1 = int(angles_to_pulses(arm.ik(xyz[0]), arm.params.pulses_per_rev)[0])
+    n_sweep = len(sweep_targets(arm))
     plc_verdict = Verdict(
         title="The PLC program, executed",
         verdict=(
@@ -159,8 +165,9 @@ def front_page_data() -> list[Verdict]:
                 else "**disagree with the Python pulse counts** (see the table)"
             )
             + f". The paper's own Figures 3-4, executed the same way, give c1 = {paper_c1} "
-            "pulses for row 1 where the corrected program gives 500 (radians divided by 360). "
-            "Notebook 07 runs 1,166 targets, including half-pulse and non-finite ones."
+            f"pulses for row 1 where the corrected program gives {row1_c1} (radians divided "
+            f"by 360). Notebook 07 runs {n_sweep:,} targets, including half-pulse, wrap-cut "
+            "and non-finite ones."
         ),
         evidence=(("notebooks/07_plc_stl", "07"), ("downloads", "the generated programs")),
         table=plc,
