@@ -214,14 +214,18 @@ class PoseReport:
         if self.table.empty:
             return ""
         f = self.formatted()
-        th = "".join(f"<th>{h}</th>" for h in ["branch", *f.columns])
+        pad = "padding:2px 10px"
+        th = "".join(
+            f'<th style="{pad};text-align:{"left" if k == 0 else "right"}">{h}</th>'
+            for k, h in enumerate(["branch", *f.columns])
+        )
         rows = []
         for b, r in f.iterrows():
             cells = [("&#9654; " if b == self.branch else "") + html.escape(str(b))]
             cells += [html.escape(str(v)) for v in r]
             last = len(cells) - 1
             tds = "".join(
-                f'<td style="text-align:{"left" if k in (0, last) else "right"}">{c}</td>'
+                f'<td style="{pad};text-align:{"left" if k in (0, last) else "right"}">{c}</td>'
                 for k, c in enumerate(cells)
             )
             style = ' style="font-weight:bold"' if b == self.branch else ""
