@@ -30,6 +30,7 @@ import nbval_kernel
 
 TESTS = Path(__file__).resolve().parent
 
+
 PORT_CLASH = '''
 """pytest plugin for the test: every TCP port jupyter_client picks is already taken."""
 import os
@@ -112,8 +113,12 @@ def _kernelspec(share: Path, name: str, mode: str, marker: Path, script: Path) -
     )
 
 
-def _start(tmp: Path, name: str, notebooks: list[str], plugins: list[str]) -> subprocess.Popen:
-    """Start ``pytest --nbval`` on ``notebooks`` (names in ``tmp``) in a subprocess."""
+def _start(
+    tmp: Path, name: str, notebooks: list[str], plugins: list[str], timeout: int = 30
+) -> subprocess.Popen:
+    """Start ``pytest --nbval`` on ``notebooks`` (names in ``tmp``) in a subprocess.
+
+    ``timeout`` is ``--nbval-kernel-startup-timeout`` [s]."""
     env = {k: v for k, v in os.environ.items() if not k.startswith(("PYTEST_", "COV_"))}
     env.update(
         PYTHONPATH=os.pathsep.join([str(tmp), str(TESTS)]),
@@ -126,7 +131,7 @@ def _start(tmp: Path, name: str, notebooks: list[str], plugins: list[str]) -> su
     for plugin in plugins:
         args += ["-p", plugin]
     args += ["-p", "no:cacheprovider", "--nbval", "--junitxml", str(tmp / f"{name}.xml"), "-rA"]
-    args += ["--nbval-kernel-startup-timeout", "30", "-W", "always::UserWarning"]
+    args += ["--nbval-kernel-startup-timeout", str(timeout), "-W", "always::UserWarning"]
     if "nbval_kernel" in plugins:
         args += ["--nbval-kernel-log-dir", str(tmp / f"{name}-logs")]
     return subprocess.Popen(
@@ -168,26 +173,26 @@ def workdir(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return tmp
 
 
+# One test per session: under ``pytest -n 2`` (plain ``--dist load``) tests of one module may
+# land on both workers, and a module fixture shared by tests on both would run its session twice.
+# (``--dist loadgroup`` would pin them to one worker, but with pytest 9.2 and xdist 3.8 it silently
+# stops grouping: pytest-dev/pytest-xdist#1386.)
 @pytest.fixture(scope="module")
-def sessions(workdir: Path) -> dict[str, Session]:
-    """Two concurrent sessions under the same clash: nbval's own TCP start, and the plugin's
-    (which also runs a crash-once and a crash-always kernel)."""
-    runs = {
-        "tcp": (["tcp.ipynb"], ["port_clash"]),
-        "ipc": (["ipc.ipynb", "once.ipynb", "always.ipynb"], ["port_clash", "nbval_kernel"]),
-    }
-    procs = {name: _start(workdir, name, *run) for name, run in runs.items()}
-    return {name: _finish(workdir, name, proc) for name, proc in procs.items()}
+def tcp_session(workdir: Path) -> Session:
+    """nbval's own TCP kernel start under the clash.
 
-
-@pytest.fixture(scope="module")
-def tcp_session(sessions: dict[str, Session]) -> Session:
-    return sessions["tcp"]
+    Its kernel never answers, and nbval waits out the startup timeout before reporting the
+    death: 5 s keeps the test short (the plugin's session keeps 30 s for real starts)."""
+    proc = _start(workdir, "tcp", ["tcp.ipynb"], ["port_clash"], timeout=5)
+    return _finish(workdir, "tcp", proc)
 
 
 @pytest.fixture(scope="module")
-def ipc_session(sessions: dict[str, Session]) -> Session:
-    return sessions["ipc"]
+def ipc_session(workdir: Path) -> Session:
+    """The plugin's IPC start under the clash, with a crash-once and a crash-always kernel."""
+    notebooks = ["ipc.ipynb", "once.ipynb", "always.ipynb"]
+    proc = _start(workdir, "ipc", notebooks, ["port_clash", "nbval_kernel"])
+    return _finish(workdir, "ipc", proc)
 
 
 def test_tcp_path_dies_when_a_chosen_port_is_taken(tcp_session: Session) -> None:
@@ -197,27 +202,28 @@ def test_tcp_path_dies_when_a_chosen_port_is_taken(tcp_session: Session) -> None
     assert tcp_session.returncode == 1
 
 
-def test_plugin_runs_notebook_over_ipc_despite_taken_ports(ipc_session: Session) -> None:
-    # The second cell prints the transport as the kernel sees it; nbval compares it to "ipc ...".
-    assert ipc_session.outcomes["ipc.ipynb::Cell 0"] == "passed", ipc_session.output
-    assert ipc_session.outcomes["ipc.ipynb::Cell 1"] == "passed", ipc_session.output
+def test_plugin_runs_over_ipc_retries_a_dying_kernel_and_gives_up_naming_the_log(
+    ipc_session: Session,
+) -> None:
+    out = ipc_session.output
+    # Despite taken ports: the second cell prints the transport as the kernel sees it; nbval
+    # compares it to "ipc ...".
+    assert ipc_session.outcomes["ipc.ipynb::Cell 0"] == "passed", out
+    assert ipc_session.outcomes["ipc.ipynb::Cell 1"] == "passed", out
     assert ipc_session.ports_chosen == 0, "the plugin's path asked jupyter_client for TCP ports"
 
-
-def test_plugin_retries_kernel_that_dies_at_start(ipc_session: Session) -> None:
-    assert ipc_session.outcomes["once.ipynb::Cell 0"] == "passed", ipc_session.output
-    out = ipc_session.output
+    # A kernel that dies at its first start is started again.
+    assert ipc_session.outcomes["once.ipynb::Cell 0"] == "passed", out
     assert "KernelStartRetry" in out and "died at start 1/3" in out, out
     assert "simulated crash (once)" in out, "the retry warning should quote the kernel's stderr"
     log = (ipc_session.log_dir / "once.ipynb.stderr.log").read_text()
     assert log.count("--- nbval_kernel: start") == 2 and "simulated crash (once)" in log, log
 
-
-def test_plugin_gives_up_after_max_starts_and_names_the_log(ipc_session: Session) -> None:
-    assert ipc_session.outcomes["always.ipynb::Cell 0"] == "error", ipc_session.output
+    # One that always dies is given up after MAX_STARTS, naming its stderr log.
+    assert ipc_session.outcomes["always.ipynb::Cell 0"] == "error", out
     log_path = ipc_session.log_dir / "always.ipynb.stderr.log"
-    assert f"on all {nbval_kernel.MAX_STARTS} starts" in ipc_session.output
-    assert f"kernel stderr: {log_path}" in ipc_session.output
+    assert f"on all {nbval_kernel.MAX_STARTS} starts" in out
+    assert f"kernel stderr: {log_path}" in out
     log = log_path.read_text()
     assert log.count("simulated crash (always)") == nbval_kernel.MAX_STARTS, log
     assert ipc_session.returncode == 1

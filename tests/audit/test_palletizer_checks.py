@@ -1,8 +1,10 @@
 """Seed 001 checks (analysis.audit.palletizer_checks): the symbolic verdicts on eqs. 8 and 11,
 the printed IK chain item by item, the four-solution enumeration and the findings list.
 
-Numeric tolerance 1e-9 mm: lengths are a few hundred mm (illustrative, data/palletizer_mdh.csv),
-float64 round-off ~1e-13 mm; every printed error is >= several mm (the tests show which).
+Numeric tolerance 1e-9 mm: lengths are a few hundred mm (assumed, data/arms/palletizer.toml:
+the paper prints none), float64 round-off ~1e-13 mm; every printed error is >= several mm (the
+tests show which). The checks take the lengths as parameters: the verdicts are also tested on
+a non-isosceles arm (L2 = 150 mm).
 """
 
 from __future__ import annotations
@@ -15,16 +17,16 @@ from hypothesis import strategies as st
 
 from analysis.audit import palletizer_checks as chk
 from analysis.audit.findings import KINDS, Finding
-from analysis.studies.companions import load_palletizer
+from analysis.kinematics.arm import Arm, load_arm
 from helpers import assert_points_close
 
 ATOL_MM = 1e-9
-PAL = load_palletizer()
+PAL = load_arm("palletizer")
 
 
 @pytest.fixture(scope="module")
 def pal():
-    return load_palletizer()
+    return load_arm("palletizer")
 
 
 @pytest.fixture(scope="module")
@@ -48,15 +50,22 @@ def test_eq11_rows_against_the_product_of_the_printed_matrices():
 def test_eq11_printed_error_is_L3_times_sin_minus_cos(pal, rng):
     q = rng.uniform(-np.pi, np.pi, (1000, 4))
     err = np.linalg.norm(chk.eq11_printed_position(pal, q) - pal.fk(q), axis=-1)
-    np.testing.assert_allclose(err, pal.L3 * np.abs(np.sin(q[:, 3]) - np.cos(q[:, 3])), atol=1e-9)
+    np.testing.assert_allclose(
+        err, pal.params.L3 * np.abs(np.sin(q[:, 3]) - np.cos(q[:, 3])), atol=1e-9
+    )
 
 
-def test_symbolic_table_matches_the_numeric_data_file(pal):
-    """The D-H rows read off the printed matrices, with the data file's lengths, are the
-    data file's table."""
+def test_symbolic_table_matches_the_arm_description(pal):
+    """The D-H rows read off the printed matrices, with the description's lengths, are the
+    chain of data/arms/palletizer.toml."""
     sym = chk.symbolic_table()
     S = chk.S
-    subs = {S["L1"]: pal.L1, S["L2"]: pal.L2, S["L3"]: pal.L3, S["h"]: pal.h}
+    subs = {
+        S["L1"]: pal.params.L1,
+        S["L2"]: pal.params.L2,
+        S["L3"]: pal.params.L3,
+        S["h"]: pal.params.h,
+    }
     q = np.array([0.3, -1.1, 0.7, 2.0])
     T_sym = sp.eye(4)
     for A in sym.transforms_sym(q.tolist(), exact=False):
@@ -76,8 +85,8 @@ def reachable(pal, rng, n=500):
     G = rng.uniform([-420, -420, 0], [420, 420, 330], (8 * n, 3))
     q = chk.all_ik(pal, G)[:, 0]
     rho = np.hypot(G[:, 0], G[:, 1])
-    L4 = np.hypot(rho - pal.L3, G[:, 2] + pal.h)
-    keep = np.isfinite(q).all(-1) & (L4 < 0.99 * (pal.L1 + pal.L2)) & (rho > 1)
+    L4 = np.hypot(rho - pal.params.L3, G[:, 2] + pal.params.h)
+    keep = np.isfinite(q).all(-1) & (L4 < 0.99 * (pal.params.L1 + pal.params.L2)) & (rho > 1)
     return G[keep][:n]
 
 
@@ -85,7 +94,7 @@ def test_corrected_chain_reaches_and_each_printed_item_misses(pal, rng):
     G = reachable(pal, rng)
     q = chk.ik_chain(pal, G, chk.FIXES)["q"]
     assert_points_close(pal.fk(q), G, ATOL_MM, "corrected chain")
-    front = G[np.hypot(G[:, 0], G[:, 1]) > pal.L3 + 1]
+    front = G[np.hypot(G[:, 0], G[:, 1]) > pal.params.L3 + 1]
     for item in ("alpha", "theta4"):  # wrong on every target
         m = chk.miss(pal, front, chk.ik_chain(pal, front, set(chk.FIXES) - {item})["q"])
         assert np.nanmin(m) > 1.0, item
@@ -96,10 +105,14 @@ def test_corrected_chain_reaches_and_each_printed_item_misses(pal, rng):
     assert (gam[G[:, 0] > 0] < 1e-6).all() and (gam[(G[:, 0] < 0) & (G[:, 1] < 0)] > 1).all()
 
 
-def test_ik_chain_matches_companions_corrected_ik(pal, rng):
-    """Two independent codings of the corrected IK agree (studies.companions.Palletizer.ik)."""
+def test_ik_chain_matches_the_shared_closed_form(pal, rng):
+    """Two independent codings of the corrected IK agree: ik_chain with every item fixed and
+    the shared solver (analysis.kinematics.arms.palletizer via Arm.solve, limits off so that
+    targets beyond the elbow stop are compared too). 1e-12 rad: both are float64 chains of
+    a few transcendental calls on the same inputs."""
     G = reachable(pal, rng)
-    np.testing.assert_allclose(chk.ik_chain(pal, G, chk.FIXES)["q"], pal.ik(G), atol=1e-12)
+    ref = pal.solve(G, "elbow-up", limits=False).branch("elbow-up")
+    np.testing.assert_allclose(chk.ik_chain(pal, G, chk.FIXES)["q"], ref, atol=1e-12)
 
 
 @given(
@@ -181,3 +194,50 @@ def test_finding_record_validates():
         Finding("x", "y", "p", "c", "typo", "e")
     with pytest.raises(ValueError, match="needs a kind"):
         Finding("x", "y", "p", "", "sign", "e")
+
+
+# --- FK(IK) through Pinocchio, and the lengths as parameters -----------------------------------
+@pytest.mark.parametrize("L2", [200.0, 150.0])
+def test_fk_of_ik_through_pinocchio_on_10000_configurations(L2):
+    """G = Pinocchio FK of 10,000 seeded level configurations inside the elbow stop; the
+    shared solver's IK of G, through Pinocchio again, returns G within 1e-9 mm (observed
+    ~1e-12: float64 on lengths <= 400 mm; the margin of 2 deg to the fold keeps acos
+    well-conditioned) and the very angles it started from (the IK is unique there). L2 = 150:
+    the non-isosceles family works the same."""
+    arm = load_arm("palletizer")
+    arm = arm if L2 == arm.params.L2 else Arm(arm.params.with_(L2=L2))
+    r = chk.fk_ik_pinocchio(arm, 10_000)
+    assert r["n"] == 10_000 and r["all_ok"] and r["status"] == {0: 10_000}
+    assert r["max_err_mm"] < ATOL_MM
+    assert r["max_dq_rad"] < 1e-10
+
+
+def test_level_configurations_face_the_target_and_keep_the_gripper_level(pal, rng):
+    q = chk.level_configurations(pal, 500, rng)
+    np.testing.assert_allclose(
+        np.mod(q[:, 1:].sum(axis=1) - np.pi / 2 + 1, 2 * np.pi) - 1, 0, atol=1e-12
+    )
+    p = pal.fk(q)
+    assert (p[:, 0] * np.cos(q[:, 0]) + p[:, 1] * np.sin(q[:, 0]) > 1.0).all()
+    assert ((q[:, 2] > np.pi / 2) & (q[:, 2] < np.pi)).all()
+
+
+def test_the_stop_makes_the_front_solution_unique(pal):
+    """Under the signed stop each kept target has exactly one solution with the waist facing
+    it; unsigned readings of the angle give even counts (the mirror pose), never 1."""
+    grid = chk.workspace_grid(pal, 21)
+    c = chk.uniqueness_counts(pal, grid)
+    assert set(np.unique(c["stop"])) <= {0, 1, 2}
+    kept = c["stop"] > 0
+    assert (c["stop+front"][kept] == 1).all() and (c["stop+front"][~kept] == 0).all()
+    assert (c["stop"] == 2).any()  # the waist-reversed pose also fits the stop somewhere
+
+
+def test_verdicts_do_not_depend_on_the_assumed_lengths():
+    """The wrong items stay wrong, and the items that hold still hold, with L1 != L2 and
+    other gripper offsets: the verdicts are the paper's, not the assumed numbers'."""
+    base = {f.id: f.verdict for f in chk.findings(load_arm("palletizer"))}
+    other = Arm(load_arm("palletizer").params.with_(L2=150.0, L3=40.0, h=90.0))
+    found = {f.id: f for f in chk.findings(other)}
+    assert {k: f.verdict for k, f in found.items()} == base
+    assert "L2 = 150 mm" in found["pal-claim-unique"].evidence

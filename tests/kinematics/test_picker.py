@@ -279,3 +279,18 @@ def test_replay_experiment_flags_the_readings():
     )
     one = pk.replay_experiment(2.0)  # default picker, scalar time
     assert_allclose(one["value, deg"]["position"], rep["value, deg"]["position"][1:2], 0.0, "t")
+
+
+def test_points_at_keep_the_links_and_end_at_the_marker(configs):
+    """The drawn linkage: P is the POE tool position, link 5 and C-D have length b, the
+    back-arm l_AD, BGDC is a parallelogram (C - D = B - G), W - F = f horizontally."""
+    a = configs[:500]
+    pts = PICKER.points_at(a)
+    p = PICKER.params
+    assert_points_close(pts["P"], PICKER.position(a), ATOL_MM, "marker")
+    for (u, v), length in {("B", "G"): p["b"], ("C", "D"): p["b"], ("D", "A"): p["l_AD"]}.items():
+        d = np.linalg.norm(pts[u] - pts[v], axis=-1)
+        assert np.abs(d - length).max() < ATOL_MM, (u, v)
+    assert_points_close(pts["C"] - pts["D"], pts["B"] - pts["G"], ATOL_MM, "parallelogram")
+    assert np.abs(np.linalg.norm(pts["W"] - pts["F"], axis=-1) - p["f"]).max() < ATOL_MM
+    assert np.abs(pts["W"][:, 2] - pts["F"][:, 2]).max() < ATOL_MM

@@ -15,11 +15,12 @@ import sympy as sp
 from hypothesis import given
 from hypothesis import strategies as st
 
+from analysis.audit.poe_checks import dh_arm_names
 from analysis.kinematics import poe
+from analysis.kinematics.arm import load_arm
 from analysis.kinematics.dh import DHTable
-from analysis.kinematics.params import data_dir, paper_params
+from analysis.kinematics.params import paper_params
 from analysis.kinematics.pinocchio_model import PinocchioPOE, build_poe_model
-from analysis.studies.companions import screw_axes
 from helpers import assert_allclose, assert_transform_close
 
 N_CONFIGS = 10_000
@@ -64,13 +65,31 @@ def random_q(rng, kinds, shape):
     return rng.uniform(-1, 1, (*shape, len(kinds))) * scale
 
 
-def palletizer_table() -> DHTable:
-    return DHTable.from_csv(data_dir() / "palletizer_mdh.csv", "modified")
+def main_arm_screws() -> tuple[np.ndarray, np.ndarray]:
+    """The main paper's arm (Table 3) read off its home pose by hand: stretched along +x at
+    height L1; waist +z through the origin, shoulder and elbow -y (the D-H z1 = Rx(90 deg) z)
+    through (0, 0, L1) and (L2, 0, L1); tool at (L2 + L3, 0, L1) turned Rx(90 deg)."""
+    P = paper_params()
+    S = np.array(
+        [
+            poe.revolute_screw([0, 0, 1], [0, 0, 0]),
+            poe.revolute_screw([0, -1, 0], [0, 0, P.L1]),
+            poe.revolute_screw([0, -1, 0], [P.L2, 0, P.L1]),
+        ]
+    )
+    M = np.eye(4)
+    M[:3, :3] = [[1, 0, 0], [0, 0, -1], [0, 1, 0]]
+    M[:3, 3] = [P.L2 + P.L3, 0.0, P.L1]
+    return S, M
 
 
 def dh_tables() -> dict[str, DHTable]:
-    """Every D-H arm of the project."""
-    return {"table3": paper_params().dh_table(), "palletizer_mdh": palletizer_table()}
+    """Every D-H arm of the project: each description in data/arms/ with D-H rows."""
+    return {name: load_arm(name).table for name in dh_arm_names()}
+
+
+def test_every_dh_arm_is_covered():
+    assert set(dh_tables()) >= {"grabber", "palletizer"}
 
 
 # --------------------------------------------------------------------------- exp6
@@ -136,8 +155,8 @@ def test_symbolic_and_numeric_paths_agree(rng):
 
 
 def test_symbolic_poe_of_the_main_arm_equals_its_symbolic_dh_product():
-    """Exact: POE with symbolic L1..L3 (seed 002 eq. 9, the arm's screws as in
-    studies.companions.screw_axes) equals A1 A2 A3 of Table 1 (main paper eq. 2)."""
+    """Exact: POE with symbolic L1..L3 (seed 002 eq. 9, the arm's screws read off its home
+    pose as in main_arm_screws) equals A1 A2 A3 of Table 1 (main paper eq. 2)."""
     L1, L2, L3 = sp.symbols("L1 L2 L3", positive=True)
     S = [[0, 0, 1, 0, 0, 0], [0, -1, 0, L1, 0, 0], [0, -1, 0, L1, 0, -L2]]
     M = [[1, 0, 0, L2 + L3], [0, 0, -1, 0], [0, 1, 0, L1], [0, 0, 0, 1]]
@@ -165,14 +184,21 @@ def test_bad_screws_raise_naming_the_screw_and_the_limit(screws, match):
         poe.fk(screws, np.eye(4), np.zeros(len(screws)))
 
 
-def test_prismatic_screws_are_accepted_where_exp_twist_rejected_them():
-    """studies.companions.exp_twist rejects (0, v) with "unit omega"; poe.exp6 takes it."""
-    from analysis.studies.companions import exp_twist
-
+def test_prismatic_screws_are_accepted():
+    """A prismatic screw (0, v) slides by v theta (the first look's exp_twist rejected it)."""
     S = [0, 0, 0, 0, 0, 1]
-    with pytest.raises(ValueError, match="unit omega"):
-        exp_twist(S, 1.0)
     assert_allclose(poe.exp6(S, 250.0)[:3, 3], [0, 0, 250.0], 0.0, "slide")
+
+
+def test_exp6_equals_pinocchio_exp6(rng):
+    """pin.exp6 of the twist (v, w) theta (Pinocchio orders linear first), both kinds."""
+    import pinocchio as pin
+
+    S = random_screws(rng, 9)
+    theta = rng.uniform(-4, 4, 9) * np.where(np.linalg.norm(S[:, :3], axis=1) > 0, 1, 100)
+    for Si, th in zip(S, theta, strict=True):
+        ref = pin.exp6(np.concatenate([Si[3:], Si[:3]]) * th).homogeneous
+        assert_transform_close(poe.exp6(Si, th), ref, 1e-12, 1e-9, "exp6 vs pin.exp6")
 
 
 def test_bad_joint_arrays_and_home_poses():
@@ -190,7 +216,7 @@ def test_bad_joint_arrays_and_home_poses():
 
 
 # --------------------------------------------------------------------------- POE vs D-H
-@pytest.mark.parametrize("name", ["table3", "palletizer_mdh"])
+@pytest.mark.parametrize("name", dh_arm_names())
 def test_poe_equals_dh_fk_for_every_dh_arm(rng, name):
     """Screws read off the D-H frames at q = 0 only; the pose at 10,000 seeded q is then
     computed by POE and by the D-H product: two independent routes, one pose."""
@@ -201,14 +227,14 @@ def test_poe_equals_dh_fk_for_every_dh_arm(rng, name):
     assert_transform_close(poe.fk(S, M, q), table.fk(q), ATOL_ROT, ATOL_MM, f"{name}: POE vs D-H")
 
 
-def test_screws_from_dh_of_table3_are_the_companion_screws():
+def test_screws_from_dh_of_table3_are_the_hand_derived_screws():
     S, M = poe.screws_from_dh(paper_params().dh_table())
-    S_c, M_c = screw_axes()
+    S_c, M_c = main_arm_screws()
     assert_allclose(S, S_c, 1e-12, "screws")
     assert_allclose(M, M_c, 1e-12, "M")
 
 
-@pytest.mark.parametrize("name", ["table3", "palletizer_mdh"])
+@pytest.mark.parametrize("name", dh_arm_names())
 def test_mutated_screw_breaks_the_dh_agreement(rng, name):
     """The comparison above can fail: one flipped axis moves the tool by millimetres."""
     table = dh_tables()[name]
@@ -250,20 +276,20 @@ def test_pinocchio_joint_types_follow_the_axes(rng):
         "JointModelRY",
         "JointModelRZ",
     ]
-    names = [j.shortname() for j in build_poe_model(*screw_axes()).joints[1:]]
+    names = [j.shortname() for j in build_poe_model(*main_arm_screws()).joints[1:]]
     assert names == ["JointModelRZ", "JointModelRY", "JointModelRY"]
 
 
-@pytest.mark.parametrize("which", ["main arm (3R)", "prismatic chain", "table3", "palletizer"])
+@pytest.mark.parametrize("which", ["main arm (3R)", "prismatic chain", *dh_arm_names()])
 def test_poe_equals_pinocchio_on_10000_configurations(rng, which):
-    """(a) the main paper's arm, screws of studies.companions.screw_axes; (b) a chain with
-    prismatic joints; the D-H arms via screws_from_dh."""
+    """(a) the main paper's arm, screws read off by hand; (b) a chain with prismatic
+    joints; every D-H arm of data/arms/ via screws_from_dh."""
     if which == "main arm (3R)":
-        S, M = screw_axes()
+        S, M = main_arm_screws()
     elif which == "prismatic chain":
         S, M = prismatic_chain(rng)
     else:
-        S, M = poe.screws_from_dh(dh_tables()["table3" if which == "table3" else "palletizer_mdh"])
+        S, M = poe.screws_from_dh(dh_tables()[which])
     q = random_q(rng, poe.joint_kinds(S), (N_CONFIGS,))
     pp = PinocchioPOE(S, M)
     assert pp.model.nq == len(S)
@@ -303,7 +329,7 @@ def test_point_jacobian_equals_central_differences(rng):
 
 
 def test_point_jacobian_of_the_main_arm_equals_arm_jacobian(rng, arm):
-    S, M = screw_axes()
+    S, M = main_arm_screws()
     q = rng.uniform(-np.pi, np.pi, (1000, 3))
     assert_allclose(poe.point_jacobian(S, M, q), arm.jacobian(q), 1e-9, "J vs Arm.jacobian")
 

@@ -244,11 +244,29 @@ def _cmd_errata(args: argparse.Namespace) -> int:
 
 # --- arms ----------------------------------------------------------------------------------------
 def _cmd_arms(args: argparse.Namespace) -> int:
+    import tomllib
+
     from analysis.kinematics.description import load_description
     from analysis.paths import data_dir
 
     docs = []
     for path in sorted((data_dir() / "arms").glob("*.toml")):
+        raw = tomllib.loads(path.read_text(encoding="utf-8"))
+        if "rows" not in raw:  # not a D-H description (the picker: dimensions only)
+            docs.append(
+                {
+                    "name": path.stem,
+                    "title": "dimensions only, no D-H rows (a closed-chain model)",
+                    "paper": "",
+                    "joints": [],
+                    "parameters": {
+                        k: {"value": v["value"], "unit": v["unit"], "status": v["status"]}
+                        for k, v in raw.get("parameters", {}).items()
+                        if isinstance(v.get("value"), (int, float))
+                    },
+                }
+            )
+            continue
         d = load_description(path.stem)
         docs.append(
             {

@@ -18,8 +18,9 @@ from functools import cache
 import numpy as np
 import sympy as sp
 
-from analysis.audit.grabber_checks import KINDS, PXYZ, Item, all_items
-from analysis.audit.grabber_checks import S as S
+from analysis.audit.grabber_checks import all_items
+from analysis.audit.grabber_items import KINDS, PXYZ, Item
+from analysis.audit.grabber_items import S as S
 from analysis.kinematics.params import paper_params
 
 __all__ = [

@@ -11,11 +11,13 @@ format). Used by :func:`analysis.audit.grabber_audit.audit`.
 from __future__ import annotations
 
 import re
+from dataclasses import dataclass, field
 
 import numpy as np
 
+from analysis.audit.grabber_items import verify_angle
 from analysis.audit.table4 import load_printed
-from analysis.kinematics.arm import paper_arm
+from analysis.kinematics.arm import Arm, paper_arm
 from analysis.kinematics.pulses import angles_to_pulses
 from analysis.papers import grabber as paper
 from analysis.plc import stl_eval as stl
@@ -79,19 +81,26 @@ def _run(text: str, **regs: float) -> dict[str, int]:
     return stl.evaluate(_prog(text), stl.real_memory(**regs))
 
 
-def stl_items(Item) -> list:
-    """The STL audit items (built with the :class:`analysis.audit.register.Item` class given)."""
-    arm = paper_arm()
-    L2, L3 = arm.params.L2, arm.params.L3
-    P, Q = _reachable_rows()
-    c_ok = angles_to_pulses(Q)  # (n, 3) pulses of the corrected angles
-    fig = {k: _one_line(v) for k, v in paper.FIGURE_STL.items()}
-    items = []
+@dataclass
+class _Audit:
+    """What every figure's checks share: the arm, Table 4's reachable rows, the listings."""
 
-    def add(key, location, printed, corrected, kind, verify, evidence, derived=""):
+    Item: type
+    arm: Arm
+    P: np.ndarray  # reachable Table 4 targets [mm]
+    Q: np.ndarray  # their corrected front-up angles [rad]
+    fig: dict[int, str]  # the printed listings, one line each
+    items: list = field(default_factory=list)
+
+    @property
+    def c_ok(self) -> np.ndarray:
+        """Pulses of the corrected angles, (n, 3)."""
+        return angles_to_pulses(self.Q)
+
+    def add(self, key, location, printed, corrected, kind, verify, evidence, derived=""):
         ok = verify(printed)
-        items.append(
-            Item(
+        self.items.append(
+            self.Item(
                 f"paper-{key}",
                 location,
                 printed,
@@ -104,6 +113,20 @@ def stl_items(Item) -> list:
             )
         )
 
+
+def stl_items(Item) -> list:
+    """The STL audit items (built with the :class:`analysis.audit.register.Item` class given)."""
+    P, Q = _reachable_rows()
+    fig = {k: _one_line(v) for k, v in paper.FIGURE_STL.items()}
+    a = _Audit(Item, paper_arm(), P, Q, fig)
+    for family in (_figure3, _figure4, _figure5, _figure5_atan, _figure6, _reach):
+        family(a)
+    return a.items
+
+
+def _figure3(a: _Audit) -> None:
+    """Figure 3: MOVD stores integers; the REAL reads of Figures 4-6 see denormals."""
+    add = a.add
     # Figure 3: MOVD stores integers; the REAL reads of Figures 4-6 see denormals
     target = (100.0, 100.0, 600.0)
 
@@ -125,6 +148,11 @@ def stl_items(Item) -> list:
         f"MOVD copies the DINT bit pattern 16#{m3['VD0']:08X}; read as REAL (Figure 4's MOVR, /R) "
         f"VD0 = {stl.real(m3, 'VD0'):.4g}, not 100.0",
     )
+
+
+def _figure4(a: _Audit) -> None:
+    """Figure 4: the unit of ARCTAN's result, the in-place /R, the quadrant, the CALL alias."""
+    arm, P, Q, c_ok, fig, add = a.arm, a.P, a.Q, a.c_ok, a.fig, a.add
 
     # Figure 4: units of ARCTAN's result
     def c1_of(text, p):
@@ -206,6 +234,11 @@ def stl_items(Item) -> list:
         derived="same as CALL ARCTAN, VD12, VD20",
     )
 
+
+def _figure5(a: _Audit) -> None:
+    """Figure 5: the VD68 overwrite and the unit of theta2."""
+    arm, P, Q, c_ok, add = a.arm, a.P, a.Q, a.c_ok, a.add
+    L2, L3 = arm.params.L2, arm.params.L3
     # Figure 5: VD68 holds sin(theta3) and is overwritten before VD92 := 310 * VD68
     frag5 = "SIN VD48, VD68; MOVR 310.0, VD68; *R VD64, VD68; +R 200.0, VD68; MOVR VD68, VD92; *R 310.0, VD92"  # noqa: E501
     fix5 = "SIN VD48, VD68; MOVR VD68, VD92; *R 310.0, VD92; MOVR 310.0, VD68; *R VD64, VD68; +R 200.0, VD68"  # noqa: E501
@@ -260,6 +293,12 @@ def stl_items(Item) -> list:
         f"{stl.dint(_run(frag5u, VD114=Q[0, 1] + Q[0, 2], VD48=Q[0, 2]), 'VD122')}, eq. 21 needs {c_ok[0, 1]}",  # noqa: E501
     )
 
+
+def _figure5_atan(a: _Audit) -> None:
+    """Figure 5: eq. 18's single-argument ARCTAN; the network order of Figures 5 and 6."""
+    arm, P, Q, add = a.arm, a.P, a.Q, a.add
+    L2, L3 = arm.params.L2, arm.params.L3
+
     # Figure 5: eq. 18's single-argument ARCTAN
     def num(p, q):  # numerator of eq. 18 with r = rho (front branch)
         z = p[2] - arm.params.L1
@@ -271,9 +310,7 @@ def stl_items(Item) -> list:
 
     def v_fig5_atan(text):
         if text.startswith("theta"):
-            from analysis.audit.grabber_checks import _verify_angle
-
-            return _verify_angle(text)
+            return verify_angle(text)
         return all(
             abs(stl.real(_run(text, VD100=num(p, q), VD110=den(p, q)), "VD114") - (q[1] + q[2]))
             < 1e-5
@@ -284,7 +321,7 @@ def stl_items(Item) -> list:
         "fig5-atan",
         "Figure 5",
         "MOVR VD100, VD114; /R VD110, VD114; CALL ARCTAN, VD114, VD114",
-        f"theta2 + theta3 = atan2({paper._NUM}, {paper._DEN})",
+        f"theta2 + theta3 = atan2({paper.EQ18_NUM}, {paper.EQ18_DEN})",
         "branch/quadrant",
         v_fig5_atan,
         f"Table 4 row 1: ARCTAN(num/den) = {np.degrees(np.arctan(num(P[0], Q[0]) / den(P[0], Q[0]))):.2f} deg, "  # noqa: E501
@@ -314,6 +351,11 @@ def stl_items(Item) -> list:
         "(CALL ARCCOS ..., VD48): in the first scan theta2 uses VD48 = 0, later the previous scan's value",  # noqa: E501
     )
 
+
+def _figure6(a: _Audit) -> None:
+    """Figure 6: the VDD0 operand, 2 L2 L3, the ARCCOS branch, the unit of theta3."""
+    arm, Q, c_ok, add = a.arm, a.Q, a.c_ok, a.add
+    L2, L3 = arm.params.L2, arm.params.L3
     # Figure 6: VDD0 is not an operand; SIN/COS need theta1 (VD12), the products need Px (VD0)
     theta1_addr = next(
         i.args[-1] for i in stl.parse_stl(paper.FIGURE_STL[4]) if i.op == "CALL ARCTAN"
@@ -389,6 +431,11 @@ def stl_items(Item) -> list:
         f"it would be {stl.dint(_run(frag6u.replace('*R 4000.0', '/R 360.0, VD52; *R 4000.0'), VD48=Q[0, 2]), 'VD52')}",  # noqa: E501
     )
 
+
+def _reach(a: _Audit) -> None:
+    """Figures 5-6: no reach check before ARCCOS."""
+    arm, add = a.arm, a.add
+    L2, L3 = arm.params.L2, arm.params.L3
     # no reach check anywhere before ARCCOS
     t4 = load_printed()[["x_mm", "y_mm", "z_mm"]].astype(float).to_numpy()
     allp = np.vstack([t4, [[0.0, 600.0, 660.0], [50.0, 0.0, 660.0]]])
@@ -413,4 +460,3 @@ def stl_items(Item) -> list:
         f"Table 4 row 8 ({t4[7, 0]:g}, {t4[7, 1]:g}, {t4[7, 2]:g}): ARCCOS argument {arg[7]:.4f} > 1, "  # noqa: E501
         "the listing has no branch for it (NaN; a NaN in a REAL compare stops an S7-200 (System Manual))",  # noqa: E501
     )
-    return items

@@ -8,9 +8,15 @@ Derivations
   :mod:`analysis.kinematics.dh` (Craig), and each printed matrix against eq. 8.
 * Numeric: the printed IK chain (eqs. 1-6, 12) evaluated with each formula as printed or
   corrected (:func:`ik_chain`), the four elbow/waist solutions of the arm (:func:`all_ik`),
-  forward kinematics by the D-H product of ``data/palletizer_mdh.csv``
-  (:func:`analysis.studies.companions.load_palletizer`; its lengths are *illustrative*, the
-  paper prints none: L1 = L2 = 200, L3 = 50, h = 70 mm).
+  forward kinematics by the D-H chain of the one description of the arm,
+  ``data/arms/palletizer.toml`` (``load_arm("palletizer")``). The paper prints no length:
+  L1, L2, L3, h are parameters (every function takes an :class:`~analysis.kinematics.arm.Arm`,
+  e.g. ``Arm(arm.params.with_(L2=150.0))``), their default values are ASSUMED, in the
+  isosceles family L1 = L2 = 200, L3 = 50, h = 70 mm, and every evidence text says so.
+* The corrected IK itself is the shared closed form (:mod:`analysis.kinematics.arms.
+  palletizer`, via :meth:`Arm.solve`); :func:`ik_chain` with every item fixed is an
+  independent coding of it (the tests hold the two together), and :func:`fk_ik_pinocchio`
+  closes the loop through Pinocchio.
 
 Corrected IK (elbow above the shoulder-wrist line, waist facing the target)::
 
@@ -33,20 +39,24 @@ import numpy.typing as npt
 import sympy as sp
 
 from analysis.audit.findings import Finding
+from analysis.kinematics.arm import Arm, load_arm
 from analysis.kinematics.dh import DHRow, DHTable, link_transform_sym
 from analysis.papers import palletizer as paper
-from analysis.studies.companions import Palletizer, load_palletizer
 
 __all__ = [
     "FIXES",
     "QUADRANT_TARGETS",
     "all_ik",
+    "assumed_lengths",
     "derived_tool_position",
     "eq11_printed_position",
     "eq11_residuals",
     "findings",
+    "fk_ik_pinocchio",
     "gamma_eq6",
     "ik_chain",
+    "lengths",
+    "level_configurations",
     "symbolic_table",
     "uniqueness_counts",
 ]
@@ -61,6 +71,23 @@ QUADRANT_TARGETS = np.array(
 )
 """Four illustrative targets [mm], one per quadrant, Z > 0 (section 5's layout; the paper's
 own four targets are in the lost Tables 2-3)."""
+
+
+def lengths(arm: Arm) -> tuple[float, float, float, float]:
+    """(L1, L2, L3, h) [mm] of an arm of the palletizer description."""
+    P = arm.params
+    return P["L1"], P["L2"], P["L3"], P["h"]
+
+
+def assumed_lengths(arm: Arm) -> str:
+    """The lengths in use, each marked ``assumed`` unless the description says otherwise
+    (the paper prints none): the phrase every evidence text that depends on them carries."""
+    desc = arm.description
+    parts = []
+    for k in ("L1", "L2", "L3", "h"):
+        status = desc.parameters[k].status if arm.params[k] == desc.parameters[k].value else ""
+        parts.append(f"{k} = {arm.params[k]:g} mm" + (" assumed" if status != "printed" else ""))
+    return ", ".join(parts)
 
 
 # --------------------------------------------------------------------------- symbolic
@@ -165,12 +192,12 @@ def _eq11_functions():
     return sp.lambdify(args, rows, "numpy")
 
 
-def eq11_printed_position(pal: Palletizer, q: npt.ArrayLike) -> npt.NDArray[np.float64]:
+def eq11_printed_position(arm: Arm, q: npt.ArrayLike) -> npt.NDArray[np.float64]:
     """Gripper tip by eq. 11 as printed (rows 1-3 as x, y, z) [mm], (..., 3), for D-H
     angles (..., 4) [rad]."""
     q = np.asarray(q, dtype=float)
     f = _eq11_functions()
-    rows = f(*np.moveaxis(q, -1, 0), pal.L1, pal.L2, pal.L3, pal.h)
+    rows = f(*np.moveaxis(q, -1, 0), *lengths(arm))
     return np.stack(np.broadcast_arrays(*rows), axis=-1)
 
 
@@ -189,7 +216,7 @@ def gamma_eq6(x0, y0, reading: str = "signed") -> npt.NDArray[np.float64]:
 
 
 def ik_chain(
-    pal: Palletizer,
+    arm: Arm,
     target: npt.ArrayLike,
     fixed=(),
     H_reading: str = "height",
@@ -199,8 +226,8 @@ def ik_chain(
 
     Parameters
     ----------
-    pal : Palletizer
-        Lengths L1, L2, L3, h [mm] (illustrative).
+    arm : Arm
+        The palletizer (lengths L1, L2, L3, h [mm]: parameters, assumed).
     target : array_like, shape (..., 3)
         G = (X0, Y0, Z0) [mm].
     fixed : iterable of str
@@ -227,7 +254,7 @@ def ik_chain(
         raise ValueError(f"H_reading {H_reading!r}; expected 'height' or 'depth'")
     p = np.asarray(target, dtype=float)
     x0, y0, z0 = np.moveaxis(p, -1, 0)
-    L1, L2, L3, h = pal.L1, pal.L2, pal.L3, pal.h
+    L1, L2, L3, h = lengths(arm)
     rho = np.hypot(x0, y0)
     with np.errstate(invalid="ignore", divide="ignore"):
         gamma = np.arctan2(y0, x0) if "gamma" in fixed else gamma_eq6(x0, y0, arctan_reading)
@@ -248,27 +275,27 @@ def ik_chain(
     }
 
 
-def miss(pal: Palletizer, target, q, eq11: str = "product") -> npt.NDArray[np.float64]:
+def miss(arm: Arm, target, q, eq11: str = "product") -> npt.NDArray[np.float64]:
     """Distance [mm] from the target to the gripper tip at D-H angles q, by the D-H product
     (``"product"``) or by eq. 11 as printed (``"printed"``); NaN where q is NaN."""
     q = np.asarray(q, dtype=float)
     ok = np.isfinite(q).all(axis=-1)
     qq = np.where(ok[..., None], q, 0.0)
-    tip = pal.fk(qq) if eq11 == "product" else eq11_printed_position(pal, qq)
+    tip = arm.fk(qq) if eq11 == "product" else eq11_printed_position(arm, qq)
     return np.where(ok, np.linalg.norm(tip - np.asarray(target, float), axis=-1), np.nan)
 
 
 BRANCHES = ("front-up", "front-down", "back-up", "back-down")
 
 
-def all_ik(pal: Palletizer, target: npt.ArrayLike) -> npt.NDArray[np.float64]:
+def all_ik(arm: Arm, target: npt.ArrayLike) -> npt.NDArray[np.float64]:
     """All D-H solutions (..., 4 branches, 4 angles) [rad] with the gripper level, NaN where
     a branch does not reach. Branches :data:`BRANCHES`: the waist facing the target
     (gamma = atan2) or turned by pi (the arm reaching back over its base), the elbow above
     ("up", theta3 > 0) or below the shoulder-wrist line."""
     p = np.asarray(target, dtype=float)
     x0, y0, z0 = np.moveaxis(p, -1, 0)
-    L1, L2, L3, h = pal.L1, pal.L2, pal.L3, pal.h
+    L1, L2, L3, h = lengths(arm)
     rho, zw = np.hypot(x0, y0), z0 + h
     g = np.arctan2(y0, x0)
     out = []
@@ -287,40 +314,109 @@ def all_ik(pal: Palletizer, target: npt.ArrayLike) -> npt.NDArray[np.float64]:
     return np.stack(out, axis=-2)
 
 
-def uniqueness_counts(pal: Palletizer, targets: npt.ArrayLike) -> dict[str, npt.NDArray]:
+def uniqueness_counts(arm: Arm, targets: npt.ArrayLike) -> dict[str, npt.NDArray]:
     """Per target, how many of the four solutions satisfy each reading of the section 2
     limit "小臂和大臂之間的夾角小於90°", and the candidate joint limits.
 
     Returns counts (n,) for: ``reachable`` (all solutions), ``interior<90`` (elbow
     interior angle beta1 < 90 deg), ``between-directions<90`` (|theta3| < 90 deg, the angle
     between the link directions), ``elbow-up`` (theta3 in (0, pi), i.e. beta > -90 deg),
-    ``elbow-up+front`` (and the waist facing the target, eq. 6).
+    ``elbow-up+front`` (and the waist facing the target, eq. 6), ``stop`` (theta3 within
+    the description's limit of theta3, the signed stop of ``data/arms/palletizer.toml``:
+    [90, 180] deg) and ``stop+front`` (and the waist facing the target).
     """
-    q = all_ik(pal, targets)
+    q = all_ik(arm, targets)
     ok = np.isfinite(q).all(axis=-1)
     t3 = np.where(ok, q[..., 2], np.nan)
     beta1 = np.pi - np.abs(t3)
+    lim = arm.limits[2] or (-np.inf, np.inf)
     with np.errstate(invalid="ignore"):
+        stop = ok & (t3 >= lim[0]) & (t3 <= lim[1])
         return {
             "reachable": ok.sum(-1),
             "interior<90": (ok & (beta1 < np.pi / 2)).sum(-1),
             "between-directions<90": (ok & (np.abs(t3) < np.pi / 2)).sum(-1),
             "elbow-up": (ok & (t3 > 0)).sum(-1),
             "elbow-up+front": (ok[..., 0] & (t3[..., 0] > 0)).astype(int),
+            "stop": stop.sum(-1),
+            "stop+front": stop[..., 0].astype(int),
         }
 
 
-def workspace_grid(pal: Palletizer, n: int = 41) -> npt.NDArray[np.float64]:
+def level_configurations(
+    arm: Arm, n: int, rng: np.random.Generator, margin_deg: float = 2.0
+) -> npt.NDArray[np.float64]:
+    """n seeded D-H configurations (n, 4) [rad] the palletizer can take: gripper level
+    (theta4 = pi/2 - theta2 - theta3, sec. 3), theta3 inside its limit by ``margin_deg``
+    (for L1 = L2 the fold theta3 = 180 deg puts the wrist on the shoulder), theta1, theta2
+    in (-180, 180) deg, and the grasp point at least 1 mm in front of the base axis in the
+    arm's plane (its radius along the waist direction theta1 > 1 mm: the waist faces it,
+    as eq. 6 has it; an upper arm leaning back over the base can put the point behind).
+
+    The IK is unique on this set (the waist faces the target, theta3 is in the stop), so
+    :meth:`Arm.solve` must return these very angles.
+    """
+    lo, hi = arm.limits[2] or (-np.pi, np.pi)
+    m = np.radians(margin_deg)
+    out = np.empty((0, 4))
+    while len(out) < n:
+        k = 2 * n
+        t1 = rng.uniform(-np.pi, np.pi, k)
+        t2 = rng.uniform(-np.pi, np.pi, k)
+        t3 = rng.uniform(max(lo, 0.0) + m, min(hi, np.pi) - m, k)
+        t4 = np.mod(np.pi / 2 - t2 - t3 + np.pi, 2 * np.pi) - np.pi
+        q = np.stack([t1, t2, t3, t4], axis=-1)
+        p = arm.fk(q)
+        q = q[p[:, 0] * np.cos(t1) + p[:, 1] * np.sin(t1) > 1.0]
+        out = np.concatenate([out, q])
+    return out[:n]
+
+
+def fk_ik_pinocchio(arm: Arm, n: int = 10_000, seed: int = 20210401) -> dict:
+    """FK(IK(G)) = G with both forward kinematics by Pinocchio (built from the arm's D-H
+    chain, :class:`~analysis.kinematics.pinocchio_model.PinocchioArm`) and the IK by the
+    shared solver (:meth:`Arm.solve`, joint limits on).
+
+    G = Pinocchio FK of :func:`level_configurations`; q = IK(G); G' = Pinocchio FK of q.
+
+    Returns ``n``, ``max_err_mm`` (max |G' - G|), ``max_dq_rad`` (max |q - q0|, angles
+    wrapped), ``all_ok`` (every target solved, status 0) and ``status`` counts.
+    """
+    from analysis.kinematics.pinocchio_model import PinocchioArm
+
+    rng = np.random.default_rng(seed)
+    q0 = level_configurations(arm, n, rng)
+    pin_arm = PinocchioArm(arm.table)
+    G = pin_arm.fk(q0)
+    sol = arm.solve(G, arm.branches[0])
+    q = sol.theta[:, 0]
+    ok = sol.ok[:, 0]
+    G2 = pin_arm.fk(np.where(ok[:, None], q, 0.0))
+    err = np.linalg.norm(G2 - G, axis=-1)
+    dq = np.abs(np.mod(q - q0 + np.pi, 2 * np.pi) - np.pi)
+    return {
+        "n": n,
+        "max_err_mm": float(err[ok].max()) if ok.any() else float("nan"),
+        "max_dq_rad": float(dq[ok].max()) if ok.any() else float("nan"),
+        "all_ok": bool(ok.all()),
+        "status": {
+            int(s): int(c) for s, c in zip(*np.unique(sol.status, return_counts=True), strict=True)
+        },
+    }
+
+
+def workspace_grid(arm: Arm, n: int = 41) -> npt.NDArray[np.float64]:
     """Targets [mm] on a regular grid (x, y in +-(L1 + L2 + L3), z in [0, L1 + L2]) that the
-    front-up branch reaches (acos arguments strictly inside (-1, 1))."""
-    r = pal.L1 + pal.L2 + pal.L3
+    front-up branch reaches (acos arguments strictly inside (-1, 1)), joint limits ignored."""
+    P = arm.params
+    r = P.L1 + P.L2 + P.L3
     xs = np.linspace(-r, r, n)
-    zs = np.linspace(1.0, pal.L1 + pal.L2, (n + 1) // 2)
+    zs = np.linspace(1.0, P.L1 + P.L2, (n + 1) // 2)
     G = np.stack(np.meshgrid(xs, xs, zs, indexing="ij"), axis=-1).reshape(-1, 3)
-    q = all_ik(pal, G)[:, 0]
-    L4 = np.hypot(np.hypot(G[:, 0], G[:, 1]) - pal.L3, G[:, 2] + pal.h)
-    keep = np.isfinite(q).all(-1) & (L4 < 0.999 * (pal.L1 + pal.L2)) & (L4 > 1e-3)
-    keep &= np.abs(pal.L1 - pal.L2) * 1.001 < L4
+    q = all_ik(arm, G)[:, 0]
+    L4 = np.hypot(np.hypot(G[:, 0], G[:, 1]) - P.L3, G[:, 2] + P.h)
+    keep = np.isfinite(q).all(-1) & (L4 < 0.999 * (P.L1 + P.L2)) & (L4 > 1e-3)
+    keep &= np.abs(P.L1 - P.L2) * 1.001 < L4
     return G[keep]
 
 
@@ -329,29 +425,30 @@ def _fmt(v) -> str:
     return np.array2string(np.asarray(v), precision=2, separator=", ", suppress_small=True)
 
 
-def _quadrant_misses(pal, fixed, **kw) -> npt.NDArray[np.float64]:
-    return miss(pal, QUADRANT_TARGETS, ik_chain(pal, QUADRANT_TARGETS, fixed, **kw)["q"])
+def _quadrant_misses(arm, fixed, **kw) -> npt.NDArray[np.float64]:
+    return miss(arm, QUADRANT_TARGETS, ik_chain(arm, QUADRANT_TARGETS, fixed, **kw)["q"])
 
 
-def findings(pal: Palletizer | None = None) -> list[Finding]:
+def findings(arm: Arm | None = None) -> list[Finding]:
     """Every checked item of seed 001, wrong ones with a correction, from the runs above."""
-    pal = pal if pal is not None else load_palletizer()
+    arm = arm if arm is not None else load_arm("palletizer")
+    P = arm.params
     all_fix = set(FIXES)
     out: list[Finding] = []
-    lengths = f"illustrative L1 = {pal.L1:g}, L2 = {pal.L2:g}, L3 = {pal.L3:g}, h = {pal.h:g} mm"
+    dims = assumed_lengths(arm)
     G = QUADRANT_TARGETS
 
     # sanity: everything corrected reaches every quadrant target
-    base = _quadrant_misses(pal, all_fix)
+    base = _quadrant_misses(arm, all_fix)
     if not np.all(base < 1e-9):  # pragma: no cover - guarded by the tests
         raise AssertionError(f"corrected chain misses {base}")
 
     # eq. 11
     res = eq11_residuals()
     q_eq7 = np.array([0.0, -np.pi / 2, np.pi / 2, np.pi / 2])
-    eq7_err = float(np.linalg.norm(eq11_printed_position(pal, q_eq7) - pal.fk(q_eq7)))
-    q_g = ik_chain(pal, G, all_fix)["q"]
-    m11 = miss(pal, G, q_g, eq11="printed")
+    eq7_err = float(np.linalg.norm(eq11_printed_position(arm, q_eq7) - arm.fk(q_eq7)))
+    q_g = ik_chain(arm, G, all_fix)["q"]
+    m11 = miss(arm, G, q_g, eq11="printed")
     out.append(
         Finding(
             "pal-eq11-s4L3",
@@ -363,7 +460,7 @@ def findings(pal: Palletizer | None = None) -> list[Finding]:
             f"printed - derived = {sp.sstr(res[0]['residual'])} (row 1), "
             "zero in every row after s4L3 -> c4L3, i.e. an error of L3|s4 - c4| "
             f"in length: at eq. 7's pose {eq7_err:.3g} mm (= L3); at the corrected IK of the "
-            f"four quadrant targets {_fmt(m11)} mm ({lengths})",
+            f"four quadrant targets {_fmt(m11)} mm ({dims})",
         )
     )
     out.append(
@@ -412,8 +509,8 @@ def findings(pal: Palletizer | None = None) -> list[Finding]:
 
     # eq. 12 theta4 and eq. 7
     zero_motor = np.array([0.0, -np.pi / 2, np.pi / 2, np.pi / 2 - (-np.pi / 2) + np.pi / 2])
-    home_tip = pal.fk(q_eq7)
-    m_t4 = _quadrant_misses(pal, all_fix - {"theta4"})
+    home_tip = arm.fk(q_eq7)
+    m_t4 = _quadrant_misses(arm, all_fix - {"theta4"})
     out.append(
         Finding(
             "pal-eq12-theta4",
@@ -424,20 +521,20 @@ def findings(pal: Palletizer | None = None) -> list[Finding]:
             "gripper parallel to the base (sec. 3, theta5 = 0) needs theta2 + theta3 + theta4 "
             "= pi/2, the value at eq. 7; as printed the sum is 3 pi/2 + 2 beta. At zero motor "
             f"angles eq. 12 gives theta4 = {np.degrees(zero_motor[3]):.0f} deg, eq. 7 says 90 "
-            f"deg; tip {_fmt(pal.fk(zero_motor))} mm instead of {_fmt(home_tip)} mm. Only this "
-            f"item printed: misses {_fmt(m_t4)} mm at the four quadrant targets ({lengths}). "
+            f"deg; tip {_fmt(arm.fk(zero_motor))} mm instead of {_fmt(home_tip)} mm. Only this "
+            f"item printed: misses {_fmt(m_t4)} mm at the four quadrant targets ({dims}). "
             "Lost parentheses in the extraction cannot be excluded (UNCERTAIN).",
         )
     )
 
     # eq. 4 / eq. 12 sign of alpha, both readings of H
-    m_a_h = _quadrant_misses(pal, all_fix - {"alpha"}, H_reading="height")
-    m_a_d = _quadrant_misses(pal, all_fix - {"alpha", "alpha2", "H"}, H_reading="depth")
-    m_init = miss(pal, home_tip, ik_chain(pal, home_tip, all_fix - {"alpha"})["q"])
+    m_a_h = _quadrant_misses(arm, all_fix - {"alpha"}, H_reading="height")
+    m_a_d = _quadrant_misses(arm, all_fix - {"alpha", "alpha2", "H"}, H_reading="depth")
+    m_init = miss(arm, home_tip, ik_chain(arm, home_tip, all_fix - {"alpha"})["q"])
     m_init_d = miss(
-        pal,
+        arm,
         home_tip,
-        ik_chain(pal, home_tip, all_fix - {"alpha", "alpha2", "H"}, H_reading="depth")["q"],
+        ik_chain(arm, home_tip, all_fix - {"alpha", "alpha2", "H"}, H_reading="depth")["q"],
     )
     out.append(
         Finding(
@@ -473,9 +570,9 @@ def findings(pal: Palletizer | None = None) -> list[Finding]:
         )
     )
     behind = np.array([[30.0, 10.0, 100.0]])
-    m_a2 = miss(pal, behind, ik_chain(pal, behind, all_fix - {"alpha2"})["q"])
-    grid = workspace_grid(pal)
-    m_grid = miss(pal, grid, ik_chain(pal, grid, all_fix - {"alpha2"})["q"])
+    m_a2 = miss(arm, behind, ik_chain(arm, behind, all_fix - {"alpha2"})["q"])
+    grid = workspace_grid(arm)
+    m_grid = miss(arm, grid, ik_chain(arm, grid, all_fix - {"alpha2"})["q"])
     rho_g = np.hypot(grid[:, 0], grid[:, 1])
     wrong_a2 = m_grid > 1e-6
     out.append(
@@ -489,11 +586,11 @@ def findings(pal: Palletizer | None = None) -> list[Finding]:
             "front of the base axis (rho > L3). On a grid of "
             f"{len(grid)} reachable targets it misses on {int(wrong_a2.sum())}, all with rho < "
             f"L3 (max rho there {rho_g[wrong_a2].max() if wrong_a2.any() else 0:.1f} mm); "
-            f"e.g. G = (30, 10, 100) mm misses {float(m_a2[0]):.2f} mm ({lengths})",
+            f"e.g. G = (30, 10, 100) mm misses {float(m_a2[0]):.2f} mm ({dims})",
         )
     )
-    m_b1 = _quadrant_misses(pal, all_fix - {"beta1"})
-    chain_home = ik_chain(pal, home_tip, all_fix - {"beta1"})["motor"]
+    m_b1 = _quadrant_misses(arm, all_fix - {"beta1"})
+    chain_home = ik_chain(arm, home_tip, all_fix - {"beta1"})["motor"]
     out.append(
         Finding(
             "pal-eq3-beta1",
@@ -519,8 +616,8 @@ def findings(pal: Palletizer | None = None) -> list[Finding]:
     }
     quad = np.floor(np.mod(np.degrees(az), 360) / 90).astype(int) + 1
     bad_q = {r: sorted({int(k) for k in quad[w]}) for r, w in wrong.items()}
-    m_g = _quadrant_misses(pal, all_fix - {"gamma"})
-    m_g_acute = _quadrant_misses(pal, all_fix - {"gamma"}, arctan_reading="acute")
+    m_g = _quadrant_misses(arm, all_fix - {"gamma"})
+    m_g_acute = _quadrant_misses(arm, all_fix - {"gamma"}, arctan_reading="acute")
     out.append(
         Finding(
             "pal-eq6-quadrant",
@@ -539,32 +636,42 @@ def findings(pal: Palletizer | None = None) -> list[Finding]:
     )
 
     # claims
-    counts = uniqueness_counts(pal, grid)
+    counts = uniqueness_counts(arm, grid)
     c_int = np.bincount(counts["interior<90"], minlength=5)
     c_dir = np.bincount(counts["between-directions<90"], minlength=5)
     c_up = np.bincount(counts["elbow-up"], minlength=5)
     c_all = np.bincount(counts["reachable"], minlength=5)
+    c_stop = np.bincount(counts["stop"], minlength=5)
+    n_stop = int(counts["stop+front"].sum())
+    lim = np.degrees(arm.limits[2]) if arm.limits[2] else (-180.0, 180.0)
     out.append(
         Finding(
             "pal-claim-unique",
             "sec. 2, third paragraph",
             "小臂和大臂之間的夾角小於90°, 所以其抓取時的位置狀態是唯一的",
-            "the elbow-down mirror pose has the same forearm-upper-arm angle; the pose is "
-            "unique with the waist facing the target (eq. 6) and the elbow above the "
-            "shoulder-wrist line: theta3 in (0, pi), i.e. beta > -90 deg",
-            "claim",
-            f"{len(grid)} grid targets reachable by the front elbow-up branch ({lengths}): "
+            "the included angle bounds no sign: the elbow-down mirror pose has the same angle. "
+            f"A stop on the signed elbow angle, theta3 in [{lim[0]:g}, {lim[1]:g}] deg "
+            "(data/arms/palletizer.toml), makes the pose unique with the waist facing the "
+            "target (eq. 6); '<= 90 deg', since the initial pose has exactly 90 deg",
+            "reasoning",
+            f"{len(grid)} grid targets reachable by the front elbow-up branch ({dims}): "
             f"number of solutions (0-4) reaching each: {c_all.tolist()}; of these satisfying "
             f"'interior angle < 90 deg': {c_int.tolist()} (the limit removes "
             f"{c_int[0] / len(grid):.0%} of the targets); '|theta3| < 90 deg': "
             f"{c_dir.tolist()}; 'theta3 > 0': {c_up.tolist()}; with theta3 > 0 and eq. 6's "
-            f"waist: 1 for all {int(counts['elbow-up+front'].sum())}. Under either reading of "
-            "the angle the count is even (0, 2 or 4), never 1, and the paper's own initial pose "
-            "(forearm perpendicular) sits at exactly 90 deg, outside '< 90 deg'.",
+            f"waist: 1 for all {int(counts['elbow-up+front'].sum())}. Under either unsigned "
+            "reading of the angle the count is even (0, 2 or 4), never 1. With the signed stop "
+            f"theta3 in [{lim[0]:g}, {lim[1]:g}] deg: {c_stop.tolist()}, 1 with the waist "
+            f"facing the target for all {n_stop} targets it keeps (the waist-reversed pose, "
+            "upper arm leaning back over the base, satisfies the stop too for "
+            f"{int((counts['stop'] == 2).sum())} of them: only eq. 6's waist, or a limit on "
+            "theta2 that the paper does not print, excludes it). The paper's own initial pose "
+            "(forearm perpendicular to the upper arm, sec. 3) sits at exactly 90 deg, outside "
+            "'< 90 deg'.",
         )
     )
     unreachable = np.array([500.0, 0.0, 0.0])
-    L4_u = float(np.hypot(500.0 - pal.L3, pal.h))
+    L4_u = float(np.hypot(500.0 - P.L3, P.h))
     out.append(
         Finding(
             "pal-claim-isosceles",
@@ -574,15 +681,16 @@ def findings(pal: Palletizer | None = None) -> list[Finding]:
             "isosceles for every target iff L1 = L2",
             "claim",
             "eq. 3 is the general law of cosines and needs no isosceles triangle; isosceles "
-            "for all targets forces L1 = L2 (the illustrative data file has L1 = L2 = "
-            f"{pal.L1:g} mm, so it satisfies the claim by choice, not by the paper). No reach "
+            "for all targets forces L1 = L2, which the paper never states (no length is "
+            f"printed; the audit's default family is L1 = L2, {dims}: it satisfies the claim "
+            "by assumption, not by the paper). No reach "
             f"check precedes eq. 3: G = {_fmt(unreachable)} mm gives L4 = {L4_u:.1f} mm > "
-            f"L1 + L2 = {pal.L1 + pal.L2:g} mm and arccos of "
-            f"{(pal.L1**2 + L4_u**2 - pal.L2**2) / (2 * pal.L1 * L4_u):.3f}.",
+            f"L1 + L2 = {P.L1 + P.L2:g} mm and arccos of "
+            f"{(P.L1**2 + L4_u**2 - P.L2**2) / (2 * P.L1 * L4_u):.3f}.",
         )
     )
-    m_printed = _quadrant_misses(pal, ())
-    m_printed_11 = miss(pal, G, ik_chain(pal, G, ())["q"], eq11="printed")
+    m_printed = _quadrant_misses(arm, ())
+    m_printed_11 = miss(arm, G, ik_chain(arm, G, ())["q"], eq11="printed")
     out.append(
         Finding(
             "pal-claim-exact",
@@ -633,7 +741,7 @@ def findings(pal: Palletizer | None = None) -> list[Finding]:
         )
     )
     # items that hold
-    q0 = ik_chain(pal, home_tip, all_fix)["q"]
+    q0 = ik_chain(arm, home_tip, all_fix)["q"]
     out.append(
         Finding(
             "pal-eq7",

@@ -307,6 +307,13 @@ def solve_body(
     compiled kernel is generated from its recording, the PLC program from the closed form
     it calls. Returns ``status`` (float code), ``outside``, and per branch ``b`` the
     condition ``ok:b`` and the angles ``q:b:j`` (NaN where not ok).
+
+    A closed form may also return ``branch_refusals`` {branch: [(Status, condition), ...]}
+    for what only some branches cannot do (the GR-1's front and back wrists lie at
+    different points, so one may be out of reach while the other is not): a branch is ok
+    where none of its own conditions holds. A target that passes the closed form's
+    refusals but has no ok branch gets the first requested branch's reason (its first
+    true condition, else ``JOINT_LIMITS``), which is what a one-branch PLC program reports.
     """
     sol = cf.ik(m, p, P, tol=tol, **options)
     status = 0.0
@@ -314,18 +321,37 @@ def solve_body(
         status = m.select(cond, float(code), status)
     good = m.eq(status, 0.0)
     out = {"outside": sol["outside"]}
+    per_branch = sol.get("branch_refusals", {})
+    has_branch = any(per_branch.get(b) for b in names)
     any_ok = None
+    first_reason = None
     for b in names:
         q = sol["branches"][b]
         ok = good
+        reason = 0.0
+        if per_branch.get(b):
+            for code, cond in reversed(per_branch[b]):
+                reason = m.select(cond, float(code), reason)
+            ok = m.and_(ok, m.eq(reason, 0.0))
+        within = None
         for qj, lim in zip(q, limits or [None] * len(q), strict=True):
             if lim is not None:
-                ok = m.and_(ok, m.and_(m.ge(qj, lim[0]), m.le(qj, lim[1])))
+                inside = m.and_(m.ge(qj, lim[0]), m.le(qj, lim[1]))
+                ok = m.and_(ok, inside)
+                within = inside if within is None else m.and_(within, inside)
+        if has_branch and within is not None:
+            stop = m.not_(within) if isinstance(reason, float) else (
+                m.and_(m.eq(reason, 0.0), m.not_(within))
+            )  # fmt: skip
+            reason = m.select(stop, float(Status.JOINT_LIMITS), reason)
         out[f"ok:{b}"] = ok
         for j, qj in enumerate(q):
             out[f"q:{b}:{j}"] = m.select(ok, qj, math.nan)
         any_ok = ok if any_ok is None else m.or_(any_ok, ok)
-    if any(lim is not None for lim in limits):
+        first_reason = reason if first_reason is None else first_reason
+    if has_branch:
+        status = m.select(m.and_(good, m.not_(any_ok)), first_reason, status)
+    elif any(lim is not None for lim in limits):
         status = m.select(m.and_(good, m.not_(any_ok)), float(Status.JOINT_LIMITS), status)
     out["status"] = status
     return out

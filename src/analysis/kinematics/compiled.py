@@ -38,6 +38,8 @@ from pathlib import Path
 import numpy as np
 import numpy.typing as npt
 
+from analysis.kinematics.arm import IKSolutions, check_joints, solve_body
+from analysis.kinematics.arms import closed_form as load_cf
 from analysis.kinematics.dh import chain_frames
 from analysis.kinematics.trace import Graph, Node, TraceOps
 
@@ -329,9 +331,6 @@ def build(fn, arrays, scalars, outputs: dict, primitives=()) -> Kernel:
 @cache
 def ik_kernel(closed_form: str, params: tuple, names: tuple, limits: tuple) -> Kernel:
     """The kernel of :func:`~analysis.kinematics.arm.solve_body` for one closed form."""
-    from analysis.kinematics.arm import solve_body
-    from analysis.kinematics.arms import closed_form as load_cf
-
     cf = load_cf(closed_form)
 
     def body(m, v):
@@ -353,8 +352,6 @@ def ik_kernel(closed_form: str, params: tuple, names: tuple, limits: tuple) -> K
 
 def allocate(n_joints: int, shape: tuple, branches: Sequence[str]):
     """Output buffers for :func:`solve` (pass them back as ``out=`` to reuse memory)."""
-    from analysis.kinematics.arm import IKSolutions
-
     n = int(np.prod(shape, dtype=np.int64))
     B = len(branches)
     theta = np.empty((B, n_joints, n))
@@ -389,8 +386,6 @@ def _storage(view: np.ndarray, shape: tuple) -> np.ndarray:
 
 def solve(arm, p: npt.NDArray[np.float64], names, *, tol: float, limits, out=None):
     """:meth:`Arm.solve` with the compiled kernel (same arguments, already validated)."""
-    from analysis.kinematics.arm import IKSolutions
-
     if not HAVE_NUMBA:  # pragma: no cover
         return arm.solve(p, names, tol=tol, limits=bool(limits))
     names = tuple(names)
@@ -428,8 +423,6 @@ def fk_kernel(description, params: tuple) -> Kernel:
 
 def fk(arm, q: npt.ArrayLike, out: npt.NDArray[np.float64] | None = None):
     """:meth:`Arm.fk` with the compiled kernel: end points (..., 3) [mm] for (..., n) [rad]."""
-    from analysis.kinematics.arm import check_joints
-
     q = check_joints(q, arm.n_joints)
     if not HAVE_NUMBA:  # pragma: no cover
         return arm.fk(q)

@@ -21,6 +21,7 @@ Format (``data/arms/grabber.toml`` is the commented example)::
     kind = "revolute"                  # or "fixed" (a tool row without a joint)
     [[joints]]                         # one per joint variable, in chain order
     name = "theta1"; pulses_per_rev = 4000; limits_deg = [-180, 180]
+    # or pulses_per_rev = { value = 3200, status = "assumed" } (provenance as for parameters)
 
 Why hand-written: the format is the project's own (TOML read by the standard library's
 ``tomllib``); no robot-description library (URDF, MJCF) keeps a paper's symbols and the
@@ -75,6 +76,8 @@ class JointSpec:
     lower: float
     upper: float
     limits_status: str = ""
+    pulses_status: str = "printed"
+    """Provenance of ``pulses_per_rev`` ("printed", "derived" or "assumed")."""
 
     @property
     def unlimited(self) -> bool:
@@ -258,12 +261,21 @@ def _load(name: str, tables: tuple, stamp: tuple) -> ArmDescription:
     for j in d.get("joints", ()):
         where = f"{path.name} joint {j.get('name', '?')}"
         ppr = check_pulses_per_rev(_number(j["pulses_per_rev"], base, tables, where), where)
+        spec = j["pulses_per_rev"]
+        pstatus = spec.get("status", "printed") if isinstance(spec, dict) else "printed"
+        if pstatus not in STATUSES:
+            raise ValueError(f"{where}: pulses_per_rev status {pstatus!r} is not one of {STATUSES}")
         lo, hi = (float(v) for v in j.get("limits_deg", (-180.0, 180.0)))
         if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
             raise ValueError(f"{where}: limits_deg [{lo}, {hi}] must be finite with lower < upper")
         joints.append(
             JointSpec(
-                j["name"], ppr, math.radians(lo), math.radians(hi), j.get("limits_status", "")
+                j["name"],
+                ppr,
+                math.radians(lo),
+                math.radians(hi),
+                j.get("limits_status", ""),
+                pstatus,
             )
         )
     n_rev = sum(r.get("kind", "revolute") == "revolute" for r in rows)

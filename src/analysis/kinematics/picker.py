@@ -371,6 +371,27 @@ class Picker:
             "forearm_top": np.linalg.norm(C_main - C_fore, axis=-1),
         }
 
+    def points_at(self, active: npt.ArrayLike) -> dict[str, npt.NDArray[np.float64]]:
+        """The named points of the arm (A, G, D, B, C, F, W, P) in frame S [mm], each
+        (..., 3), for active joints (..., 6): each carried by the POE of the joints before
+        its link (main chain; B by the secondary chain's waist and horizontal slider). For
+        drawing the linkage."""
+        q = self.joints(active)
+        S_main, _ = self.open_chain()
+        S_sec, _ = self.secondary_chain()
+        pt = self.points
+        main_q = q[..., :8]
+        sec_q = q[..., [0, 8]]
+
+        def carry(S, qq, point):
+            T = poe.fk(S, np.eye(4), qq)
+            return np.einsum("...ij,j->...i", T[..., :3, :3], point) + T[..., :3, 3]
+
+        link = {"A": 2, "G": 3, "D": 3, "C": 4, "F": 4, "W": 5, "P": 8}
+        out = {k: carry(S_main[:n], main_q[..., :n], pt[k]) for k, n in link.items()}
+        out["B"] = carry(S_sec[:2], sec_q, pt["B"])
+        return out
+
     def statuses(self) -> dict[str, str]:
         """Status of every dimension used (``printed``/``assumed``)."""
         return self.params.statuses()

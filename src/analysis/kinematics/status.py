@@ -20,6 +20,7 @@ class Status(enum.IntEnum):
     JOINT_LIMITS = 4  # reachable, but no requested branch is within the joint limits
     DEGENERATE = 5  # a closed form's own singular case (named by the arm)
     INVALID = 6  # NaN or inf in the input (the PLC's check; Python raises instead)
+    ORIENTATION = 7  # an orientation the arm cannot take (a 5-DOF arm's missing freedom)
 
     @property
     def text(self) -> str:
@@ -35,4 +36,5 @@ STATUS_TEXT = {
     Status.JOINT_LIMITS: "joint-limits",
     Status.DEGENERATE: "degenerate",
     Status.INVALID: "invalid",
+    Status.ORIENTATION: "orientation",
 }

@@ -26,6 +26,8 @@ from analysis.papers.grabber_stl import FIGURE_STL, FIGURE_STL_EXTRACTED
 
 __all__ = [
     "CLAIMS",
+    "EQ18_DEN",
+    "EQ18_NUM",
     "EQUATIONS",
     "FIGURE_STL",
     "FIGURE_STL_EXTRACTED",
@@ -201,8 +203,10 @@ F_FUNCTIONS: dict[str, str] = {
 # --- scalar equations ----------------------------------------------------------------------
 _R = "(cos(theta1)*Px + sin(theta1)*Py)"
 _K = "(L2*cos(theta3) + L3)"
-_NUM = f"(Pz - L1)*{_K} + {_R}*L2*sin(theta3)"
-_DEN = f"-(Pz - L1)*L2*sin(theta3) + {_R}*{_K}"
+EQ18_NUM = f"(Pz - L1)*{_K} + {_R}*L2*sin(theta3)"
+"""The numerator of eq. 18 as printed (also in eqs. 16, 17 and 19)."""
+EQ18_DEN = f"-(Pz - L1)*L2*sin(theta3) + {_R}*{_K}"
+"""The denominator of eq. 18 as printed (also in eqs. 15, 17 and 19)."""
 _DEN2 = f"(Pz - L1)**2 + {_R}**2"
 
 EQUATIONS: dict[str, dict] = {
@@ -267,31 +271,31 @@ EQUATIONS: dict[str, dict] = {
     "eq15": {
         "location": "eq. 15",
         "lhs": "cos(theta2 + theta3)",
-        "rhs": f"({_DEN})/({_DEN2})",
+        "rhs": f"({EQ18_DEN})/({_DEN2})",
         "printed": "cos(θ2+θ3) = [-(Pz-L1) L2 sinθ3 + (cosθ1 Px + sinθ1 Py)(L2 cosθ3 + L3)] / [(Pz-L1)² + (cosθ1 Px + sinθ1 Py)²]",  # noqa: E501
     },
     "eq16": {
         "location": "eq. 16",
         "lhs": "sin(theta2 + theta3)",
-        "rhs": f"({_NUM})/({_DEN2})",
+        "rhs": f"({EQ18_NUM})/({_DEN2})",
         "printed": "sin(θ2+θ3) = [(Pz-L1)(L2 cosθ3 + L3) + (cosθ1 Px + sinθ1 Py) L2 sinθ3] / [(Pz-L1)² + (cosθ1 Px + sinθ1 Py)²]",  # noqa: E501
     },
     "eq17": {
         "location": "eq. 17",
         "lhs": "sin(theta2 + theta3)/cos(theta2 + theta3)",
-        "rhs": f"({_NUM})/({_DEN})",
+        "rhs": f"({EQ18_NUM})/({EQ18_DEN})",
         "printed": "tan(θ2+θ3) = [(Pz-L1)(L2 cosθ3 + L3) + (cosθ1 Px + sinθ1 Py) L2 sinθ3] / [-(Pz-L1) L2 sinθ3 + (cosθ1 Px + sinθ1 Py)(L2 cosθ3 + L3)]",  # noqa: E501
     },
     "eq18": {
         "location": "eq. 18",
         "lhs": "theta2 + theta3",
-        "rhs": f"atan(({_NUM})/({_DEN}))",
+        "rhs": f"atan(({EQ18_NUM})/({EQ18_DEN}))",
         "printed": "θ23 = θ2 + θ3 = tan^-1 { [(Pz-L1)(L2 cosθ3 + L3) + (cosθ1 Px + sinθ1 Py) L2 sinθ3] / [...] }",  # noqa: E501
     },
     "eq19": {
         "location": "eq. 19",
         "lhs": "theta2",
-        "rhs": f"atan(({_NUM})/({_DEN})) - theta3",
+        "rhs": f"atan(({EQ18_NUM})/({EQ18_DEN})) - theta3",
         "printed": "θ2 = θ23 - θ3 = tan^-1 {...} - θ3",
     },
 }

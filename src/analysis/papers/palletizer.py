@@ -33,6 +33,8 @@ __all__ = [
     "EQUATIONS",
     "LOST",
     "MATRICES",
+    "REFERENCES",
+    "SECTIONS",
     "SOURCE",
     "SYMBOLS",
     "UNCERTAIN",
@@ -496,6 +498,60 @@ CLAIMS: dict[str, dict] = {
 (which carries pinyin readings in parentheses after some characters, e.g. 目標(biāo), and
 mis-decoded characters such as 因?yàn)闄C for 因為機); ``printed`` is the same text read
 without those artefacts; ``meaning`` is ours."""
+
+SECTIONS: dict[int, str] = {
+    1: "引言 (Introduction)",
+    2: "機械臂模型的簡化 (Simplified Robotic Arm Model)",
+    3: "逆向運動學解算 (Inverse kinematics Solution)",
+    4: "正向運動學解算 (Forward kinematics Solution)",
+    5: "數值算例 (Numerical Verification)",
+    6: "結論 (Conclusion)",
+}
+"""Section headings as printed (numbers and titles; the extraction keeps them)."""
+
+REFERENCES: dict[int, dict[str, str]] = {
+    1: {
+        "printed": "《中國機器人產業發展報告2019》發布. 傳感器世界, 2019",
+        "topic": "industry report",
+    },
+    2: {
+        "printed": "Hartenburg R.S., Denavit J., Freudenstein F. Kinematic Synthesis of Linkages. "
+        "Journal of Applied Mechanics, 1965",
+        "topic": "D-H method",
+    },
+    3: {
+        "printed": "冷舒, 吳克, 居鶴華. 機械臂運動學建模及解算方法綜述. 宇航學報, 2019",
+        "topic": "survey",
+    },
+    4: {
+        "printed": "趙毓, 管公順, 郭繼峰, 等. 基於多智能體強化學習的空間機械臂軌跡規劃. 航空學報",
+        "topic": "reinforcement learning",
+    },
+    5: {
+        "printed": "馮晨旭, 胡三寶. 基於改進天牛須搜索的機械臂運動學逆解. 武漢大學學報(工學版)",
+        "topic": "search method (beetle antennae)",
+    },
+    6: {
+        "printed": "Tony Owen. Introduction to Robotics. Robotica, 1991, 9(4)",
+        "topic": "D-H method",
+    },
+    7: {
+        "printed": "朱訓棟, 徐海港, 趙棟杰. 碼垛機械臂運動學位置正逆解分析. 農業工程, 2017",
+        "topic": "palletizer kinematics",
+    },
+    8: {
+        "printed": "彭光宇, 董洪波, 馬斌. 兩種DH模型的機器人運動學建模對比研究. "
+        "機械研究與應用, 2019",
+        "topic": "modified D-H",
+    },
+    9: {
+        "printed": "潘磊, 錢煒, 張志艷, 等. 四自由度機械臂運動學分析及Matlab仿真. "
+        "機械科學與技術, 2013",
+        "topic": "4-DOF arm kinematics",
+    },
+}
+"""The reference list as printed (without the extraction's pinyin artefacts), with a topic
+tag of ours: what each cited work is about (for the cross-reference checks)."""
 
 LOST: dict[str, str] = {
     "Table 1": "the D-H parameter table (sec. 4.1, '如下表1'): body lost. The five printed "

@@ -9,6 +9,7 @@ moves on the CPU 224's two PTO channels (:mod:`.motion`, Table 2's I/O).
 from __future__ import annotations
 
 from analysis.kinematics.arm import Params
+from analysis.kinematics.arms import closed_form
 from analysis.plc.emit import allocate, emit_s7200, emit_s7300
 from analysis.plc.ir import build_program
 from analysis.plc.memmap import DIALECTS, MemoryMap, default_map
@@ -55,9 +56,15 @@ def generate(
         raise ValueError("--trig native is not possible on the S7-200 (no ATAN/ACOS instruction)")
     prog = build_program(params, branch, trig, theta1_on_axis=theta1_on_axis)
     mmap = (mmap or default_map(dialect, prog.inputs, len(prog.outputs))).with_dialect(dialect)
+    # the first-scan example target: the paper's Figure 3 (100, 100, 600) mm unless the
+    # closed form names its own (STARTUP_TARGET; None: write nothing)
+    cf = closed_form(params.description.closed_form)
+    start = getattr(cf, "STARTUP_TARGET", (100.0, 100.0, 600.0))
     if dialect == "s7-300":
-        text = emit_s7300(prog, mmap)
+        text = emit_s7300(prog, mmap, startup_target=start)
     else:
         with_motion = motion and params.arm == "grabber"
-        text = emit_s7200(prog, mmap, motion=motion_networks(mmap) if with_motion else None)
+        text = emit_s7200(
+            prog, mmap, startup_target=start, motion=motion_networks(mmap) if with_motion else None
+        )
     return text, mmap.to_json(allocate(prog, mmap))

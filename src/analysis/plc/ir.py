@@ -420,15 +420,26 @@ def build_program(
             if n not in io and n not in work:
                 work.append(n)
     subs = (atan2_subroutine(1), acos_subroutine(2)) if trig == "subroutine" else ()
-    vals = ", ".join(f"{k} = {v:g} mm" for k, v in params.items())
+    desc = params.description
+    assumed = set(desc.assumed)
+    vals = ", ".join(
+        f"{k} = {v:g} mm" + (" (assumed)" if k in assumed else "") for k, v in params.items()
+    )
+    ppr_assumed = any(j.pulses_status == "assumed" for j in desc.joints)
     notes = (
         f"arm {params.arm}, branch {branch}; {vals}; "
         + "/".join(f"{v:g}" for v in ppr)
-        + " pulses/rev",
+        + " pulses/rev"
+        + (" (assumed)" if ppr_assumed else ""),
         "ATAN2/ACOS: generated subroutines"
         if trig == "subroutine"
         else "ATAN/ACOS: native instructions",
-        "status: 0 ok, 1 out of reach, 2 inside reach, 3 base axis, 4 joint limits, 6 not finite",
+        "status: 0 ok, 1 out of reach, 2 inside reach, 3 base axis, 4 joint limits, 6 not finite"
+        + "".join(
+            f", {int(c)} {Status(c).text}"
+            for c in (Status.DEGENERATE, Status.ORIENTATION)
+            if c in labels
+        ),
     )
     return Program(
         code,

@@ -23,6 +23,7 @@ from analysis.kinematics.arms import closed_form
 from analysis.kinematics.ops import Ops
 from analysis.kinematics.pulses import pulse_count, pulse_value
 from analysis.kinematics.status import Status
+from analysis.plc.approx import PlcFloat32Ops
 
 __all__ = ["PLC_TOL_MM", "Prediction", "predict", "program_body"]
 
@@ -36,7 +37,8 @@ def program_body(m: Ops, params, p, branch: str, *, tol=PLC_TOL_MM, theta1_on_ax
 
     Returns a dict: ``c`` (pulse counts per joint, in ``m``), ``theta`` (the branch's
     angles), ``refusals`` [(Status, condition), ...] in the order the program tests them
-    (the closed form's, then the joint limits).
+    (the closed form's, then its ``branch_refusals`` for this branch, then the joint
+    limits).
     """
     cf = closed_form(params.description.closed_form)
     if branch not in cf.BRANCHES:
@@ -44,7 +46,7 @@ def program_body(m: Ops, params, p, branch: str, *, tol=PLC_TOL_MM, theta1_on_ax
     opts = {} if theta1_on_axis is None else {"theta1_on_axis": float(theta1_on_axis)}
     sol = cf.ik(m, p, dict(params), tol=tol, **opts)
     q = sol["branches"][branch]
-    refusals = list(sol["refusals"])
+    refusals = list(sol["refusals"]) + list(sol.get("branch_refusals", {}).get(branch, ()))
     limited = [(qj, j) for qj, j in zip(q, params.description.joints, strict=True)]
     limited = [(qj, j) for qj, j in limited if not j.unlimited]
     if limited:
@@ -88,8 +90,6 @@ def predict(
     ``Float32Ops()`` for ideal REAL arithmetic. Targets are rounded to float32 first,
     as writing them into REAL double words does.
     """
-    from analysis.plc.approx import PlcFloat32Ops
-
     cf = closed_form(params.description.closed_form)
     branch = branch or cf.BRANCHES[0]
     m = ops if ops is not None else PlcFloat32Ops("s7-200")

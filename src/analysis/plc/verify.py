@@ -7,6 +7,13 @@ differ from the reference only where the exact (float64) pulse value lies so clo
 pulse that float32 arithmetic lands on the other side; :func:`compare` counts those cases
 and explains each with the float32 model of the program (:mod:`analysis.plc.model`), which
 must reproduce the PLC bit for bit.
+
+The one other legitimate difference is a *wrap-cut straddle*. theta1 and theta2 are wrapped
+to (-180, 180] deg (:mod:`analysis.kinematics.arms.grabber`, "Conventions at the boundaries"),
+so where the exact angle lies within float32 error of +-180 deg the PLC may give -ppr/2 where
+Python gives +ppr/2 (or the reverse): the same joint position, counted one revolution apart.
+:func:`compare` tells the two kinds apart (``cut`` column) and measures the float32 error
+modulo one revolution; ``sweep_targets`` includes targets on the cut (kind ``cut``).
 """
 
 from __future__ import annotations
@@ -22,16 +29,27 @@ from analysis.kinematics.ops import numpy_ops
 from analysis.kinematics.pulses import angles_to_pulses, pulse_value
 from analysis.kinematics.status import Status
 from analysis.paths import data_dir
+from analysis.plc.approx import PlcFloat32Ops
+from analysis.plc.model import predict
 from analysis.plc.runner import RunResult
 
 __all__ = [
     "Comparison",
     "compare",
+    "cut_targets",
     "half_pulse_targets",
+    "input_columns",
     "reference_pulses",
     "sweep_targets",
     "table4_targets",
 ]
+
+
+def input_columns(arm: Arm) -> list[str]:
+    """Target columns of a targets table for ``arm``: ``x_mm, y_mm, z_mm`` for a point
+    (inputs px, py, pz), else the closed form's input names (the GR-1's pose)."""
+    inputs = list(arm.inputs)
+    return ["x_mm", "y_mm", "z_mm"] if inputs == ["px", "py", "pz"] else inputs
 
 
 def table4_targets() -> npt.NDArray[np.float64]:
@@ -60,8 +78,30 @@ def half_pulse_targets(arm: Arm, n: int, rng: np.random.Generator) -> npt.NDArra
     return arm.fk(q)
 
 
+def cut_targets(arm: Arm, n: int, rng: np.random.Generator) -> npt.NDArray[np.float64]:
+    """Targets where a solution's theta1 or theta2 is +-180 deg (the wrap cut), and neighbours.
+
+    Joint configurations with theta1 (even rows) or theta2 (odd rows) set to pi, the other
+    joints random (theta3 of either sign, so up and down branches both meet the cut), moved
+    off the cut by 0 or +-1e-9 .. 1e-4 rad; the target is their forward kinematics. On these,
+    float32 and float64 may wrap to opposite ends of (-pi, pi].
+    """
+    q = np.stack(
+        [
+            rng.uniform(-np.pi, np.pi, n),
+            rng.uniform(-np.pi, np.pi, n),
+            rng.choice([-1.0, 1.0], n) * rng.uniform(0.3, 2.8, n),
+        ],
+        axis=1,
+    )
+    j = np.arange(n) % 2
+    off = rng.choice([-1.0, 0.0, 1.0], n) * 10.0 ** rng.uniform(-9, -4, n)
+    q[np.arange(n), j] = np.pi + off
+    return arm.fk(q)
+
+
 def sweep_targets(
-    arm: Arm, n_random: int = 700, seed: int = 20160501, n_half: int = 150
+    arm: Arm, n_random: int = 700, seed: int = 20160501, n_half: int = 150, n_cut: int = 60
 ) -> pd.DataFrame:
     """Test targets across the workspace, labelled by kind.
 
@@ -69,6 +109,7 @@ def sweep_targets(
     half reachable), ``outer-1mm``/``inner-1mm`` (within 1 mm of the outer/inner reach
     sphere, both sides, distances 1e-3 .. 1 mm), ``axis`` (0 to 1 mm from the base
     axis, including exactly on it), ``half-pulse`` (:func:`half_pulse_targets`),
+    ``cut`` (:func:`cut_targets`, drawn after the others so earlier kinds are unchanged),
     ``bad`` (NaN/inf coordinates), ``huge`` (finite, squares overflow float32).
 
     Returns
@@ -106,15 +147,24 @@ def sweep_targets(
     parts.append(
         ("huge", np.array([[1e20, -1e20, 960.0], [3e38, 0.0, 660.0], [-1e30, 1e30, -1e30]]))
     )
+    parts.append(("cut", cut_targets(arm, n_cut, rng)))
     rows = [pd.DataFrame(p, columns=["x_mm", "y_mm", "z_mm"]).assign(kind=k) for k, p in parts]
     df = pd.concat(rows, ignore_index=True)
     return df[["kind", "x_mm", "y_mm", "z_mm"]]
 
 
 def reference_pulses(
-    arm: Arm, targets: npt.ArrayLike, branch: str | None = None, rounding: str = "half-away"
+    arm: Arm,
+    targets: npt.ArrayLike,
+    branch: str | None = None,
+    rounding: str = "half-away",
+    *,
+    theta1_on_axis: float | None = None,
 ) -> tuple[npt.NDArray, npt.NDArray, npt.NDArray, npt.NDArray]:
-    """Python's answer (float64) for targets (N, 3) given as float32 REALs, as the PLC sees them.
+    """Python's answer (float64) for targets (N, k) given as float32 REALs, as the PLC sees
+    them (k = the arm's inputs: 3 for a point, 6 for the GR-1's pose).
+
+    ``theta1_on_axis`` as given to the program's generator (None: base axis refused).
 
     Returns
     -------
@@ -129,7 +179,7 @@ def reference_pulses(
     t32 = t.astype(np.float32).astype(float)  # the PLC stores the target as REAL
     finite = np.isfinite(t32).all(axis=1)
     safe = np.where(finite[:, None], t32, 0.0)
-    sol = arm.solve(safe, [branch])
+    sol = arm.solve(safe, [branch], theta1_on_axis=theta1_on_axis)
     ok = sol.ok[:, 0] & finite
     status = np.where(finite, sol.status, int(Status.INVALID)).astype(np.int64)
     theta = np.where(ok[:, None], sol.theta[:, 0, :], 0.0)
@@ -156,6 +206,11 @@ class Comparison:
     model_exact: bool
 
     @property
+    def cut_straddles(self) -> int:
+        """Mismatches of one revolution at the wrap cut (same joint position)."""
+        return int(self.mismatch_table["cut"].sum())
+
+    @property
     def float32_ties(self) -> int:
         """Mismatches where the PLC's float32 count is exactly k + 1/2 (the tie rule decides)."""
         t = self.mismatch_table
@@ -171,7 +226,8 @@ class Comparison:
             "pulse mismatches": self.pulse_mismatch,
             "max |PLC - Python| [pulses]": self.max_abs_diff,
             "max |float32 - exact| before ROUND [pulses]": self.max_real_error,
-            "mismatches all straddle a half pulse": self.all_explained,
+            "mismatches all straddle a half pulse or the wrap cut": self.all_explained,
+            "of which at the wrap cut (one revolution)": self.cut_straddles,
             "of which float32 value exactly k + 1/2": self.float32_ties,
             "float32 model = PLC, bit for bit": self.model_exact,
         }
@@ -185,25 +241,34 @@ def compare(
     dialect: str = "s7-200",
     sentinel: int = -999_999,
     trig: str | None = None,
+    *,
+    theta1_on_axis: float | None = None,
 ) -> Comparison:
     """Compare PLC results (run with ``sentinel`` in the outputs) with Python and the model.
 
+    ``targets`` has a ``kind`` column and the target columns :func:`input_columns` names.
+
     The Python reference is float64 (:func:`reference_pulses`, with the dialect's tie rule);
     the model is :func:`analysis.plc.model.predict` with the dialect's REAL arithmetic
-    (``trig`` "native" only on the S7-300), which gives the float32 value each count had
+    (``trig`` "native" only on the S7-300; ``theta1_on_axis`` as the program was generated
+    with), which gives the float32 value each count had
     before ROUND (``plc_real``). The mismatch table lists each joint value where PLC and
     Python differ, with the exact value and its distance to the nearest half pulse
     (``dist_half``); ``all_explained`` says whether every mismatch is a straddle: the
-    float32 value and the exact value lie on opposite sides of the same half pulse.
+    float32 value and the exact value lie on opposite sides of the same half pulse, or (``cut``)
+    the two counts are one revolution apart and the exact value lies within float32 error of
+    +-ppr/2 (the wrap cut of theta1/theta2). Errors before ROUND are taken modulo one revolution.
     """
-    from analysis.plc.approx import PlcFloat32Ops
-    from analysis.plc.model import predict
-
     branch = branch or arm.branches[0]
     rounding = "half-away" if dialect == "s7-200" else "half-even"
-    xyz = targets[["x_mm", "y_mm", "z_mm"]].to_numpy(dtype=float)
-    ref, ok, status, exact = reference_pulses(arm, xyz, branch, rounding)
-    model = predict(arm.params, xyz, branch, ops=PlcFloat32Ops(dialect, trig))
+    cols = input_columns(arm)
+    xyz = targets[cols].to_numpy(dtype=float)
+    ref, ok, status, exact = reference_pulses(
+        arm, xyz, branch, rounding, theta1_on_axis=theta1_on_axis
+    )
+    model = predict(
+        arm.params, xyz, branch, ops=PlcFloat32Ops(dialect, trig), theta1_on_axis=theta1_on_axis
+    )
     model_exact = bool(
         (model.status == result.status).all()
         and (model.pulses[model.reachable] == result.pulses[model.reachable]).all()
@@ -212,28 +277,42 @@ def compare(
     unchanged = bool((result.pulses[~result.reachable] == sentinel).all())
     both = ok & result.reachable
     diff = np.where(both[:, None], result.pulses - ref, 0)
+    ppr = np.broadcast_to(np.asarray(arm.params.pulses_per_rev, dtype=float), exact.shape)
+    # the same joint position one revolution apart (wrap cut) is not a pulse error
+    turns = np.round(diff / ppr)
     rows = []
     for i, j in zip(*np.nonzero(diff), strict=True):
         x = exact[i, j]
         rows.append(
             {
                 "kind": targets["kind"].iloc[i],
-                "x_mm": xyz[i, 0],
-                "y_mm": xyz[i, 1],
-                "z_mm": xyz[i, 2],
+                **{c: xyz[i, k] for k, c in enumerate(cols)},
                 "joint": f"c{j + 1}",
                 "python": int(ref[i, j]),
                 "plc": int(result.pulses[i, j]),
                 "exact": x,
                 "dist_half": abs(abs(x - np.trunc(x)) - 0.5),
+                "cut": bool(turns[i, j] != 0),
                 "plc_real": float(model.counts[i, j]),
+                "ppr": float(ppr[i, j]),
             }
         )
-    columns = ["kind", "x_mm", "y_mm", "z_mm", "joint", "python", "plc", "exact", "dist_half"]
-    table = pd.DataFrame(rows, columns=[*columns, "plc_real"])
-    err = np.abs(model.counts.astype(float) - exact)[both]
-    half = (np.minimum(table["python"], table["plc"]) + 0.5).to_numpy(dtype=float)
-    explained = bool(((table["exact"] - half) * (table["plc_real"] - half) <= 0).all())
+    columns = ["kind", *cols, "joint", "python", "plc", "exact", "dist_half"]
+    table = pd.DataFrame(rows, columns=[*columns, "cut", "plc_real", "ppr"])
+    lap = ppr * np.round((model.counts.astype(float) - exact) / ppr)
+    err = np.abs(model.counts.astype(float) - lap - exact)[both]
+    # in one revolution: the PLC's count and float32 value moved by the whole turns between them
+    shift = (table["ppr"] * np.round((table["plc"] - table["python"]) / table["ppr"])).to_numpy()
+    plc = table["plc"].to_numpy() - shift
+    real = table["plc_real"].to_numpy(dtype=float) - shift
+    half = np.minimum(table["python"].to_numpy(), plc) + 0.5
+    straddle = (table["exact"].to_numpy(dtype=float) - half) * (real - half) <= 0
+    one_step = np.abs(plc - table["python"].to_numpy()) <= 1
+    at_cut = np.abs(np.abs(table["exact"].to_numpy(dtype=float)) - table["ppr"] / 2) < 0.05
+    explained = bool(
+        (one_step & np.where(plc != table["python"], straddle, True)).all()
+        and (at_cut | ~table["cut"]).all()
+    )
     return Comparison(
         len(xyz),
         int(ok.sum()),

@@ -36,7 +36,15 @@ Conventions at the boundaries (the same in Python and in the generated PLC progr
   sphere (|P - shoulder| = |L2 - L3|) keeps a continuous pulse count (-2000 at the fold for
   front-up, never a jump to +2000).
 - On the base axis (rho <= tol) theta1 is undefined: the target is refused (status
-  ``base-axis``) unless a waist angle ``theta1_on_axis`` is given, which both use.
+  ``base-axis``) unless a waist angle ``theta1_on_axis`` is given, which both use; the target
+  is then taken as on the axis (r = 0), so the arm reaches within rho <= tol of it.
+- theta1 and theta2 turn through whole revolutions in this model (the paper gives no joint
+  ranges), so wrapping them leaves a *wrap cut*: where a continuous path crosses +-pi the count
+  jumps by one revolution (ppr). Within float32 error of the cut the PLC's REAL arithmetic
+  may land on the other end than Python (e.g. c2 = +2000 against -2000): the same joint
+  position, one revolution apart; :func:`analysis.plc.verify.compare` counts these apart from
+  pulse errors. A motion layer that moves between absolute counts should move such a joint
+  the shorter way round if the mechanism allows it.
 - A target more than ``tol`` outside the reach shell is refused; within ``tol`` it is put on
   the shell (cos theta3 clipped to [-1, 1]).
 """
@@ -122,10 +130,12 @@ def ik(m, p, P, *, tol, theta1_on_axis=None):
     m.section("theta1 = atan2(Py, Px) (eq. 6; Fig. 4); the base axis")
     on_axis = m.le(rho, tol)
     phi = m.atan2(y, x)
+    r = rho
     if theta1_on_axis is None:
         refusals.append((Status.BASE_AXIS, on_axis))
-    else:
+    else:  # taken as on the axis: r = 0 (eq. 7 at the given theta1), so it misses by rho <= tol
         phi = m.select(on_axis, theta1_on_axis, phi)
+        r = m.let("r", m.select(on_axis, 0.0, rho))
     phi = m.let("theta1", m.wrap(phi))
     m.section("theta3 = -/+ acos((D^2 - L2^2 - L3^2) / (2 L2 L3)) (eqs. 9-10; Fig. 6)")
     c3 = m.let("cos_theta3", m.clip((d2 - (L2 * L2 + L3 * L3)) / (2.0 * L2 * L3), -1.0, 1.0))
@@ -134,8 +144,8 @@ def ik(m, p, P, *, tol, theta1_on_axis=None):
     m.section("theta2 = atan2(z k + r s, r k - z s) - theta3 (eqs. 15-19; Fig. 5)")
     k = m.let("k", L2 * c3 + L3)
     s = m.let("s", L2 * s3)
-    t23u = m.let("theta23_up", m.atan2(z * k - rho * s, rho * k + z * s))  # theta3 = -t3
-    t23d = m.let("theta23_down", m.atan2(z * k + rho * s, rho * k - z * s))  # theta3 = +t3
+    t23u = m.let("theta23_up", m.atan2(z * k - r * s, r * k + z * s))  # theta3 = -t3
+    t23d = m.let("theta23_down", m.atan2(z * k + r * s, r * k - z * s))  # theta3 = +t3
     m.section("the branch: waist front/back (theta1, theta1 + pi), elbow up/down")
     back = m.let("theta1_back", m.wrap(phi + m.pi))
     branches = {

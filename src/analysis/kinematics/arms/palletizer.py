@@ -26,7 +26,10 @@ pi/2, beta = pi/2 - beta1, motor angles -> D-H angles by eq. 12). theta1, theta2
 are wrapped to (-pi, pi]; theta3 is not (branch-signed, continuous at the stretched arm).
 Refused: out of reach (L4 > L1 + L2), inside the inner reach (L4 < |L1 - L2|), on the base
 axis (rho = 0: gamma undefined), and, in the isosceles family L1 = L2, the wrist on the
-shoulder (L4 = 0: alpha2 undefined; status "degenerate").
+shoulder (L4 = 0: alpha2 undefined; status "degenerate"). The description adds the elbow stop
+of sec. 2, theta3 in [90, 180] deg (``data/arms/palletizer.toml``, reasons there), which the
+shared solver and the generated PLC program apply after these refusals (status "joint
+limits"): with it only "elbow-up" solves, for wrist distances up to sqrt(L1^2 + L2^2).
 """
 
 from __future__ import annotations
