@@ -14,7 +14,8 @@ def test_workspace_box_holds_sampled_poses(name):
     arm = load_arm(name)
     box = workspace_box(arm)
     assert workspace_box(arm) == box  # seeded
-    q = np.random.default_rng(1).uniform(-np.pi, np.pi, (2000, arm.n_joints))
+    lim = np.array([v if v is not None else (-np.pi, np.pi) for v in arm.limits])
+    q = np.random.default_rng(1).uniform(lim[:, 0], lim[:, 1], (2000, arm.n_joints))
     pts = arm.frames(q).reshape(-1, 3)
     assert (pts >= np.array(box.lo) - 1e-9).all() and (pts <= np.array(box.hi) + 1e-9).all()
     assert box.lo[0] == -box.hi[0] and box.lo[1] == -box.hi[1]

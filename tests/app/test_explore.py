@@ -24,6 +24,7 @@ from analysis.app.explore import (
     num,
     plain_message,
     pose_report,
+    target_from_joints,
 )
 from analysis.kinematics.arm import BRANCHES, BaseAxisError, UnreachableError, load_arm
 from analysis.kinematics.params import data_dir
@@ -187,11 +188,15 @@ def test_palletizer_generic(table4):
     rep = pose_report(pal, p)
     assert rep.reachable and list(rep.table.index) == list(pal.branches)
     assert rep.branch == pal.branches[0]
-    q = np.radians(rep.table[[f"theta{j}_deg" for j in range(1, 5)]].to_numpy(float))
-    np.testing.assert_allclose(pal.fk(q), np.broadcast_to(p, (2, 3)), atol=FK_TOL_MM)
+    ok = (rep.table["status"] == "ok").to_numpy()
+    assert ok[0] and set(rep.table["status"]) <= {"ok", "joint-limits"}  # words, not codes
+    t = rep.table[ok]
+    q = np.radians(t[[f"theta{j}_deg" for j in range(1, 5)]].to_numpy(float))
+    np.testing.assert_allclose(pal.fk(q), np.broadcast_to(p, q[:, :3].shape), atol=FK_TOL_MM)
     # manipulability sqrt(det(J J^T)) of the 3x4 Jacobian, from its singular values
     s = np.linalg.svd(pal.jacobian(q), compute_uv=False)
-    np.testing.assert_allclose(rep.table["w_mm3"], s.prod(axis=-1), rtol=1e-9)
+    np.testing.assert_allclose(t["w_mm3"], s.prod(axis=-1), rtol=1e-9)
+    assert "nan" not in rep.to_html().lower()
     far = pose_report(pal, [2000.0, 0.0, 0.0])
     assert far.status_text == "out-of-reach" and far.table.empty
 
@@ -297,8 +302,8 @@ def test_explorer_fk_mode(arm):
     assert "margin to the reach boundary 0.0 mm" in ex.message.value
     assert "-0.0" not in ex.message.value and "-0.00" not in ex.table.value
     t1.value, t2.value, t3.value = 30.0, 20.0, -60.0
-    ex.fk_mode.value = False  # back to IK: the target sliders take the FK point (0.1 mm)
-    assert [s.value for s in ex.target_sliders] == [round(float(v), 1) for v in p]
+    ex.fk_mode.value = False  # back to IK: the target sliders take the FK point
+    np.testing.assert_allclose([s.value for s in ex.target_sliders], p, atol=1e-9)
     assert ex.target_box.layout.display is None and "FK" not in ex.message.value
 
 
@@ -340,3 +345,24 @@ def test_explorer_display_shows_widget_then_3d_view(arm, monkeypatch):
     assert view is ex.bundle and view_id is True
     ex.target_sliders[0].value = 150.0
     assert shown[-1] == (ex.bundle, "update") and _tip(ex)[0] == pytest.approx(150.0)
+
+
+def test_explorer_takes_a_pose_arm():
+    """The GR-1 (5 joints, a pose of 6 inputs: point and RPY angles) through the same code."""
+    gr1 = load_arm("gr1")
+    p = default_target(gr1)
+    rep = pose_report(gr1, p)
+    assert rep.reachable and rep.status_text == "ok"
+    q = np.radians(rep.angles_deg())
+    np.testing.assert_allclose(target_from_joints(gr1, q), p, atol=1e-6)
+    ex = build_explorer("gr1")
+    assert [s.description for s in ex.target_sliders][3:] == ["α [°]", "β [°]", "γ [°]"]
+    assert len(ex.joint_sliders) == 5 and ex.report.reachable
+    ex.fk_mode.value = True  # FK gives the whole pose: the table is still there
+    assert ex.report is not None and ex.report.reachable and ex.table.value
+    ex.joint_sliders[3].value = 20.0
+    np.testing.assert_allclose(ex.report.angles_deg()[3], 20.0, atol=1e-6)
+    ex.fk_mode.value = False
+    assert ex.report.reachable
+    ex.target_sliders[3].value = 40.0  # an orientation out of the arm plane
+    assert ex.report.status_text == "orientation" and ex.table.value == ""

@@ -50,6 +50,7 @@ __all__ = [
     "num",
     "plain_message",
     "pose_report",
+    "target_from_joints",
 ]
 
 POSITION_INPUTS = {"px": "x", "py": "y", "pz": "z"}
@@ -104,25 +105,55 @@ def _position(arm: Arm, p: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
     return p[..., idx]
 
 
-def default_target(arm: Arm) -> npt.NDArray[np.float64]:
+RPY_INPUTS = ("alpha", "beta", "gamma")
+"""Closed-form inputs that are the tool's orientation as RPY angles [rad], in the convention
+of :mod:`analysis.kinematics.rpy` (a pose: the GR-1 arm's inputs)."""
+
+
+def target_from_joints(arm: Arm, q: npt.ArrayLike) -> npt.NDArray[np.float64] | None:
+    """The closed form's inputs that joint angles ``q`` (..., n) [rad] reach, (..., k).
+
+    The point (inputs ``px, py, pz``) is :meth:`Arm.fk`; RPY inputs (``alpha, beta, gamma``)
+    come from the D-H chain's tool rotation (:func:`analysis.kinematics.rpy.pose_from_transform`).
+    None if the arm has an input of another kind (its FK cannot be put as a target).
+    """
+    from analysis.kinematics.rpy import pose_from_transform
+
+    known = set(POSITION_INPUTS) | set(RPY_INPUTS)
+    if not set(arm.inputs) <= known:
+        return None
+    q = np.asarray(q, dtype=float)
+    values = dict(zip(("px", "py", "pz"), np.moveaxis(arm.fk(q), -1, 0), strict=True))
+    if set(RPY_INPUTS) & set(arm.inputs):
+        pose = pose_from_transform(arm.table.fk(q))
+        values |= dict(zip(RPY_INPUTS, np.moveaxis(pose[..., 3:], -1, 0), strict=True))
+    return np.stack([values[k] for k in arm.inputs], axis=-1)
+
+
+def default_target(arm: Arm, *, seed: int = 0) -> npt.NDArray[np.float64]:
     """A target the arm reaches on its first branch, to start the explorer at.
 
-    The end point of the first of a few joint vectors (all zeros, then the inner joints
-    bent by +-30, +-60 deg) whose end point solves with status "ok" on the default branch;
-    for arms whose closed form takes more than the point (a pose), the other inputs are 0.
+    What :func:`target_from_joints` gives for the first joint vector that solves with
+    status "ok" on the default branch, trying the middle of each joint's range with the
+    inner joints bent by +-30, +-60 deg, then 256 seeded draws within the joint limits;
+    coordinates cleaned of round-off below 1 nm.
     """
-    n = arm.n_joints
-    bends = np.radians([[0, 30, -60], [0, -30, 60], [30, 45, -90], [0, 0, 0]])
-    q = np.zeros((len(bends), n))
-    k = min(n, 3)
-    q[:, :k] = bends[:, :k]
-    pos = arm.fk(q)
-    p = np.zeros((len(q), len(arm.inputs)))
-    idx = [arm.inputs.index(k) for k in POSITION_INPUTS if k in arm.inputs]
-    p[:, idx] = pos
-    sol = arm.solve(p, arm.branches[:1])
-    good = np.flatnonzero(sol.ok[:, 0])
-    return np.round(p[good[0] if good.size else 0], 1) + 0.0
+    lim = np.array([lim if lim is not None else (-np.pi, np.pi) for lim in arm.limits])
+    mid = lim.mean(axis=1)
+    bends = np.zeros((4, arm.n_joints))
+    k = min(arm.n_joints, 3)
+    bends[:, :k] = np.radians([[0, 30, -60], [0, -30, 60], [30, 45, -90], [0, 0, 0]])[:, :k]
+    rng = np.random.default_rng(seed)
+    drawn = lim[:, 0] + rng.random((256, arm.n_joints)) * (lim[:, 1] - lim[:, 0])
+    q = np.concatenate([np.clip(mid + bends, lim[:, 0], lim[:, 1]), drawn])
+    p = target_from_joints(arm, q)
+    if p is None:
+        raise ValueError(
+            f"arm {arm.name}: inputs {arm.inputs} are not a point (px, py, pz) or a pose "
+            f"with RPY angles {RPY_INPUTS}; give the explorer a target"
+        )
+    good = np.flatnonzero(arm.solve(p, arm.branches[:1]).ok[:, 0])
+    return np.round(p[good[0] if good.size else 0], 9) + 0.0
 
 
 @dataclass(frozen=True)
@@ -513,7 +544,7 @@ class Explorer(W.VBox):
                     self.target_sliders, self.report.target, self.arm.inputs, strict=True
                 ):
                     v = v if name in POSITION_INPUTS else math.degrees(v)
-                    s.value = float(np.clip(round(float(v), 1), s.min, s.max))
+                    s.value = float(np.clip(v, s.min, s.max))  # exactly where FK put it
         finally:
             self._syncing = False
         self.target_box.layout.display = "none" if change["new"] else None
@@ -531,11 +562,11 @@ class Explorer(W.VBox):
             point = arm.fk(q)
             where = ", ".join(num(v, 2) for v in point)
             head = f"FK: gripper at ({where}) mm. "
-            if len(arm.inputs) == 3:
-                rep = pose_report(arm, point, self.branch.value, theta1_on_axis=float(q[0]))
-            else:  # the closed form takes a pose; FK gives only the point
-                rep = None
-            target = point
+            target = target_from_joints(arm, q)
+            if target is not None:
+                rep = pose_report(arm, target, self.branch.value, theta1_on_axis=float(q[0]))
+            else:  # an input FK cannot give: no IK table
+                rep, target = None, point
         else:
             target = self._target()
             t1 = math.radians(self.on_axis_deg.value) if axis else None
