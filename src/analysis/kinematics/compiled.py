@@ -38,9 +38,9 @@ from pathlib import Path
 import numpy as np
 import numpy.typing as npt
 
-from analysis.kinematics.arm import IKSolutions, check_joints, solve_body
 from analysis.kinematics.arms import closed_form as load_cf
 from analysis.kinematics.dh import chain_frames
+from analysis.kinematics.solution import IKSolutions, check_joints, solve_body
 from analysis.kinematics.trace import Graph, Node, TraceOps
 
 try:  # pragma: no cover - depends on the environment

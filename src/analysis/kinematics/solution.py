@@ -1,0 +1,246 @@
+"""What every arm's solver shares: tolerances, errors, the result record, input checks, and
+the solver body that the numpy path and the compiled kernel both run.
+
+:func:`solve_body` turns a closed form's output (:mod:`analysis.kinematics.arms`) into
+statuses (:mod:`analysis.kinematics.status`), joint-limit masks and NaN where no solution,
+in any namespace (:mod:`analysis.kinematics.ops`): :class:`analysis.kinematics.arm.Arm`
+calls it with numpy, :mod:`analysis.kinematics.compiled` records it into a kernel.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from types import ModuleType
+from typing import NamedTuple
+
+import numpy as np
+import numpy.typing as npt
+
+from analysis.kinematics.ops import Ops
+from analysis.kinematics.status import Status
+
+__all__ = [
+    "DEFAULT_TOL_MM",
+    "MAX_JOINT_DEG",
+    "MAX_TOL_MM",
+    "BaseAxisError",
+    "IKSolutions",
+    "UnreachableError",
+    "as_points",
+    "check_joints",
+    "check_tol",
+    "solve_body",
+]
+
+DEFAULT_TOL_MM = 1e-6
+"""Default distance tolerance [mm]: targets this close outside the reach shell are put on
+the shell (cos theta3 clipped to +-1), and targets this close to the base axis count as on
+it. 1 nm is far below any mechanical meaning and far above float64 round-off at this
+scale (|p| ~ 1e3 mm, eps * |p| ~ 2e-13 mm)."""
+MAX_TOL_MM = 1.0
+"""Largest accepted tolerance [mm]: a solution "on the shell" may miss the target by up to
+the tolerance, and more than a millimetre would pass a visibly wrong pose as solved."""
+MAX_JOINT_DEG = 3600.0
+"""Largest accepted |joint angle| [deg] (ten turns): beyond it an input is a mistake of unit
+or of digits, not a pose."""
+
+
+class UnreachableError(ValueError):
+    """The target lies outside the reachable set; ``distance_mm`` says how far."""
+
+    def __init__(
+        self,
+        message: str,
+        target,
+        distance_mm: float,
+        limit_mm: float = math.nan,
+        status: Status = Status.OUT_OF_REACH,
+    ):
+        super().__init__(message)
+        self.target = tuple(float(v) for v in target)
+        self.distance_mm = float(distance_mm)
+        self.limit_mm = float(limit_mm)
+        self.status = Status(status)
+
+
+class BaseAxisError(ValueError):
+    """The target is on the base axis, where the waist angle is undefined."""
+
+    def __init__(self, message: str, target):
+        super().__init__(message)
+        self.target = tuple(float(v) for v in target)
+
+
+class IKSolutions(NamedTuple):
+    """Batch IK result for targets of shape (...,) + (3,) and B branches of n joints.
+
+    Attributes
+    ----------
+    theta : ndarray, shape (..., B, n)
+        Joint angles [rad] (see the closed form for wrapping). NaN exactly where ``ok``
+        is False.
+    ok : ndarray of bool, shape (..., B)
+        True where the branch has a solution within the joint limits.
+    status : ndarray of int8, shape (...,)
+        :class:`Status` code per target.
+    outside_mm : ndarray, shape (...,)
+        Signed distance outside the reachable set [mm]: > 0 unreachable (by that much),
+        <= 0 reachable (its magnitude is the margin to the nearer boundary).
+    branches : tuple of str
+        Branch names along axis -2 of ``theta``.
+    """
+
+    theta: npt.NDArray[np.float64]
+    ok: npt.NDArray[np.bool_]
+    status: npt.NDArray[np.int8]
+    outside_mm: npt.NDArray[np.float64]
+    branches: tuple[str, ...]
+
+    @property
+    def reachable(self) -> npt.NDArray[np.bool_]:
+        """Targets inside the reachable set within the tolerance ``solve`` used (base-axis
+        and joint-limit targets included): consistent with ``status``."""
+        return (self.status != Status.OUT_OF_REACH) & (self.status != Status.INSIDE_REACH)
+
+    def branch(self, name: str) -> npt.NDArray[np.float64]:
+        """Angles of one branch, shape (..., n)."""
+        return self.theta[..., self.branches.index(name), :]
+
+
+def as_points(
+    p: npt.ArrayLike, name: str = "target", inputs: Sequence[str] = ("x", "y", "z")
+) -> npt.NDArray[np.float64]:
+    """Validate and convert targets to a float array of shape (..., k), k = len(inputs)
+    (default (..., 3) = x, y, z [mm]).
+
+    Raises ``ValueError`` naming the offending value for text, wrong shapes, NaN or inf.
+    """
+    try:
+        arr = np.asarray(p, dtype=float)
+    except (TypeError, ValueError) as exc:
+        raise ValueError(f"{name} {p!r} is not numeric: {exc}") from None
+    k = len(inputs)
+    if arr.ndim == 0 or arr.shape[-1] != k:
+        what = "(x, y, z) in mm" if k == 3 else "(" + ", ".join(inputs) + ")"
+        raise ValueError(f"{name} has shape {arr.shape}; expected (..., {k}) = {what}")
+    bad = ~np.isfinite(arr)
+    if bad.any():
+        idx = np.argwhere(bad)[0]
+        where = "" if arr.ndim == 1 else f" at index {tuple(int(i) for i in idx[:-1])}"
+        raise ValueError(
+            f"{name}{where} has a non-finite coordinate: {arr[tuple(idx[:-1])].tolist()}"
+        )
+    return arr
+
+
+def check_joints(q: npt.ArrayLike, n: int, name: str = "joint array") -> npt.NDArray[np.float64]:
+    """Validate joint angles (..., n) [rad]: numeric, finite, within +-:data:`MAX_JOINT_DEG`."""
+    try:
+        q = np.asarray(q, dtype=float)
+    except (TypeError, ValueError) as exc:
+        raise ValueError(f"{name} {q!r} is not numeric: {exc}") from None
+    if q.ndim == 0 or q.shape[-1] != n:
+        raise ValueError(f"{name} has shape {q.shape}; expected (..., {n})")
+    bad = ~np.isfinite(q) | (np.abs(q) > math.radians(MAX_JOINT_DEG))
+    if bad.any():
+        idx = tuple(int(i) for i in np.argwhere(bad)[0])
+        v = q[idx]
+        what = "is not finite" if not np.isfinite(v) else "is beyond"
+        raise ValueError(
+            f"{name}: theta{idx[-1] + 1} = {math.degrees(v) if np.isfinite(v) else v:g} deg "
+            f"{what} (accepted: finite, |theta| <= {MAX_JOINT_DEG:g} deg, ten turns)"
+        )
+    return q
+
+
+def check_tol(tol) -> float:
+    """A distance tolerance [mm] in 0 .. :data:`MAX_TOL_MM`, else ValueError."""
+    if not (
+        isinstance(tol, (int, float, np.floating, np.integer))
+        and not isinstance(tol, bool)
+        and math.isfinite(tol)
+        and 0 <= tol <= MAX_TOL_MM
+    ):
+        raise ValueError(
+            f"tol = {tol!r} mm: the tolerance must be a finite number >= 0 mm "
+            f"and <= {MAX_TOL_MM:g} mm"
+        )
+    return float(tol)
+
+
+# --------------------------------------------------------------------------------------------
+# parameters
+# --------------------------------------------------------------------------------------------
+
+
+def solve_body(
+    m: Ops,
+    cf: ModuleType,
+    p,
+    P,
+    names: Sequence[str],
+    *,
+    tol,
+    limits: Sequence[tuple[float, float] | None] = (),
+    **options,
+) -> dict:
+    """Closed form + statuses + joint limits + NaN masking, in namespace ``m``.
+
+    Written once for every arm and backend: :meth:`Arm.solve` runs it with numpy, the
+    compiled kernel is generated from its recording, the PLC program from the closed form
+    it calls. Returns ``status`` (float code), ``outside``, and per branch ``b`` the
+    condition ``ok:b`` and the angles ``q:b:j`` (NaN where not ok).
+
+    A closed form may also return ``branch_refusals`` {branch: [(Status, condition), ...]}
+    for what only some branches cannot do (the GR-1's front and back wrists lie at
+    different points, so one may be out of reach while the other is not): a branch is ok
+    where none of its own conditions holds. A target that passes the closed form's
+    refusals but has no ok branch gets the first requested branch's reason (its first
+    true condition, else ``JOINT_LIMITS``), which is what a one-branch PLC program reports.
+    """
+    sol = cf.ik(m, p, P, tol=tol, **options)
+    status = 0.0
+    for code, cond in reversed(sol["refusals"]):
+        status = m.select(cond, float(code), status)
+    good = m.eq(status, 0.0)
+    out = {"outside": sol["outside"]}
+    per_branch = sol.get("branch_refusals", {})
+    has_branch = any(per_branch.get(b) for b in names)
+    any_ok = None
+    first_reason = None
+    for b in names:
+        q = sol["branches"][b]
+        ok = good
+        reason = 0.0
+        if per_branch.get(b):
+            for code, cond in reversed(per_branch[b]):
+                reason = m.select(cond, float(code), reason)
+            ok = m.and_(ok, m.eq(reason, 0.0))
+        within = None
+        for qj, lim in zip(q, limits or [None] * len(q), strict=True):
+            if lim is not None:
+                inside = m.and_(m.ge(qj, lim[0]), m.le(qj, lim[1]))
+                ok = m.and_(ok, inside)
+                within = inside if within is None else m.and_(within, inside)
+        if has_branch and within is not None:
+            stop = m.not_(within) if isinstance(reason, float) else (
+                m.and_(m.eq(reason, 0.0), m.not_(within))
+            )  # fmt: skip
+            reason = m.select(stop, float(Status.JOINT_LIMITS), reason)
+        out[f"ok:{b}"] = ok
+        for j, qj in enumerate(q):
+            out[f"q:{b}:{j}"] = m.select(ok, qj, math.nan)
+        any_ok = ok if any_ok is None else m.or_(any_ok, ok)
+        first_reason = reason if first_reason is None else first_reason
+    if has_branch:
+        status = m.select(m.and_(good, m.not_(any_ok)), first_reason, status)
+    elif any(lim is not None for lim in limits):
+        status = m.select(m.and_(good, m.not_(any_ok)), float(Status.JOINT_LIMITS), status)
+    out["status"] = status
+    return out
+
+
+# --------------------------------------------------------------------------------------------
+# the arm
+# --------------------------------------------------------------------------------------------
