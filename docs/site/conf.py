@@ -8,8 +8,10 @@ the figure captions (captions.toml).
 
 Nothing is loaded from the network when the site is viewed: MathJax 3 is served from
 ``_static/mathjax`` (the files of the pinned PyPI package ``sphinx-mathjax-offline``),
-the theme's fonts and scripts are bundled by the theme, and MyST-NB's widget scripts (a
-CDN) are switched off.
+the theme's fonts and scripts are bundled by the theme, MyST-NB's widget scripts (a
+CDN) are switched off, and the explorer's 3D view (a plotly figure, ``text/html`` output of
+``analysis.app.arm3d.figure_bundle``) gets ``_static/plotly.min.js``, the plotly.js of the
+pinned ``plotly`` wheel, on the pages that hold one.
 """
 
 from __future__ import annotations
@@ -40,8 +42,11 @@ numfig_format = {"figure": "Figure %s"}
 
 # --- MathJax 3, served locally ------------------------------------------------------------
 _MATHJAX = Path(str(distribution("sphinx-mathjax-offline").locate_file("sphinx-mathjax-offline")))
-html_static_path = ["_static", str(_MATHJAX / "static")]  # -> _static/mathjax/...
+# --- plotly.js, served locally (the explorer's 3D view) ------------------------------------
+_PLOTLY_JS = Path(str(distribution("plotly").locate_file("plotly/package_data/plotly.min.js")))
+html_static_path = ["_static", str(_MATHJAX / "static"), str(_PLOTLY_JS)]  # -> _static/...
 mathjax_path = "mathjax/tex-chtml.js"
+
 
 # --- theme: sphinx-book-theme (sidebar contents, previous/next, search, print) ---------------
 html_theme = "sphinx_book_theme"
@@ -60,3 +65,14 @@ html_theme_options = {
     "show_prev_next": True,
     "navigation_with_keys": False,
 }
+
+
+def _plotly_where_needed(app, pagename, templatename, context, doctree) -> None:
+    """Load plotly.min.js (synchronously, before the figures' inline scripts run) only on
+    pages with a plotly figure: it is 5 MB."""
+    if "plotly-graph-div" in context.get("body", ""):
+        app.add_js_file("plotly.min.js", priority=100)
+
+
+def setup(app) -> None:
+    app.connect("html-page-context", _plotly_where_needed)

@@ -6,19 +6,29 @@ the library's own exceptions (their messages must reach the user verbatim), a Ja
 determinant taken numerically with np.linalg.det, and eqs. 20-22 written out with math.
 """
 
-import base64
 import doctest
+import json
 import math
 
-import matplotlib.pyplot as plt
 import numpy as np
 import pandas as pd
 import pytest
 
 import analysis.app.explore
-from analysis.app.explore import PoseReport, build_explorer, pose_report
-from analysis.kinematics.arm import BRANCHES, BaseAxisError, UnreachableError
+from analysis.app.arm3d import PLOTLY_MIME
+from analysis.app.explore import (
+    PoseReport,
+    available_arms,
+    build_explorer,
+    default_target,
+    num,
+    plain_message,
+    pose_report,
+    target_from_joints,
+)
+from analysis.kinematics.arm import BRANCHES, BaseAxisError, UnreachableError, load_arm
 from analysis.kinematics.params import data_dir
+from analysis.kinematics.status import STATUS_TEXT, Status
 from analysis.studies.quantization import quantization_error
 
 # Table 4 prints angles to 2 decimals: half a unit in the last place, plus float slack.
@@ -100,6 +110,7 @@ def test_row8_unreachable_uses_library_message(arm, table4):
     assert rep.outside_mm == pytest.approx(expected, abs=1e-9)
     assert round(rep.outside_mm, 3) == 31.849
     assert not rep.reachable and rep.error == "UnreachableError"
+    assert rep.status == Status.OUT_OF_REACH and rep.status_text == "out-of-reach"
     with pytest.raises(UnreachableError) as exc:
         arm.ik(p)
     assert rep.message == str(exc.value) and "31.849 mm beyond" in rep.message
@@ -144,67 +155,214 @@ def test_html_marks_chosen_branch_and_has_no_nan(arm):
     assert "nan" not in html.lower()
 
 
+def test_html_has_units_no_wrapping_and_scaled_manipulability(arm):
+    rep = pose_report(arm, [100, 100, 600])
+    html = rep.to_html()
+    assert "white-space:nowrap" in html
+    for head in ("θ1 [°]", "c3 [pulses]", "pulse error [mm]", "w [10⁶ mm³/rad³]", "status"):
+        assert f">{head}</th>" in html
+    assert "w_mm3" not in html and "e+06" not in html  # no raw ids, no 3.688e+06
+    w = rep.table.loc["front-up", "w_mm3"] / 1e6
+    assert f">{w:.3f}<" in html and ">ok<" in html
+    assert html.count("<tr") == 1 + len(BRANCHES)
+
+
+def test_num_never_prints_negative_zero():
+    assert num(-0.0, 1) == "0.0" and num(-0.04, 1) == "0.0" and num(-1e-12, 3) == "0.000"
+    assert num(-0.05, 1) == "-0.1" and num(12.3456, 2) == "12.35"
+
+
+def test_plain_message_names_no_python_argument_or_flag(arm):
+    for target in ([0, 0, 800], [200, 500, 600], [100, 100, 600], [0, 50, 660]):
+        rep = pose_report(arm, target)
+        text = plain_message(rep)
+        assert text.startswith(STATUS_TEXT[rep.status] + " — ")
+        assert "theta1_on_axis" not in text and "--" not in text and "-0.0" not in text
+    assert 'Tick "allow θ1 on the base axis"' in plain_message(pose_report(arm, [0, 0, 800]))
+
+
+def test_palletizer_generic(table4):
+    """Another arm through the same code: 4 joints, 2 branches, inputs px, py, pz."""
+    pal = load_arm("palletizer")
+    p = default_target(pal)
+    rep = pose_report(pal, p)
+    assert rep.reachable and list(rep.table.index) == list(pal.branches)
+    assert rep.branch == pal.branches[0]
+    ok = (rep.table["status"] == "ok").to_numpy()
+    assert ok[0] and set(rep.table["status"]) <= {"ok", "joint-limits"}  # words, not codes
+    t = rep.table[ok]
+    q = np.radians(t[[f"theta{j}_deg" for j in range(1, 5)]].to_numpy(float))
+    np.testing.assert_allclose(pal.fk(q), np.broadcast_to(p, q[:, :3].shape), atol=FK_TOL_MM)
+    # manipulability sqrt(det(J J^T)) of the 3x4 Jacobian, from its singular values
+    s = np.linalg.svd(pal.jacobian(q), compute_uv=False)
+    np.testing.assert_allclose(t["w_mm3"], s.prod(axis=-1), rtol=1e-9)
+    assert "nan" not in rep.to_html().lower()
+    far = pose_report(pal, [2000.0, 0.0, 0.0])
+    assert far.status_text == "out-of-reach" and far.table.empty
+
+
+def test_available_arms_lists_what_loads():
+    ok, skipped = available_arms()
+    assert {"grabber", "palletizer"} <= set(ok)
+    assert ok["grabber"] == load_arm("grabber").description.title
+    assert not set(ok) & set(skipped)
+    for name, why in skipped.items():
+        with pytest.raises(ValueError):
+            load_arm(name)
+        assert why
+
+
 def test_docstring_examples():
     result = doctest.testmod(analysis.app.explore)
     assert result.attempted >= 3 and result.failed == 0
 
 
+
+
 # --- the widget explorer -----------------------------------------------------------------
-def _png(ex):
-    (out,) = ex.plot.outputs
-    return base64.b64decode(out["data"]["image/png"])
+def _tip(ex):
+    """The arm trace's last point in the 3D view (the gripper), or None (no arm drawn)."""
+    arms = [t for t in ex.figure.data if t.name == "arm"]
+    return None if not arms else [arms[0].x[-1], arms[0].y[-1], arms[0].z[-1]]
 
 
 def test_explorer_builds_at_row1(arm):
-    n_figs = len(plt.get_fignums())
-    ex = build_explorer(arm)
-    assert len(plt.get_fignums()) == n_figs  # draws off pyplot: nothing leaks
-    R, L1 = arm.params.reach_outer, arm.params.L1
-    assert (ex.x.min, ex.x.max, ex.y.min, ex.y.max) == (-R, R, -R, R)
-    assert (ex.z.min, ex.z.max) == (L1 - R, L1 + R)
+    ex = build_explorer(arm, [100, 100, 600])
+    x, _, z = ex.target_sliders
+    assert x.min <= -arm.params.reach_outer and x.max >= arm.params.reach_outer
+    assert z.min <= arm.params.L1 - arm.params.reach_outer
+    assert z.max >= arm.params.L1 + arm.params.reach_outer
+    assert x.step <= 0.1 and x.layout.width == "640px"  # 1200 mm over 640 px, 0.1 mm steps
+    assert [s.description for s in ex.joint_sliders] == ["θ1 [°]", "θ2 [°]", "θ3 [°]"]
+    assert ex.joint_sliders[0].style.description_width == "120px"  # labels not cut
     assert ex.branch.value == "front-up" and ex.fk_mode.value is False
     assert isinstance(ex.report, PoseReport)
     assert "pulses (500, 113, -1724)" in ex.message.value
     for s in ("45.00", "10.21", "-155.13", "&#9654; front-up"):
         assert s in ex.table.value
-    assert _png(ex).startswith(b"\x89PNG\r\n\x1a\n")
+    assert _tip(ex) == pytest.approx([100, 100, 600], abs=1e-3)
     assert ex.joint_box.layout.display == "none"
+    assert ex.arm_picker.value == "grabber"
+    assert {"grabber", "palletizer"} <= {v for _, v in ex.arm_picker.options}
+
+
+def test_explorer_bundle_is_deterministic_and_meaningful(arm):
+    a, b = build_explorer(arm, [100, 100, 600]), build_explorer(arm, [100, 100, 600])
+    assert a.bundle == b.bundle  # no random div id: nbval can compare the stored output
+    spec = a.bundle[PLOTLY_MIME]
+    assert json.loads(json.dumps(spec)) == spec  # plain JSON
+    assert spec["layout"]["uirevision"] == "grabber"  # redraws keep the user's camera
+    assert 'class="plotly-graph-div"' in a.bundle["text/html"]
+    assert "<script src" not in a.bundle["text/html"]  # plotly.js is never fetched
+    assert "45.00, 10.21, -155.13" in a.bundle["text/plain"]
 
 
 def test_explorer_sliders_update_message_table_plot(arm):
-    ex = build_explorer(arm)
-    ex.x.value, ex.y.value = 200.0, 500.0  # Table 4 row 8
+    ex = build_explorer(arm, [100, 100, 600])
+    x, y, z = ex.target_sliders
+    x.value, y.value = 200.0, 500.0  # Table 4 row 8
     assert "31.849 mm beyond the reach" in ex.message.value
-    assert ex.table.value == "" and ex.plot.outputs == ()
+    assert "out-of-reach" in ex.message.value
+    assert ex.table.value == "" and _tip(ex) is None
     assert "nan" not in ex.message.value.lower()
-    ex.x.value, ex.y.value, ex.z.value = 0.0, 0.0, 800.0
-    assert "base axis" in ex.message.value and "FK mode" in ex.message.value
-    assert ex.table.value == "" and ex.plot.outputs == ()
-    ex.x.value, ex.y.value, ex.z.value = 300.0, 300.0, 600.0  # row 10
-    assert ex.report.row()["c1"] == 500 and len(ex.plot.outputs) == 1
+    x.value, y.value, z.value = 0.0, 0.0, 800.0
+    assert "base axis" in ex.message.value and "allow θ1 on the base axis" in ex.message.value
+    assert "theta1_on_axis" not in ex.message.value and "--" not in ex.message.value
+    assert ex.table.value == "" and _tip(ex) is None
+    ex.on_axis.value = True  # the check box supplies theta1 from its slider
+    assert ex.on_axis_deg.layout.display is None
+    ex.on_axis_deg.value = 30.0
+    assert ex.report.reachable and ex.report.row()["theta1_deg"] == pytest.approx(30.0)
+    assert _tip(ex) == pytest.approx([0, 0, 800], abs=1e-3)
+    ex.on_axis.value = False
+    x.value, y.value, z.value = 300.0, 300.0, 600.0  # row 10
+    assert ex.report.row()["c1"] == 500 and _tip(ex) == pytest.approx([300, 300, 600], abs=1e-3)
     ex.branch.value = "back-down"
     assert ex.message.value.count("back-down:") == 1 and "&#9654; back-down" in ex.table.value
-    want = pose_report(arm, [300, 300, 600], "back-down").to_html()
-    assert ex.table.value == want
+    assert ex.table.value == pose_report(arm, [300, 300, 600], "back-down").to_html()
 
 
 def test_explorer_fk_mode(arm):
-    ex = build_explorer(arm)
+    ex = build_explorer(arm, [100, 100, 600])
     ex.fk_mode.value = True
-    assert ex.joint_box.layout.display is None and ex.xyz_box.layout.display == "none"
-    assert (ex.t1.value, ex.t2.value, ex.t3.value) == (45.0, 10.21, -155.13)
-    ex.t1.value, ex.t2.value, ex.t3.value = 30.0, 20.0, -60.0
+    assert ex.joint_box.layout.display is None and ex.target_box.layout.display == "none"
+    t1, t2, t3 = ex.joint_sliders
+    assert (t1.value, t2.value, t3.value) == (45.0, 10.21, -155.13)
+    t1.value, t2.value, t3.value = 30.0, 20.0, -60.0
     p = arm.params.dh_table().fk(np.radians([30.0, 20.0, -60.0]))[:3, 3]
     assert "FK: gripper at (" + ", ".join(f"{v:.2f}" for v in p) + ") mm" in ex.message.value
     np.testing.assert_allclose(ex.report.target, p, atol=FK_TOL_MM)
-    np.testing.assert_allclose(
-        ex.report.row().iloc[:3].to_numpy(float), [30.0, 20.0, -60.0], atol=1e-9
-    )
+    np.testing.assert_allclose(ex.report.angles_deg(), [30.0, 20.0, -60.0], atol=1e-9)
     # straight up the base axis: theta1 comes from the slider, never a NaN or an error
-    ex.t2.value, ex.t3.value = 90.0, 0.0
+    t2.value, t3.value = 90.0, 0.0
     assert ex.report.reachable and "nan" not in ex.table.value.lower()
     assert ex.report.row()["theta1_deg"] == pytest.approx(30.0, abs=1e-9)
-    ex.t2.value, ex.t3.value = 20.0, -60.0
-    ex.fk_mode.value = False  # back to IK: the xyz sliders take the FK point (whole mm)
-    assert [ex.x.value, ex.y.value, ex.z.value] == [float(round(v)) for v in p]
-    assert ex.xyz_box.layout.display is None and "FK" not in ex.message.value
+    # the stretched arm: margin 0, printed as 0.0 (never "-0.0 mm")
+    t1.value, t2.value, t3.value = 0.0, 0.0, 0.0
+    assert "margin to the reach boundary 0.0 mm" in ex.message.value
+    assert "-0.0" not in ex.message.value and "-0.00" not in ex.table.value
+    t1.value, t2.value, t3.value = 30.0, 20.0, -60.0
+    ex.fk_mode.value = False  # back to IK: the target sliders take the FK point
+    np.testing.assert_allclose([s.value for s in ex.target_sliders], p, atol=1e-9)
+    assert ex.target_box.layout.display is None and "FK" not in ex.message.value
+
+
+def test_explorer_switches_arms(arm):
+    ex = build_explorer(arm, [100, 100, 600])
+    ex.arm_picker.value = "palletizer"
+    pal = load_arm("palletizer")
+    assert ex.arm.name == "palletizer" and tuple(ex.branch.options) == pal.branches
+    assert len(ex.joint_sliders) == pal.n_joints == 4
+    assert ex.report.reachable and ex.report.branch == pal.branches[0]
+    np.testing.assert_allclose(ex.report.target, default_target(pal))
+    assert ex.figure.layout.uirevision == "palletizer"
+    ex.fk_mode.value = True
+    assert [s.description for s in ex.joint_sliders] == [f"θ{j} [°]" for j in range(1, 5)]
+    ex.arm_picker.value = "grabber"
+    assert len(ex.joint_sliders) == 3 and ex.branch.value == "front-up"
+
+
+def test_explorer_display_shows_widget_then_3d_view(arm, monkeypatch):
+    shown = []
+
+    def fake_display(obj, raw=False, display_id=None):
+        shown.append((obj, display_id))
+
+        class Handle:
+            def update(self, obj, raw=False):
+                shown.append((obj, "update"))
+
+        return Handle()
+
+    import IPython.display
+
+    monkeypatch.setattr(IPython.display, "display", fake_display)
+    ex = build_explorer(arm, [100, 100, 600])
+    ex._ipython_display_()
+    (widget, _), (view, view_id) = shown
+    assert "application/vnd.jupyter.widget-view+json" in widget
+    assert widget["text/plain"].startswith("Explorer of the 3R material-grabbing robot")
+    assert view is ex.bundle and view_id is True
+    ex.target_sliders[0].value = 150.0
+    assert shown[-1] == (ex.bundle, "update") and _tip(ex)[0] == pytest.approx(150.0)
+
+
+def test_explorer_takes_a_pose_arm():
+    """The GR-1 (5 joints, a pose of 6 inputs: point and RPY angles) through the same code."""
+    gr1 = load_arm("gr1")
+    p = default_target(gr1)
+    rep = pose_report(gr1, p)
+    assert rep.reachable and rep.status_text == "ok"
+    q = np.radians(rep.angles_deg())
+    np.testing.assert_allclose(target_from_joints(gr1, q), p, atol=1e-6)
+    ex = build_explorer("gr1")
+    assert [s.description for s in ex.target_sliders][3:] == ["α [°]", "β [°]", "γ [°]"]
+    assert len(ex.joint_sliders) == 5 and ex.report.reachable
+    ex.fk_mode.value = True  # FK gives the whole pose: the table is still there
+    assert ex.report is not None and ex.report.reachable and ex.table.value
+    ex.joint_sliders[3].value = 20.0
+    np.testing.assert_allclose(ex.report.angles_deg()[3], 20.0, atol=1e-6)
+    ex.fk_mode.value = False
+    assert ex.report.reachable
+    ex.target_sliders[3].value = 40.0  # an orientation out of the arm plane
+    assert ex.report.status_text == "orientation" and ex.table.value == ""

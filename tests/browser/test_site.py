@@ -316,3 +316,33 @@ def test_widgets_say_how_to_use_them(page, site_url, site_dir, path):
         pytest.skip(f"{path} is not part of this build")
     _goto(page, site_url + path)
     assert "make lab" in page.locator("main").inner_text()
+
+
+def test_explorer_3d_view_renders_and_rotates_offline(page, site_url, site_dir, shots):
+    """The explorer page's 3D arm (plotly, text/html output) is drawn from the site's own
+    plotly.js with every outside request blocked, and turns when dragged."""
+    path = "notebooks/09_explore.html"
+    if not (site_dir / path).exists():
+        pytest.skip(f"{path} is not part of this build")
+    n_blocked = len(page.blocked)
+    _goto(page, site_url + path)
+    srcs = page.evaluate("() => [...document.scripts].map(s => s.src).filter(s => s)")
+    plotly = [s for s in srcs if "plotly" in s]
+    assert len(plotly) == 1 and "/_static/plotly.min.js" in plotly[0], plotly
+    plot = page.locator(".js-plotly-plot").first
+    plot.wait_for()
+    plot.scroll_into_view_if_needed()
+    assert plot.locator("canvas").count() >= 1  # the WebGL scene exists
+    title = plot.locator(".gtitle").text_content()
+    assert "front-up" in title and "45.00, 10.21, -155.13" in title
+    eye = "el => el._fullLayout.scene._scene.getCamera().eye"
+    before = plot.evaluate(eye)
+    box = plot.bounding_box()
+    cx, cy = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+    page.mouse.move(cx, cy)
+    page.mouse.down()
+    page.mouse.move(cx + 120, cy + 30, steps=12)
+    page.mouse.up()
+    assert plot.evaluate(eye) != before
+    page.screenshot(path=shots / "site-explorer-3d.png", full_page=False)
+    assert page.blocked[n_blocked:] == [] and page.js_errors == []

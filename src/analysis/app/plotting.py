@@ -19,7 +19,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["STYLE", "figure_dir", "plot_arm", "save_figure", "style"]
+__all__ = ["STYLE", "cjk_fonts", "equal_axes_3d", "figure_dir", "plot_arm", "save_figure", "style"]
 
 STYLE: dict[str, object] = {
     "figure.figsize": (6.4, 4.8),
@@ -36,6 +36,41 @@ STYLE: dict[str, object] = {
     "svg.hashsalt": "analysis",  # stable element ids in SVG output
     "svg.fonttype": "none",
 }
+
+
+def cjk_fonts() -> list[str]:
+    """Installed font families that have Chinese glyphs (the paper's 无解), for a text's
+    ``fontfamily=["DejaVu Sans", *cjk_fonts()]`` fallback list; [] where none is installed
+    (Debian's ``fonts-wqy-microhei``, which ``.ci/run`` installs, provides one)."""
+    from matplotlib import font_manager as fm
+
+    prefixes = ("WenQuanYi", "Noto Sans CJK", "Droid Sans Fallback")
+    found = sorted({f.name for f in fm.fontManager.ttflist if f.name.startswith(prefixes)})
+    if not found:  # matplotlib's font cache may predate the font's installation
+        files = ("wqy", "notosanscjk", "droidsansfallback")
+        for path in fm.findSystemFonts():
+            if any(k in Path(path).name.lower() for k in files):
+                fm.fontManager.addfont(path)
+        found = sorted({f.name for f in fm.fontManager.ttflist if f.name.startswith(prefixes)})
+    return found
+
+
+def equal_axes_3d(ax, points: npt.ArrayLike, *, ticks: int = 5, pad: float = 0.05):
+    """Give a 3D Axes one scale on x, y and z: a cube around ``points`` (..., 3) [mm],
+    padded by ``pad`` of its side, with at most ``ticks`` ticks per axis (no overlapping
+    labels). Returns ``ax``."""
+    from matplotlib.ticker import MaxNLocator
+
+    pts = np.asarray(points, dtype=float).reshape(-1, 3)
+    lo, hi = pts.min(axis=0), pts.max(axis=0)
+    half = (1 + 2 * pad) * (hi - lo).max() / 2
+    mid = (lo + hi) / 2
+    for k, setter in enumerate((ax.set_xlim, ax.set_ylim, ax.set_zlim)):
+        setter(mid[k] - half, mid[k] + half)
+    ax.set_box_aspect((1, 1, 1))
+    for axis in (ax.xaxis, ax.yaxis, ax.zaxis):
+        axis.set_major_locator(MaxNLocator(ticks))
+    return ax
 
 
 @contextlib.contextmanager

@@ -55,8 +55,10 @@ CAPTIONS_TOML = SITE / "captions.toml"
 MISSING_CAPTION = "Caption missing: pass caption=... to save_figure() for"
 WIDGET_MIME = "application/vnd.jupyter.widget-view+json"
 WIDGET_NOTE = (
-    "*Interactive widget (sliders, branch picker, 3D view). A static page has no Python "
-    "kernel to drive it: run `make lab` and open `notebooks/{name}` to use it.*"
+    "*Interactive controls (sliders, branch picker, FK mode). A static page has no Python "
+    "kernel to drive them: run `make lab` and open `notebooks/{name}` to use them. A 3D view "
+    "below them (if the cell has one) shows the starting pose: drag it to rotate, scroll to "
+    "zoom.*"
 )
 # what ``print(save_figure(fig, stem))`` prints: ['05-workspace-xz.svg', '05-workspace-xz.png']
 _SAVED = re.compile(r"^\['(?P<stem>\d\d-[^'\s/]+)\.svg', '(?P=stem)\.png'\]\s*$", re.M)

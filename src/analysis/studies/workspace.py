@@ -349,11 +349,13 @@ def plot_section(
     cmap: str | None = None,
     norm=None,
     singular: bool = True,
+    colorbar: bool = True,
 ) -> mpl.axes.Axes:
     """Colour map of ``values`` (nv, nu) on a section with the reach circles and base axis.
 
     NaN cells (unreachable) are left blank. The outer (stretched) and inner (folded)
     singular circles are dashed; the base axis is a dotted line (xz) or a dot (xy).
+    ``colorbar=False`` draws no colour bar (a mask of one value needs none).
     """
     if ax is None:
         ax = plt.figure().add_subplot()
@@ -367,7 +369,8 @@ def plot_section(
         norm=norm,
         rasterized=True,
     )
-    ax.figure.colorbar(mesh, ax=ax, label=label)
+    if colorbar:
+        ax.figure.colorbar(mesh, ax=ax, label=label)
     if singular:
         circ = section_circles(arm, grid.plane, grid.level_mm)
         names = {"outer": "stretched", "inner": "folded"}

@@ -1,0 +1,245 @@
+"""The arm as an interactive 3D figure (plotly): rotate, zoom and pan in JupyterLab and in
+the static report site, with no network.
+
+Why plotly (``plotly`` on PyPI, pinned in ``requirements.lock``)
+-----------------------------------------------------------------
+* One figure description (JSON) is rendered by plotly.js in both places the explorer must
+  work: JupyterLab 4 renders the ``application/vnd.plotly.v1+json`` output with the
+  ``jupyterlab-plotly`` renderer that the ``plotly`` wheel installs (plotly.js bundled in the
+  extension, nothing fetched), and the report site renders the ``text/html`` output of the
+  same bundle (MyST-NB picks ``text/html``; it skips the plotly mimetype) with the
+  ``plotly.min.js`` of the same wheel served from the site's ``_static``
+  (``docs/site/conf.py`` adds it to the pages that hold a plotly figure).
+* Its 3D scenes (WebGL) rotate, zoom and pan with the mouse out of the box, and keep the
+  user's camera when the figure is redrawn with the same ``layout.uirevision``: the
+  explorer (:mod:`analysis.app.explore`) updates its view in place through a display id, so
+  moving a slider does not reset the rotation.
+* The alternatives were weighed: matplotlib's 3D (the old explorer) is a static PNG in a
+  notebook and in a static page; three.js or pythreejs need a widget manager, which a
+  static page only gets from a CDN; plotly's ``FigureWidget`` needs ``anywidget`` and puts
+  its 5 MB script into the notebook's stored widget state.
+
+Everything here is a pure function of the arm and the joint angles: :func:`arm_figure`
+builds a ``plotly.graph_objects.Figure`` (coordinates rounded to 1 µm, so stored notebook
+outputs that nbval compares do not depend on round-off), :func:`figure_bundle` the MIME
+bundle a notebook displays, with a deterministic ``div`` id (no random ids in stored
+outputs), and :func:`workspace_box` the axis ranges, from a seeded sample of the arm's
+forward kinematics.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+import plotly.graph_objects as go
+
+__all__ = ["Box", "arm_figure", "figure_bundle", "workspace_box"]
+
+PLOTLY_MIME = "application/vnd.plotly.v1+json"
+ROUND_MM = 3
+"""Decimals [mm] of the coordinates in a figure: 1 µm, far below what a figure can show and
+far above float64 round-off (~1e-13 mm), so stored outputs are reproducible."""
+CONFIG = {"displaylogo": False, "responsive": True, "scrollZoom": True}
+_FONT = {"family": "DejaVu Sans, Arial, sans-serif", "size": 13}
+
+
+@dataclass(frozen=True)
+class Box:
+    """Axis-aligned box [mm]: ``lo`` and ``hi``, 3 values each (x, y, z)."""
+
+    lo: tuple[float, float, float]
+    hi: tuple[float, float, float]
+
+    @property
+    def span(self) -> npt.NDArray[np.float64]:
+        return np.subtract(self.hi, self.lo)
+
+
+def workspace_box(
+    arm, *, samples: int = 4096, seed: int = 0, pad: float = 0.08, grid_mm: float = 10.0
+) -> Box:
+    """A box around everything the arm's links can reach [mm], for axis and slider ranges.
+
+    Joint angles are drawn uniformly within the joint limits (a full turn where a joint is
+    unrestricted), seeded; the box holds every frame origin of those poses (the base, each
+    link's end, the tool), padded by ``pad`` of its span on each side, rounded outwards
+    to ``grid_mm``, made symmetric in x and y about the base axis, and cut at z = 0 when
+    no link goes below the base. Generic over arms: it uses only :meth:`Arm.frames`.
+
+    Examples
+    --------
+    The paper's arm (Table 3: L1 = 660, L2 + L3 = 510 mm) reaches 510 mm around the shoulder
+    at (0, 0, 660) mm; the padded box holds that sphere:
+
+    >>> from analysis.kinematics.arm import paper_arm
+    >>> b = workspace_box(paper_arm())
+    >>> b.lo[0] <= -510 and b.hi[0] >= 510 and b.lo[2] <= 150 and b.hi[2] >= 1170
+    True
+    """
+    if not (isinstance(samples, int) and samples >= 2):
+        raise ValueError(f"samples = {samples!r}: need a whole number >= 2")
+    if not (0.0 <= pad <= 1.0):
+        raise ValueError(f"pad = {pad!r}: must be within 0 .. 1 (a fraction of the span)")
+    if not grid_mm > 0:
+        raise ValueError(f"grid_mm = {grid_mm!r} mm must be > 0 mm")
+    lim = np.array([lim if lim is not None else (-np.pi, np.pi) for lim in arm.limits])
+    rng = np.random.default_rng(seed)
+    q = lim[:, 0] + rng.random((samples, arm.n_joints)) * (lim[:, 1] - lim[:, 0])
+    pts = arm.frames(np.concatenate([q, np.zeros((1, arm.n_joints))])).reshape(-1, 3)
+    lo, hi = pts.min(axis=0), pts.max(axis=0)
+    margin = pad * np.maximum(hi - lo, grid_mm)
+    lo = np.floor((lo - margin) / grid_mm) * grid_mm
+    hi = np.ceil((hi + margin) / grid_mm) * grid_mm
+    r = np.maximum(-lo[:2], hi[:2]).max()  # x and y symmetric about the base axis
+    lo[:2], hi[:2] = -r, r
+    if pts[:, 2].min() >= 0.0:  # nothing below the base: the floor is z = 0
+        lo[2] = 0.0
+    return Box(tuple(float(v) + 0.0 for v in lo), tuple(float(v) + 0.0 for v in hi))
+
+
+def _round(a: npt.ArrayLike) -> list:
+    """Coordinates as plain lists rounded to :data:`ROUND_MM` decimals, -0.0 as 0.0."""
+    return (np.round(np.asarray(a, dtype=float), ROUND_MM) + 0.0).tolist()
+
+
+def arm_figure(
+    arm,
+    q: npt.ArrayLike | None,
+    target: npt.ArrayLike | None = None,
+    *,
+    title: str = "",
+    box: Box | None = None,
+    height: int = 520,
+) -> go.Figure:
+    """The arm at joint angles ``q`` [rad] as a rotatable 3D stick figure [mm].
+
+    Links run through the chain's frame origins (:meth:`Arm.frames`: base, each link's end,
+    the tool); the base axis is dashed; ``target`` (its first three values, x, y, z [mm]) is
+    a red cross. ``q=None`` draws no arm (a target without a solution). Axes share one
+    scale (``aspectmode="manual"`` with the box's proportions), and ``uirevision`` is the
+    arm's name, so a redraw of the same arm keeps the user's camera.
+
+    Parameters
+    ----------
+    arm : analysis.kinematics.arm.Arm
+    q : array_like, shape (n,), or None
+        Joint angles [rad].
+    target : array_like, optional
+        The target; its first three values are x, y, z [mm].
+    title : str
+    box : Box, optional
+        Axis ranges [mm]; default :func:`workspace_box` of the arm.
+
+    Examples
+    --------
+    Table 4 row 1: the corrected front-up angles (45, 10.21, -155.13) deg end on the target:
+
+    >>> from analysis.kinematics.arm import paper_arm
+    >>> arm = paper_arm()
+    >>> fig = arm_figure(arm, np.radians([45, 10.2087, -155.1291]), [100, 100, 600])
+    >>> [round(v[-1]) for v in (fig.data[1].x, fig.data[1].y, fig.data[1].z)]
+    [100, 100, 600]
+    """
+    box = box or workspace_box(arm)
+    traces = [
+        go.Scatter3d(
+            x=[0.0, 0.0],
+            y=[0.0, 0.0],
+            z=_round([box.lo[2], box.hi[2]]),
+            mode="lines",
+            line={"color": "#888888", "width": 3, "dash": "dash"},
+            name="base axis",
+            hoverinfo="skip",
+        )
+    ]
+    if q is not None:
+        pts = arm.frames(np.asarray(q, dtype=float))
+        keep = np.r_[True, np.any(np.abs(np.diff(pts, axis=0)) > 1e-9, axis=1)]
+        pts = pts[keep]  # frames that coincide (a zero-length link) drawn once
+        x, y, z = (_round(pts[:, k]) for k in range(3))
+        traces.append(
+            go.Scatter3d(
+                x=x,
+                y=y,
+                z=z,
+                mode="lines+markers",
+                line={"color": "#1f77b4", "width": 9},
+                marker={"size": 5, "color": "#0b3c5d"},
+                name="arm",
+                hovertemplate="(%{x:.1f}, %{y:.1f}, %{z:.1f}) mm<extra></extra>",
+            )
+        )
+    if target is not None:
+        t = np.asarray(target, dtype=float)[:3]
+        traces.append(
+            go.Scatter3d(
+                x=_round(t[:1]),
+                y=_round(t[1:2]),
+                z=_round(t[2:3]),
+                mode="markers",
+                marker={"symbol": "x", "size": 7, "color": "#d62728"},
+                name="target",
+                hovertemplate="target (%{x:.1f}, %{y:.1f}, %{z:.1f}) mm<extra></extra>",
+            )
+        )
+    span = box.span
+    ratio = span / span.max()
+    axis = {"showbackground": True, "backgroundcolor": "#f4f6f8", "gridcolor": "#d0d4d8"}
+    scene = {
+        f"{k}axis": axis | {"title": {"text": f"{k} [mm]"}, "range": [box.lo[i], box.hi[i]]}
+        for i, k in enumerate("xyz")
+    }
+    fig = go.Figure(
+        data=traces,
+        layout={
+            "template": go.layout.Template(),  # no 10 kB default template in every output
+            "title": {"text": title, "font": _FONT | {"size": 15}, "x": 0.02},
+            "font": _FONT,
+            "height": height,
+            "margin": {"l": 0, "r": 0, "t": 40 if title else 10, "b": 0},
+            "showlegend": True,
+            "legend": {"x": 0.01, "y": 0.95, "bgcolor": "rgba(255,255,255,0.7)"},
+            "paper_bgcolor": "white",
+            "uirevision": arm.name,
+            "scene": scene
+            | {
+                "aspectmode": "manual",
+                "aspectratio": dict(zip("xyz", _round(ratio), strict=True)),
+                "camera": {"eye": {"x": 1.25, "y": -1.35, "z": 0.7}},
+                "uirevision": arm.name,
+            },
+        },
+    )
+    return fig
+
+
+def figure_bundle(fig: go.Figure, key: str, text: str) -> dict[str, object]:
+    """The MIME bundle that shows ``fig``: for JupyterLab, the report site and plain text.
+
+    * ``application/vnd.plotly.v1+json``: the figure, rendered by JupyterLab's plotly
+      extension (installed with the ``plotly`` wheel);
+    * ``text/html``: a ``div`` and ``Plotly.newPlot`` for the static report, where
+      ``plotly.min.js`` is served from ``_static`` (no script is inlined or fetched); the
+      ``div`` id is ``arm3d-`` + a hash of ``key`` and the figure, so a stored output is
+      the same on every run;
+    * ``text/plain``: ``text``, what the figure shows, for a reader without JavaScript.
+    """
+    spec = json.loads(fig.to_json())
+    digest = hashlib.sha1((key + json.dumps(spec, sort_keys=True)).encode()).hexdigest()[:12]
+    html = fig.to_html(
+        include_plotlyjs=False,
+        full_html=False,
+        div_id=f"arm3d-{digest}",
+        config=CONFIG,
+        default_width="100%",
+        default_height=f"{fig.layout.height or 520}px",
+    )
+    return {
+        PLOTLY_MIME: spec | {"config": CONFIG},
+        "text/html": html,
+        "text/plain": text,
+    }

@@ -1,0 +1,56 @@
+"""Tests for analysis.app.arm3d: the plotly figure of an arm and its MIME bundle."""
+
+import json
+
+import numpy as np
+import pytest
+
+from analysis.app.arm3d import PLOTLY_MIME, arm_figure, figure_bundle, workspace_box
+from analysis.kinematics.arm import load_arm
+
+
+@pytest.mark.parametrize("name", ["grabber", "palletizer"])
+def test_workspace_box_holds_sampled_poses(name):
+    arm = load_arm(name)
+    box = workspace_box(arm)
+    assert workspace_box(arm) == box  # seeded
+    lim = np.array([v if v is not None else (-np.pi, np.pi) for v in arm.limits])
+    q = np.random.default_rng(1).uniform(lim[:, 0], lim[:, 1], (2000, arm.n_joints))
+    pts = arm.frames(q).reshape(-1, 3)
+    assert (pts >= np.array(box.lo) - 1e-9).all() and (pts <= np.array(box.hi) + 1e-9).all()
+    assert box.lo[0] == -box.hi[0] and box.lo[1] == -box.hi[1]
+
+
+def test_workspace_box_rejects_bad_arguments(arm):
+    with pytest.raises(ValueError, match="samples = 1"):
+        workspace_box(arm, samples=1)
+    with pytest.raises(ValueError, match="pad = 2"):
+        workspace_box(arm, pad=2)
+    with pytest.raises(ValueError, match="grid_mm = 0"):
+        workspace_box(arm, grid_mm=0)
+
+
+def test_arm_figure_links_through_frames_and_equal_scales(arm):
+    q = np.radians([45.0, 10.2087, -155.1291])
+    fig = arm_figure(arm, q, [100, 100, 600], title="row 1")
+    names = [t.name for t in fig.data]
+    assert names == ["base axis", "arm", "target"]
+    pts = np.column_stack([fig.data[1].x, fig.data[1].y, fig.data[1].z])
+    np.testing.assert_allclose(pts, arm.frames(q), atol=1e-3)  # rounded to 1 um
+    scene = fig.layout.scene
+    spans = [scene[f"{k}axis"].range[1] - scene[f"{k}axis"].range[0] for k in "xyz"]
+    ratios = [scene.aspectratio[k] for k in "xyz"]
+    np.testing.assert_allclose(np.divide(ratios, spans), ratios[0] / spans[0], rtol=1e-3)
+    assert arm_figure(arm, None, [200, 500, 600]).data[-1].name == "target"
+    assert "arm" not in [t.name for t in arm_figure(arm, None).data]
+
+
+def test_bundle_is_plain_json_with_stable_div_id(arm):
+    fig = arm_figure(arm, np.zeros(3))
+    a, b = figure_bundle(fig, "k", "text"), figure_bundle(fig, "k", "text")
+    assert a == b and a["text/plain"] == "text"
+    assert json.loads(json.dumps(a[PLOTLY_MIME])) == a[PLOTLY_MIME]
+    assert "bdata" not in json.dumps(a[PLOTLY_MIME])  # readable numbers, not base64 arrays
+    other = figure_bundle(arm_figure(arm, np.ones(3)), "k", "text")
+    assert other["text/html"] != a["text/html"]
+    assert a["text/html"].count("Plotly.newPlot") == 1 and "cdn" not in a["text/html"].lower()
