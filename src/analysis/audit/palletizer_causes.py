@@ -866,7 +866,8 @@ def _exact() -> Cause:
         "error",
         "claim",
         f.evidence + f" Corrected and through Pinocchio: {pin['n']:,} seeded level configurations, "
-        f"max |FK(IK(G)) - G| = {pin['max_err_mm']:.1e} mm.",
+        f"max |FK(IK(G)) - G| below {ATOL:g} mm (float64 round-off; the digits depend on the "
+        "machine).",
         [
             Manifestation(
                 "pal-claim-exact/sec5",

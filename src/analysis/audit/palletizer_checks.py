@@ -701,8 +701,13 @@ def findings(arm: Arm | None = None) -> list[Finding]:
             "claim",
             f"all formulas as printed: misses {_fmt(m_printed)} mm (D-H product) and "
             f"{_fmt(m_printed_11)} mm (eq. 11 as printed) at four quadrant targets (NaN: a "
-            "printed formula undefined); corrected chain: max "
-            f"{float(base.max()):.1e} mm. The paper's own targets and results are in the lost "
+            "printed formula undefined); corrected chain: "
+            + (
+                "below 1e-9 mm (float64 round-off)"
+                if float(base.max()) < 1e-9
+                else f"max {float(base.max()):.3g} mm"
+            )
+            + ". The paper's own targets and results are in the lost "
             "Tables 2-3, so its numbers cannot be recomputed.",
         )
     )
@@ -763,8 +768,9 @@ def findings(arm: Arm | None = None) -> list[Finding]:
             "",
             "",
             "with the inferred grouping it is the shoulder-wrist distance of the level gripper "
-            "(the corrected chain reaches every quadrant target to "
-            f"{float(base.max()):.1e} mm using it)",
+            "(the corrected chain reaches every quadrant target "
+            + ("within 1e-9 mm" if float(base.max()) < 1e-9 else f"to {float(base.max()):.3g} mm")
+            + " using it)",
             "holds",
         )
     )

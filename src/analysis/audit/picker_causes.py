@@ -529,12 +529,11 @@ def _lost() -> Cause:
 def _holds() -> list[Cause]:
     rows = poe_checks.cross_check(1000)
     found = _found()
-    worst_mm = max(v for r in rows for k, v in r.items() if k.endswith("[mm]") and np.isfinite(v))
+    # the differences are float64 round-off, whose last digits depend on the machine's libm:
+    # the register states the bound they are held to, not their digits
     summary = "; ".join(
         f"{r['arm']} {r['chain']} ({r['joints']}): "
-        + ", ".join(
-            f"{k[:-5]} {v:.1e} mm" for k, v in r.items() if k.endswith("[mm]") and np.isfinite(v)
-        )
+        + ", ".join(k[:-5] for k, v in r.items() if k.endswith("[mm]") and np.isfinite(v))
         for r in rows
     )
     return [
@@ -546,8 +545,9 @@ def _holds() -> list[Cause]:
             "holds",
             "claim",
             f"analysis.kinematics.poe against independent routes, {rows[0]['n']} seeded "
-            f"configurations per chain, largest position difference {worst_mm:.1e} mm: "
-            f"{summary}. The D-H arms (grabber, palletizer) also against their D-H product and "
+            f"configurations per chain, every position difference below "
+            f"{poe_checks.ATOL_MM:g} mm (float64 round-off) against: {summary}. The D-H arms "
+            "(grabber, palletizer, gr1) also against their D-H product and "
             "Pinocchio built from the D-H rows; the picker (no D-H description: prismatic "
             "sliders) against Pinocchio built from its screws and its loop closure "
             "(tests/kinematics/test_poe.py and test_picker.py: 10,000 configurations each, "

@@ -64,9 +64,10 @@ def cross_check(n: int = 1000, seed: int = 2016) -> list[dict]:
     from analysis.kinematics import picker as pk
     from analysis.kinematics.pinocchio_model import PinocchioArm, PinocchioPOE
 
-    rng = np.random.default_rng(seed)
     rows = []
     for name in dh_arm_names():
+        # one generator per arm, so that adding an arm leaves the others' samples alone
+        rng = np.random.default_rng([seed, *name.encode()])
         table = load_arm(name).table
         S, M = poe.screws_from_dh(table)
         q = rng.uniform(-np.pi, np.pi, (n, table.n_joints))
@@ -87,7 +88,7 @@ def cross_check(n: int = 1000, seed: int = 2016) -> list[dict]:
             row[f"{key} [mm]"], row[f"{key} [rot]"] = _errors(T, ref)
         rows.append(row)
     picker = pk.load_picker()
-    active = picker.random_active(rng, n)
+    active = picker.random_active(np.random.default_rng([seed, *b"picker"]), n)
     q_all = picker.joints(active)
     for chain, (S, M), q in (
         ("main (open)", picker.open_chain(), q_all[:, :8]),
