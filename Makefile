@@ -30,15 +30,17 @@ $(STAMP): requirements.lock pyproject.toml
 # tests/nbval_kernel.py starts the notebook kernels over IPC (no TCP port race between the
 # xdist workers), retries a kernel that dies at start-up and keeps each kernel's stderr in
 # build/nbval-kernel-logs/.
-# tests/browser builds the site once (every notebook executed) and checks it in Debian's
-# /usr/bin/chromium; without it those tests are skipped, saying why.
+# tests/browser builds the site once and checks it in Debian's /usr/bin/chromium (without it
+# those tests are skipped, saying why); here from the notebooks' stored outputs and the
+# figures that the nbval run just saved in build/figures (ANALYSIS_SITE_EXECUTE=0): nbval has
+# re-executed every notebook and compared it with those outputs the line before.
 test: $(STAMP)
-	MPLBACKEND=Agg $(PY) -m pytest -n 2 tests --ignore=tests/browser --doctest-modules src
+	MPLBACKEND=Agg $(PY) -m pytest -n 2 --dist worksteal tests --ignore=tests/browser --doctest-modules src
 	MPLBACKEND=$(NB_BACKEND) $(PY) -m pytest -p tests.nbval_kernel -n 2 --dist loadfile --nbval --nbval-sanitize-with tests/nbval_sanitize.cfg notebooks
-	MPLBACKEND=Agg $(PY) -m pytest tests/browser
+	ANALYSIS_SITE_EXECUTE=0 MPLBACKEND=Agg $(PY) -m pytest tests/browser
 
 test-fast: $(STAMP)
-	$(PY) -m pytest -n 2 -x tests --ignore=tests/browser
+	$(PY) -m pytest -n 2 --dist worksteal -x tests --ignore=tests/browser
 
 # The browser tests against build/report as `make report` left it (no rebuild).
 test-browser: $(STAMP)

@@ -53,7 +53,9 @@ def build_problems() -> list[str]:
 
 @pytest.fixture(scope="session")
 def site_dir(chromium, tmp_path_factory, build_problems) -> Path:
-    """The built site: ``ANALYSIS_SITE_DIR`` if set, else a fresh build of every notebook."""
+    """The built site: ``ANALYSIS_SITE_DIR`` if set, else a fresh build of every notebook
+    (``ANALYSIS_SITE_EXECUTE=0``: from their stored outputs and ``build/figures``, as
+    ``make test`` does right after nbval has re-executed and compared them)."""
     given = os.environ.get("ANALYSIS_SITE_DIR")
     if given:
         path = Path(given).resolve()
@@ -62,7 +64,7 @@ def site_dir(chromium, tmp_path_factory, build_problems) -> Path:
         return path
     out = tmp_path_factory.mktemp("site") / "report"
     try:
-        build_report(out)
+        build_report(out, execute=os.environ.get("ANALYSIS_SITE_EXECUTE", "1") != "0")
     except NotebookFailed as exc:  # the site exists: test it; test_site_built_cleanly fails
         build_problems.append(str(exc))
     return out

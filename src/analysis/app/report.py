@@ -40,6 +40,7 @@ import contextlib
 import functools
 import http.server
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -53,6 +54,8 @@ import nbformat
 from jupyter_client.manager import KernelManager
 from nbclient import NotebookClient
 from nbclient.exceptions import CellExecutionError
+
+from analysis.app.plotting import figure_dir
 
 __all__ = [
     "NotebookFailed",
@@ -289,10 +292,16 @@ def build_report(
     notebooks: list[Path] | None = None,
     *,
     pdf: bool = True,
+    execute: bool = True,
+    figures: str | Path | None = None,
 ) -> Path:
     """Execute the notebooks and build the report site under ``out``; return its index.html.
 
     ``pdf=False`` skips the printed ``report.pdf`` (it needs Debian's Chromium anyway).
+    ``execute=False`` builds from the notebooks' stored outputs and the figures a run of
+    them saved in ``figures`` (default ``build/figures``): what ``make test`` does after
+    nbval has re-executed every notebook, compared it with its stored outputs and saved its
+    figures, so the browser tests need not execute everything a second time.
     A notebook that raises does not stop the build: its page shows the outputs up to the
     failing cell and the error, the front page lists it, and :class:`NotebookFailed` is
     raised once the site is written (so ``make report`` fails, with a site to look at).
@@ -319,9 +328,22 @@ def build_report(
     executed: list[tuple[Path, nbformat.NotebookNode, float]] = []
     failed: dict[str, str] = {}  # notebook stem (or "front page") -> what went wrong
     n = len(paths)
+    if not execute:
+        saved = Path(figures) if figures is not None else figure_dir()
+        for i, path in enumerate(paths, start=1):
+            say(f"notebook {i}/{n}: {path.name}: stored outputs (not executed)")
+            nb = nbformat.read(path, as_version=4)
+            nbformat.write(nb, dl_nb / path.name)
+            executed.append((path, nb, 0.0))
+            # the figures this notebook saves (not stale ones of notebooks since removed)
+            code = "\n".join(c.source for c in nb.cells if c.cell_type == "code")
+            for stem in re.findall(r"save_figure\(\s*\w+,\s*\"([^\"]+)\"", code):
+                for f in saved.glob(f"{stem}.*"):
+                    if f.suffix in (".svg", ".png", ".json"):
+                        shutil.copyfile(f, fig_dir / f.name)
     # kernels draw with the inline backend, as under nbval (make test), whatever the caller uses
     with _env(ANALYSIS_FIGURE_DIR=str(fig_dir), MPLBACKEND=NB_BACKEND):
-        for i, path in enumerate(paths, start=1):
+        for i, path in enumerate(paths if execute else [], start=1):
             say(f"notebook {i}/{n}: executing {path.name} ...")
             t = time.perf_counter()
             last = [t]
@@ -355,7 +377,7 @@ def build_report(
     titles, homes = {}, {}
     for path, nb, dt in executed:
         page, placed = site.prepare_notebook(
-            nb, path.name, captions, seconds=dt, failure=failed.get(path.stem)
+            nb, path.name, captions, seconds=dt if execute else None, failure=failed.get(path.stem)
         )
         nbformat.write(page, nb_dir / path.name)
         titles[path.stem] = _title(nb, path.stem)
@@ -367,7 +389,7 @@ def build_report(
             f"notebooks/{p.name}",
             "Executed notebooks",
             f"{p.stem}: {titles[p.stem]}",
-            f"executed in {dt:.1f} s",
+            f"executed in {dt:.1f} s" if execute else "stored outputs, verified by nbval",
         )
         for p, _, dt in executed
     ]
@@ -384,10 +406,16 @@ def build_report(
         "system of material grabbing robot based on the inverse kinematics analysis.* Food & "
         "Machinery, 2016. Every printed equation, table and PLC listing re-derived, "
         "recomputed or executed. "
-        f"This site was built{f' from commit `{commit}`' if commit else ''}: all {n} notebooks "
-        f"were executed for it ({total:.0f} s"
-        + (f"; {sum(k in titles for k in failed)} failed" if failed else "")
-        + "), and the verdicts below recomputed."
+        f"This site was built{f' from commit `{commit}`' if commit else ''}: "
+        + (
+            f"all {n} notebooks were executed for it ({total:.0f} s"
+            + (f"; {sum(k in titles for k in failed)} failed" if failed else "")
+            + ")"
+            if execute
+            else f"from the stored outputs of the {n} notebooks (re-executed and compared "
+            "by nbval in the same test run)"
+        )
+        + ", and the verdicts below recomputed."
     )
     docs = [f"notebooks/{p.stem}" for p, _, _ in executed]
     toc = {"Notebooks": docs, "Report": ["register", "figures", "downloads"]}
