@@ -114,7 +114,7 @@ def _cmd_fk(args: argparse.Namespace) -> int:
 # --- ik ------------------------------------------------------------------------------------------
 def _cmd_ik(args: argparse.Namespace) -> int:
     if args.input is not None or args.output is not None:
-        if args.x is not None:
+        if args.target:
             raise UsageError("give either a target X Y Z or --input/--output, not both")
         if args.input is None or args.output is None:
             raise UsageError("batch mode needs both --input IN.csv and --output OUT.csv")
@@ -140,26 +140,47 @@ def _cmd_ik(args: argparse.Namespace) -> int:
         else:
             print(text, file=sys.stderr)
         return 0
-    given = [v for v in (args.x, args.y, args.z) if v is not None]
-    if len(given) != 3:
+    arm = _arm(args)
+    n, given = len(arm.inputs), len(args.target)
+    if given != n:
+        if n == 3:
+            raise UsageError(
+                f"give a target X Y Z (mm; got {given} of 3 coordinates), "
+                "or --input IN.csv --output OUT.csv"
+            )
         raise UsageError(
-            f"give a target X Y Z (mm; got {len(given)} of 3 coordinates), "
-            "or --input IN.csv --output OUT.csv"
+            f"{arm.name} takes {n} values ({', '.join(_input_labels(arm))}); got {given}"
         )
-    return _ik_single(args)
+    return _ik_single(args, arm)
+
+
+def _input_units(arm) -> tuple[str, ...]:
+    """Units of the arm's inputs: mm for a position, rad for an angle (the closed form's
+    ``INPUT_UNITS``; a point by default). The command line takes angles in degrees."""
+    return getattr(arm.closed_form, "INPUT_UNITS", ("mm",) * len(arm.inputs))
+
+
+def _input_labels(arm) -> list[str]:
+    return [
+        f"{name} [{'deg' if unit == 'rad' else unit}]"
+        for name, unit in zip(arm.inputs, _input_units(arm), strict=True)
+    ]
 
 
 def _axis(args) -> float | None:
     return None if args.theta1_on_axis is None else math.radians(args.theta1_on_axis)
 
 
-def _ik_single(args: argparse.Namespace) -> int:
+def _ik_single(args: argparse.Namespace, arm) -> int:
     import numpy as np
 
     from analysis.kinematics.pulses import angles_to_pulses
 
-    arm = _arm(args)
-    target = [args.x, args.y, args.z]
+    given = list(args.target)
+    target = [
+        math.radians(v) if unit == "rad" else v
+        for v, unit in zip(given, _input_units(arm), strict=True)
+    ]
     names = arm.branch_names(args.branch or arm.branches[0])
     sols = arm.ik_all(target, theta1_on_axis=_axis(args), tol=args.tol, branches=names)
     out = [
@@ -170,12 +191,20 @@ def _ik_single(args: argparse.Namespace) -> int:
         }
         for name, theta in sols.items()
     ]
-    lines = [f"target ({', '.join(f'{v:g}' for v in target)}) mm"]
+    units = _input_units(arm)
+    if all(u == "mm" for u in units):
+        lines = [f"target ({', '.join(f'{v:g}' for v in given)}) mm"]
+    else:
+        lines = [
+            "pose "
+            + ", ".join(f"{lab.split(' [')[0]} = {v:g} {'deg' if u == 'rad' else u}"
+                        for lab, v, u in zip(_input_labels(arm), given, units, strict=True))
+        ]  # fmt: skip
     for s in out:
         ang = ", ".join(f"{t:.2f}" for t in s["theta_deg"])
         pul = ", ".join(str(c) for c in s["pulses"])
         lines.append(f"  {s['branch']:<10} theta = ({ang}) deg   pulses = ({pul})")
-    doc = {"target": target, "reachable": True, "solutions": out}
+    doc = {"target": given, "reachable": True, "solutions": out}
     if arm.name != "grabber":
         doc["arm"] = arm.name
     _emit(args, doc, "\n".join(lines))
@@ -332,12 +361,17 @@ def build_parser() -> argparse.ArgumentParser:
         "ok, out-of-reach, inside-reach, base-axis, joint-limits).",
         epilog="examples:\n  python -m analysis ik 100 100 600 --json\n"
         "  python -m analysis ik 0 0 900 --theta1-on-axis 30\n"
+        "  python -m analysis ik 300 100 50 0 90 10 --arm gr1 --branch all\n"
         "  python -m analysis ik --input targets.csv --output solved.csv --branch all",
         formatter_class=_Help,
     )
-    p.add_argument("x", nargs="?", type=_finite, metavar="X", help="target x [mm]")
-    p.add_argument("y", nargs="?", type=_finite, metavar="Y", help="target y [mm]")
-    p.add_argument("z", nargs="?", type=_finite, metavar="Z", help="target z [mm]")
+    p.add_argument(
+        "target",
+        nargs="*",
+        type=_finite,
+        metavar="X Y Z",
+        help="target [mm]; for the GR-1 the pose X Y Z [mm] ALPHA BETA GAMMA [deg] (RPY)",
+    )
     p.add_argument("--branch", help="IK branch, or 'all' (default: the arm's first, the paper's)")
     p.add_argument("--json", action="store_true", help="machine-readable output and errors")
     p.add_argument("--input", type=Path, help="batch: CSV with columns x_mm, y_mm, z_mm")

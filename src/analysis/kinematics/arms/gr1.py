@@ -88,6 +88,8 @@ __all__ = [
 BRANCHES = ("front-up", "front-down", "back-up", "back-down")
 INPUTS = ("px", "py", "pz", "alpha", "beta", "gamma")
 """The pose: position [mm] and RPY angles [rad] (eqs. 3.14-3.15), Table 5-3's columns."""
+INPUT_UNITS = ("mm", "mm", "mm", "rad", "rad", "rad")
+"""Units of :data:`INPUTS` (the command line takes the angles in degrees)."""
 ORIENTATION_TOL_RAD = 1e-4
 """Largest angle [rad] between the approach vector and the arm plane that is accepted (and
 projected away); beyond it the pose is refused with status ``orientation``."""
