@@ -25,7 +25,7 @@ from analysis.kinematics.dh import (
     link_transform,
     link_transform_sym,
 )
-from analysis.kinematics.params import data_dir, paper_params
+from analysis.kinematics.params import paper_params
 from helpers import (
     assert_allclose,
     assert_sym_equal,
@@ -261,10 +261,12 @@ def test_seed001_symbolic_matrices_match_printed():
         assert_sym_equal(got, printed, f"{k}_{k + 1}T")
 
 
-def test_palletizer_csv_matches_seed001_printed_matrices(rng):
-    """data/palletizer_mdh.csv read as modified D-H equals seed 001's matrices with the
-    CSV's illustrative lengths (L1 = L2 = 200, h = 70, L3 = 50 mm)."""
-    table = DHTable.from_csv(data_dir() / "palletizer_mdh.csv", "modified")
+def test_palletizer_description_matches_seed001_printed_matrices(rng):
+    """data/arms/palletizer.toml's modified D-H rows equal seed 001's matrices with the
+    description's assumed lengths (L1 = L2 = 200, h = 70, L3 = 50 mm)."""
+    from analysis.kinematics.arm import load_arm
+
+    table = load_arm("palletizer").table
     assert table.n_joints == 4 and len(table.rows) == 5 and table.rows[-1].kind == "fixed"
     values = {pL1: 200, pL2: 200, pL3: 50, ph: 70}
     q = rng.uniform(-np.pi, np.pi, (40, 4))

@@ -19,8 +19,6 @@ import pytest
 from analysis.app.cli import main
 from analysis.kinematics.arm import Arm, Status, load_arm
 from analysis.kinematics.description import load_description
-from analysis.kinematics.dh import DHTable
-from analysis.paths import data_dir
 
 ARM = load_arm("palletizer")
 L1, L2, L3, H = (ARM.params[k] for k in ("L1", "L2", "L3", "h"))
@@ -97,11 +95,3 @@ def test_other_lengths_move_the_stop_with_them(rng):
     d = np.array([stop - 0.5, stop + 0.5])
     g = np.array([[L3 + dd, 0.0, -H] for dd in d])  # wrist level with the shoulder
     assert arm.solve(g).status.tolist() == [Status.OK, Status.JOINT_LIMITS]
-
-
-def test_the_data_file_kept_for_notebook_04_is_the_description():
-    """data/palletizer_mdh.csv predates the description; notebook 04 still reads it, so it
-    stays, and must not drift from data/arms/palletizer.toml."""
-    csv = DHTable.from_csv(data_dir() / "palletizer_mdh.csv", "modified")
-    q = np.random.default_rng(7).uniform(-np.pi, np.pi, (200, 4))
-    np.testing.assert_allclose(csv.fk(q), ARM.table.fk(q), atol=1e-12)

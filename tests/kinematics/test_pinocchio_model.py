@@ -11,8 +11,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from analysis.kinematics.arm import load_arm
 from analysis.kinematics.dh import DHRow, DHTable
-from analysis.kinematics.params import data_dir, paper_params
+from analysis.kinematics.params import paper_params
 from analysis.kinematics.pinocchio_model import PinocchioArm, build_model
 from helpers import assert_allclose, assert_points_close, assert_transform_close
 
@@ -36,7 +37,7 @@ def fd_jacobian(table: DHTable, q, h=1e-6):
 
 
 def palletizer() -> DHTable:
-    return DHTable.from_csv(data_dir() / "palletizer_mdh.csv", "modified")
+    return load_arm("palletizer").table
 
 
 @pytest.mark.parametrize("which", ["paper", "palletizer"])
