@@ -19,16 +19,20 @@ import sympy as sp
 from analysis.papers import gr1_thesis as g
 
 
-def test_module_imports_only_the_standard_library_and_sympy():
-    tree = ast.parse(Path(g.__file__).read_text(encoding="utf-8"))
+def test_package_imports_only_the_standard_library_sympy_and_itself():
     roots = set()
-    for node in ast.walk(tree):
-        if isinstance(node, ast.Import):
-            roots |= {a.name.split(".")[0] for a in node.names}
-        elif isinstance(node, ast.ImportFrom):
-            roots.add((node.module or "").split(".")[0])
-    assert roots - {"__future__", "sympy"} <= set(sys.stdlib_module_names)
-    assert "analysis" not in roots
+    for path in sorted(Path(g.__file__).parent.glob("*.py")):
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.Import):
+                roots |= {a.name for a in node.names}
+            elif isinstance(node, ast.ImportFrom):
+                assert node.level == 0, path
+                roots.add(node.module or "")
+    own = {r for r in roots if r.startswith(g.__name__ + ".")}
+    assert {r.split(".")[0] for r in roots - own} - {"__future__", "sympy"} <= set(
+        sys.stdlib_module_names
+    )
+    assert not any(r.split(".")[0] == "analysis" for r in roots - own)
 
 
 @pytest.mark.parametrize("key", sorted(g.EQUATIONS))
