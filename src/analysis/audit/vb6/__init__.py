@@ -1,0 +1,181 @@
+"""Run the GR-1 thesis's Visual Basic 6 listing as printed, with VB6 semantics.
+
+The thesis (``analysis.papers.gr1_thesis``, appendix "程序清单", pp. 36-46) computes Table 5-4
+with the event procedure ``Command1_Click`` and draws the cubic trajectories of section
+5.4 with ``Command3_Click``. This module executes that listing, not a cleaned-up copy, so
+that every printed number can be traced to the statement that produced it.
+
+Why a small interpreter of our own
+----------------------------------
+No maintained Python implementation of VB6 exists. The Rust crate ``vb6interpret`` is not
+Python; ``vb2py`` (last release 2020) translates VB to Python source but maps every VB
+number onto a Python float or int, so it cannot show the effects this audit is about
+(``Dim a, b As Single`` declaring only ``b``, float32 rounding of Singles, Integer
+division giving Single, Variant String arithmetic). Adding either would also add a
+dependency. The listing uses a small subset of the language, so this module implements
+exactly that subset (about 40 statements and functions) and refuses anything else with
+:class:`VB6SyntaxError`.
+
+Semantics modelled (each has a test in ``tests/audit/test_vb6.py``)
+-------------------------------------------------------------------
+- ``Dim a, b, c As Single`` declares only ``c`` as Single; ``a`` and ``b`` are Variant
+  (Empty until assigned). Undeclared names are implicit local Variants (no
+  ``Option Explicit`` in the listing).
+- Values carry their VB type: Integer (16 bit), Long (32 bit), Single (IEEE float32),
+  Double, String, Boolean, Empty. Assignment to a typed variable converts: Single rounds
+  to float32, Integer/Long round half to even and raise error 6 (Overflow) out of range,
+  a String that is not numeric raises error 13 (Type mismatch).
+- ``+ - *``: the result has the type of the more precise operand (Integer < Long <
+  Single < Double), Single with Long gives Double; a Variant result that overflows is
+  promoted (Integer -> Long -> Double), a typed one raises error 6. ``/`` gives Double,
+  or Single when both operands are Integer/Single, as the VB6 reference's "/ Operator"
+  page states (some VBA write-ups report Double for Integer / Integer; in the listing
+  only ``Command3_Click``'s ``3 / (c * c)`` and ``2 / (c * c * c)`` are affected, by
+  less than 1e-4 deg, and Table 5-4 not at all); ``x/0`` raises error 11, ``0/0``
+  error 6. A Variant String in ``-``, ``*``, ``/`` is converted to Double; in ``+`` a
+  Variant String and a Variant number are added, two Strings are concatenated.
+- ``Sin``, ``Cos``, ``Tan`` take radians, ``Atn`` takes one argument and returns radians
+  in (-pi/2, pi/2); ``Sqr`` of a negative number raises error 5; ``Abs``, ``Fix``,
+  ``Int`` keep their argument's type; ``Val`` reads the leading number of a string,
+  ignoring blanks, and returns Double; ``Format(x, "####.###")`` rounds half away from
+  zero after reducing ``x`` to 15 significant digits (VB's Double-to-text conversion) and
+  shows nothing for zeros a ``#`` does not need (``0.5`` -> ``".5"``, ``0`` -> ``"."``).
+- Controls: ``TextN`` (TextBox, default property ``Text``), ``CommandN`` (CommandButton,
+  default property ``Value``, so ``Command3 = False`` sets ``Command3.Value``, not
+  ``Enabled``), ``FrameN``, ``PictureN`` (PictureBox; ``Cls``, ``Scale``, ``Line``,
+  ``PSet``, ``Print`` and property writes are recorded, nothing is drawn).
+
+Not modelled (the listing does not use them): arrays, user functions, ``Select Case``,
+``Do`` loops, ``GoTo``, ``On Error``, Currency, Decimal, Date, Null.
+
+Two switches give counterfactual readings used by the audit (they are not VB6):
+``dim_types_all=True`` applies a Dim list's ``As`` type to every name in the list, and
+``trig_degrees=True`` makes ``Sin``/``Cos``/``Tan`` read their argument in degrees.
+
+Example (Table 5-3 start and end poses; printed Table 5-4 start theta1 is 56.828)::
+
+    >>> from analysis.audit.vb6 import run_command1
+    >>> out = run_command1({"Text1": "151", "Text2": "231", "Text3": "250", "Text4": "32",
+    ...                     "Text5": "45", "Text6": "60", "Text7": "200", "Text8": "300",
+    ...                     "Text9": "178", "Text10": "20", "Text11": "50", "Text12": "80"})
+    >>> out["text"]["Text13"], out["text"]["Text14"]
+    ('56.828', '-66.006')
+
+The interpreter is split by stage: :mod:`~analysis.audit.vb6.values` (types, conversions,
+operators), :mod:`~analysis.audit.vb6.functions` (built-ins), :mod:`~analysis.audit.vb6.lexer`,
+:mod:`~analysis.audit.vb6.parser` and :mod:`~analysis.audit.vb6.form` (the run-time); their
+public names are imported here.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+# ``X as X``: the interpreter's other public names, importable from here as before
+from analysis.audit.vb6.form import Control as Control
+from analysis.audit.vb6.form import VB6Form
+from analysis.audit.vb6.functions import vb_format, vb_val
+from analysis.audit.vb6.lexer import Token as Token
+from analysis.audit.vb6.lexer import tokenize as tokenize
+from analysis.audit.vb6.parser import Parser as Parser
+from analysis.audit.vb6.values import BOOLEAN as BOOLEAN
+from analysis.audit.vb6.values import DOUBLE as DOUBLE
+from analysis.audit.vb6.values import EMPTY as EMPTY
+from analysis.audit.vb6.values import EMPTY_VALUE as EMPTY_VALUE
+from analysis.audit.vb6.values import INTEGER as INTEGER
+from analysis.audit.vb6.values import LONG as LONG
+from analysis.audit.vb6.values import SINGLE as SINGLE
+from analysis.audit.vb6.values import STRING as STRING
+from analysis.audit.vb6.values import VARIANT as VARIANT
+from analysis.audit.vb6.values import Value, VB6Error, VB6SyntaxError
+from analysis.audit.vb6.values import binary as binary
+from analysis.audit.vb6.values import coerce as coerce
+from analysis.audit.vb6.values import to_number as to_number
+from analysis.audit.vb6.values import to_string as to_string
+from analysis.audit.vb6.values import truthy as truthy
+from analysis.audit.vb6.values import unary_minus as unary_minus
+from analysis.papers import gr1_thesis
+
+__all__ = [
+    "LISTING_REPAIRS",
+    "VB6Error",
+    "VB6Form",
+    "VB6SyntaxError",
+    "Value",
+    "listing",
+    "run",
+    "run_command1",
+    "vb_format",
+    "vb_val",
+]
+
+# --------------------------------------------------------------------------- the listing
+
+LISTING_REPAIRS: list[dict[str, str]] = [
+    {
+        "location": "appendix 程序清单 p. 37, Command1_Click, the cf3 statement",
+        "printed": "Py1 * Sin(θf1) Cos(θf234) * a4",
+        "repaired": "Py1 * Sin(θf1) - Cos(θf234) * a4",
+        "why": (
+            "as printed the statement is a VB6 syntax error (two operands with no operator), "
+            "so the form would not compile; the same statement for the start pose (c3) has "
+            "'- Cos(θ234) * a4' at this place, and with '-' the listing reproduces the printed "
+            "Table 5-4 end-pose theta3 = -45.244 (tests/audit/test_vb6.py)"
+        ),
+    }
+]
+"""The one edit needed to run the printed listing; everything else runs as printed."""
+
+
+def listing(*, repaired: bool = True) -> str:
+    """The thesis's VB6 listing (``gr1_thesis.LISTING``), with :data:`LISTING_REPAIRS`
+    applied when ``repaired`` (the default; as printed it does not compile)."""
+    src = gr1_thesis.LISTING
+    if repaired:
+        for rep in LISTING_REPAIRS:
+            if src.count(rep["printed"]) != 1:
+                raise ValueError(f"repair target {rep['printed']!r} not found exactly once")
+            src = src.replace(rep["printed"], rep["repaired"])
+    return src
+
+
+def run(
+    source: str,
+    sub: str,
+    inputs: dict[str, Any] | None = None,
+    *,
+    form: VB6Form | None = None,
+    **options: bool,
+) -> dict[str, Any]:
+    """Run event procedure ``sub`` of ``source`` after typing ``inputs`` into TextBoxes.
+
+    Returns ``{"locals", "module", "text", "writes", "controls", "form"}``: the
+    procedure's local variables and the module variables as ``{name: Value}``, every
+    TextBox's Text, the ordered property writes ``(control, property, value)``, each
+    control's properties and log, and the :class:`VB6Form` (pass it back as ``form`` to
+    run another procedure on the same state, e.g. ``Command3_Click`` after
+    ``Command1_Click``). ``options`` are :class:`VB6Form`'s switches.
+    """
+    form = form or VB6Form(source, **options)
+    n_writes = len(form.writes)
+    form.set_text(inputs or {})
+    locals_ = form.call(sub)
+    return {
+        "locals": locals_,
+        "module": {v[0]: v[2] for v in form.module_vars.values()},
+        "text": form.text(),
+        "writes": form.writes[n_writes:],
+        "controls": {
+            c.name: {"props": dict(c.props), "log": c.log} for c in form.controls.values()
+        },
+        "form": form,
+    }
+
+
+def run_command1(inputs: dict[str, Any], **options: bool) -> dict[str, Any]:
+    """Run ``Command1_Click`` (the "计算" button) of the repaired listing on ``inputs``.
+
+    ``inputs`` maps ``Text1`` ... ``Text12`` (start px, py, pz, alpha, beta, gamma, then the
+    end pose, the order of Table 5-3) to what is typed. Returns :func:`run`'s dict.
+    """
+    return run(listing(), "Command1_Click", inputs, **options)
