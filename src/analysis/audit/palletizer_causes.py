@@ -31,6 +31,7 @@ import sympy as sp
 
 from analysis.audit import palletizer_causes_claims, palletizer_causes_ik
 from analysis.audit import palletizer_checks as chk
+from analysis.audit.palletizer_derivations import is_zero as _zero
 from analysis.audit.palletizer_formulas import ATOL, S
 from analysis.audit.palletizer_formulas import all_fail as _all_fail
 from analysis.audit.palletizer_formulas import findings_by_id as _found
@@ -64,7 +65,7 @@ def _eq11() -> list[Cause]:
 
         def ok(text: str, k=k) -> bool:
             e = _parse(text)
-            return e is not None and chk._zero(e - derived[k])
+            return e is not None and _zero(e - derived[k])
 
         ms.append(
             Manifestation(
@@ -140,7 +141,7 @@ def _eq8() -> Cause:
             return False
         for (i, j), c in zip(_EQ8_CELLS, cells, strict=True):
             e = _parse(c)
-            if e is None or not chk._zero(e - craig[i, j]):
+            if e is None or not _zero(e - craig[i, j]):
                 return False
         return True
 
