@@ -8,7 +8,8 @@
 == 0`` for symbolic items, a numeric counterexample (or its absence over seeded samples) for
 formulas with inverse trigonometric functions, recomputation for tables, evaluation for STL.
 ``data/errata/grabber_items.csv`` lists them all (items that hold too); the wrong ones are
-grouped into root causes by :mod:`analysis.audit.grabber_causes`.
+grouped into root causes by :mod:`analysis.audit.grabber_causes`, with the builders here
+(:func:`from_item`, :func:`make_cause`).
 """
 
 from __future__ import annotations
@@ -21,6 +22,7 @@ import sympy as sp
 from analysis.audit.grabber_checks import all_items
 from analysis.audit.grabber_items import KINDS, PXYZ, Item
 from analysis.audit.grabber_items import S as S
+from analysis.audit.schema import Cause, Manifestation
 from analysis.kinematics.params import paper_params
 
 __all__ = [
@@ -158,3 +160,39 @@ def audit_table() -> list[dict[str, str]]:
         }
         for it in audit()
     ]
+
+
+# ---------------------------------------------------------------------------------------------
+# building causes from the wrong items (analysis.audit.grabber_causes)
+# ---------------------------------------------------------------------------------------------
+def from_item(cause: str, slug: str, item_id: str, **override) -> Manifestation:
+    """Manifestation ``<cause>/<slug>`` of the wrong item ``item_id`` (its location, printed
+    and corrected text, evidence and check; ``override`` replaces any of the first four)."""
+    it = item(item_id)
+    if it.verdict != "wrong":
+        raise ValueError(f"{item_id} holds; it is no manifestation of {cause}")
+    return Manifestation(
+        f"{cause}/{slug}",
+        override.get("location", it.location),
+        override.get("printed", it.printed),
+        override.get("corrected", it.corrected),
+        override.get("evidence", it.evidence),
+        it.verify,
+        item_id,
+    )
+
+
+def all_fail(ms) -> bool:
+    """The printed texts fail and the corrections pass every manifestation's check."""
+    return all(not m.verify(m.printed) and m.verify(m.corrected) for m in ms)
+
+
+def make_cause(cid, title, status, kind, evidence, ms, demo=None) -> Cause:
+    """A :class:`Cause` whose demonstration is ``demo`` or, by default, :func:`all_fail`."""
+    ms = tuple(ms)
+    return Cause(cid, title, status, kind, evidence, ms, demo or (lambda: all_fail(ms)))
+
+
+def single_cause(cid, title, status, kind, evidence, slug, item_id) -> Cause:
+    """A cause with one manifestation, the wrong item ``item_id``."""
+    return make_cause(cid, title, status, kind, evidence, [from_item(cid, slug, item_id)])
