@@ -18,11 +18,13 @@ Runs
 from __future__ import annotations
 
 import math
+from functools import cache
 
 import numpy as np
 import numpy.typing as npt
 
 from analysis.audit.findings import Finding
+from analysis.audit.schema import Cause
 from analysis.kinematics import picker as pk
 from analysis.papers import picker as paper
 
@@ -37,6 +39,8 @@ __all__ = [
 
 PLAUSIBLE_READINGS = ("value, deg", "velocity, deg/s")
 MAX_ERR = paper.EXPERIMENT["max_abs_error_mm"]
+TIMES = tuple(paper.EXPERIMENT["times"])
+"""The sampling times of the experiment (sec. 4) [s]."""
 
 
 def reading_summary(t: npt.ArrayLike = paper.EXPERIMENT["times"]) -> dict[str, dict]:
@@ -125,14 +129,12 @@ def planar_mobility(links: int, one_dof_joints: int) -> int:
     return 3 * (links - 1) - 2 * one_dof_joints
 
 
-def findings(picker: pk.Picker | None = None) -> list[Finding]:
-    """Every checked item of seed 002 (wrong ones with a correction), from the runs above."""
-    picker = picker if picker is not None else pk.load_picker()
+def _unit_findings(rep: dict) -> list[Finding]:
+    """Sec. 4's joint laws under each reading of their units (``rep``: the replayed experiment)."""
     rs = reading_summary()
     out: list[Finding] = []
     v, r = rs["velocity, rad/s"], rs["value, rad"]
     d, dv = rs["value, deg"], rs["velocity, deg/s"]
-    rep = pk.replay_experiment(picker=picker)
     out.append(
         Finding(
             "pick-units-omega",
@@ -154,6 +156,12 @@ def findings(picker: pk.Picker | None = None) -> list[Finding]:
             "disagree (angular velocity vs joint values), and no initial pose is printed.",
         )
     )
+    return out
+
+
+def _text_findings() -> list[Finding]:
+    """Secs. 3.3-3.4 and the abstract: cross-references, chain labels, the 'random' samples."""
+    out: list[Finding] = []
     out.append(
         Finding(
             "pick-xref-eq18",
@@ -216,6 +224,12 @@ def findings(picker: pk.Picker | None = None) -> list[Finding]:
             "along that one path.",
         )
     )
+    return out
+
+
+def _opening_findings(picker: pk.Picker, rep: dict) -> list[Finding]:
+    """The 10.4 mm against the 200 mm opening (abstract, sec. 4, conclusion 3)."""
+    out: list[Finding] = []
     errs = {name: mutation_errors(picker, name) for name in PLAUSIBLE_READINGS}
     hidden = {name: sorted(k for k, e in m.items() if e <= MAX_ERR) for name, m in errs.items()}
     mis = {name: math.degrees(misalignment_for(picker, name)) for name in PLAUSIBLE_READINGS}
@@ -249,6 +263,12 @@ def findings(picker: pk.Picker | None = None) -> list[Finding]:
             "themselves) is lost.",
         )
     )
+    return out
+
+
+def _claim_findings() -> list[Finding]:
+    """Secs. 1.1, 3.2 and Table 2: solvability, R3 as a group, the lost measurements."""
+    out: list[Finding] = []
     # mobility of the two chains as listed
     m_listed = planar_mobility(links=1 + 8, one_dof_joints=2 + 7)
     m_full = planar_mobility(links=1 + 10, one_dof_joints=14)
@@ -294,6 +314,12 @@ def findings(picker: pk.Picker | None = None) -> list[Finding]:
             "undecidable",
         )
     )
+    return out
+
+
+def _holding_findings() -> list[Finding]:
+    """The topology (secs. 2, 3.2, 4) and the equation numbers that hold."""
+    out: list[Finding] = []
     out.append(
         Finding(
             "pick-topology",
@@ -321,3 +347,69 @@ def findings(picker: pk.Picker | None = None) -> list[Finding]:
         )
     )
     return out
+
+
+def findings(picker: pk.Picker | None = None) -> list[Finding]:
+    """Every checked item of seed 002 (wrong ones with a correction), from the runs above."""
+    picker = picker if picker is not None else pk.load_picker()
+    rep = pk.replay_experiment(picker=picker)
+    return [
+        *_unit_findings(rep),
+        *_text_findings(),
+        *_opening_findings(picker, rep),
+        *_claim_findings(),
+        *_holding_findings(),
+    ]
+
+
+# ---------------------------------------------------------------------------------------------
+# building the register's causes (analysis.audit.picker_causes)
+# ---------------------------------------------------------------------------------------------
+def safe(fn):
+    """A verify predicate that answers False instead of raising on a malformed text."""
+
+    def wrapped(text: str) -> bool:
+        try:
+            return bool(fn(text))
+        except Exception:  # a text the predicate cannot read is not a right text
+            return False
+
+    return wrapped
+
+
+def all_fail(ms) -> bool:
+    """The printed texts fail and the corrections pass every manifestation's check."""
+    return all(not m.verify(m.printed) and m.verify(m.corrected) for m in ms)
+
+
+def make_cause(cid, title, status, kind, evidence, ms, demo=None) -> Cause:
+    """A :class:`Cause` whose demonstration is ``demo`` or, by default, :func:`all_fail`."""
+    ms = tuple(ms)
+    return Cause(cid, title, status, kind, evidence, ms, demo or (lambda: all_fail(ms)))
+
+
+@cache
+def default_picker() -> pk.Picker:
+    """The reconstruction of ``data/arms/picker.toml`` (every dimension assumed)."""
+    return pk.load_picker()
+
+
+@cache
+def findings_by_id() -> dict:
+    """:func:`findings` of :func:`default_picker`, by id."""
+    return {f.id: f for f in findings(default_picker())}
+
+
+def assumed_dimensions() -> str:
+    """The phrase naming the assumed dimensions, for evidence texts."""
+    return "assumed dimensions of data/arms/picker.toml: " + ", ".join(
+        default_picker().params.assumed()
+    )
+
+
+def equation_display(n: int | None) -> str:
+    """What display ``n`` holds by the lead-in count of
+    :data:`analysis.papers.picker.EQUATION_NUMBERS` ("" outside it)."""
+    if n is None or not 1 <= n <= len(paper.EQUATION_NUMBERS):
+        return ""
+    return paper.EQUATION_NUMBERS[n - 1]["holds"]
