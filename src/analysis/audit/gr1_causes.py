@@ -99,7 +99,8 @@ def _trig_degrees() -> Cause:
     )
 
 
-def _atan() -> Cause:
+def _atan_equations() -> list[Manifestation]:
+    """Section 4.2's theta1, theta5, theta234, theta3 and theta2 by a single-argument arctan."""
     eqs = []
     for key, slug, corrected in (
         ("4.2-theta1", "eq-theta1", "theta1 = atan2(py, px)"),
@@ -141,6 +142,11 @@ def _atan() -> Cause:
             lambda t: chk.equation_holds(t, angle=True),
         )
     )
+    return eqs
+
+
+def _atan_listing() -> list[Manifestation]:
+    """The listing's Atn statements for theta1, theta5, theta3, theta2 and theta234."""
     listing = []
     for prefix, slug, q in (
         ("θ1 = ", "listing-theta1", W_T1),
@@ -185,7 +191,11 @@ def _atan() -> Cause:
             _gives(W_T234, t234),
         )
     )
-    ms = [*eqs, *listing]
+    return listing
+
+
+def _atan() -> Cause:
+    ms = [*_atan_equations(), *_atan_listing()]
 
     def demo() -> bool:
         # Table 5-4's theta3 and theta5 cells are atan's branch of the listing's values
@@ -405,41 +415,48 @@ def _check_result(block: str, start, end) -> tuple[bool, bool]:
     return bool(props["Enabled"].value), bool(props["Value"].value)
 
 
+def _default_property_ok(text: str) -> bool:
+    """verify: the statement in place of 'Command3 = False' greys the button for poses
+    1006 mm apart (sec. 6.3)."""
+    src = vb6.listing().replace("\nCommand3 = False\n", f"\n{text}\n")
+    far = dict(chk.table5_3_inputs(), Text7="1100", Text8="0")  # 1006 mm horizontally
+    try:
+        out = vb6.run(src, "Command1_Click", far)
+    except (vb6.VB6Error, vb6.VB6SyntaxError):
+        return False
+    return out["controls"]["Command3"]["props"]["Enabled"].value is False
+
+
+def _reach_check_ok(text: str) -> bool:
+    """verify: the check block accepts and rejects pose pairs by reach, not by their distance
+    (sec. 6.4)."""
+    # (expected Enabled) for pairs: reachable 900 mm apart; unreachable at one spot;
+    # reachable 700 mm apart vertically
+    cases = [
+        (((450.0, 0.0, 100.0), (-450.0, 0.0, 100.0)), True),
+        (((600.0, 10.0, 0.0), (600.0, 10.0, 0.0)), False),
+        (((100.0, 0.0, 350.0), (100.0, 0.0, -350.0)), True),
+    ]
+    try:
+        return all(_check_result(text, *pair)[0] == ok for pair, ok in cases)
+    except (vb6.VB6Error, vb6.VB6SyntaxError):
+        return False
+
+
+def _work_area_ok(text: str) -> bool:
+    """verify: the check block holds sec. 2.1's 600 mm horizontally and 850 mm vertically."""
+    # sec. 2.1: 600 mm horizontally, 850 mm vertically: a 700 mm horizontal move is
+    # beyond it, a 700 mm vertical one within (the check 'fires': Enabled or Value off)
+    try:
+        wide = _check_result(text, (350.0, 0.0, 0.0), (-350.0, 0.0, 0.0))
+        tall = _check_result(text, (100.0, 0.0, 350.0), (100.0, 0.0, -350.0))
+    except (vb6.VB6Error, vb6.VB6SyntaxError):
+        return False
+    return not all(wide) and all(tall)
+
+
 def _gui_check() -> Cause:
     printed_block = "\n".join(_CHECK_LINES)
-
-    def default_property(text: str) -> bool:
-        src = vb6.listing().replace("\nCommand3 = False\n", f"\n{text}\n")
-        far = dict(chk.table5_3_inputs(), Text7="1100", Text8="0")  # 1006 mm horizontally
-        try:
-            out = vb6.run(src, "Command1_Click", far)
-        except (vb6.VB6Error, vb6.VB6SyntaxError):
-            return False
-        return out["controls"]["Command3"]["props"]["Enabled"].value is False
-
-    def reach_check(text: str) -> bool:
-        # (expected Enabled) for pairs: reachable 900 mm apart; unreachable at one spot;
-        # reachable 700 mm apart vertically
-        cases = [
-            (((450.0, 0.0, 100.0), (-450.0, 0.0, 100.0)), True),
-            (((600.0, 10.0, 0.0), (600.0, 10.0, 0.0)), False),
-            (((100.0, 0.0, 350.0), (100.0, 0.0, -350.0)), True),
-        ]
-        try:
-            return all(_check_result(text, *pair)[0] == ok for pair, ok in cases)
-        except (vb6.VB6Error, vb6.VB6SyntaxError):
-            return False
-
-    def work_area(text: str) -> bool:
-        # sec. 2.1: 600 mm horizontally, 850 mm vertically: a 700 mm horizontal move is
-        # beyond it, a 700 mm vertical one within (the check 'fires': Enabled or Value off)
-        try:
-            wide = _check_result(text, (350.0, 0.0, 0.0), (-350.0, 0.0, 0.0))
-            tall = _check_result(text, (100.0, 0.0, 350.0), (100.0, 0.0, -350.0))
-        except (vb6.VB6Error, vb6.VB6SyntaxError):
-            return False
-        return not all(wide) and all(tall)
-
     reach = study.gr1_arm().geometry["reach_tool"]
     corrected_reach = "\n".join(
         [
@@ -459,7 +476,7 @@ def _gui_check() -> Cause:
             "A CommandButton's default property is Value, not Enabled: 'Command3 = False' "
             "leaves the 轨迹规划 button enabled; for poses 1006 mm apart horizontally it stays "
             "enabled, against sec. 6.3 ('呈现灰色').",
-            default_property,
+            _default_property_ok,
         ),
         Manifestation(
             "gr1-gui-check/start-vs-end",
@@ -472,7 +489,7 @@ def _gui_check() -> Cause:
             f"from the shoulder; the full test is the closed form's: reach per branch and the "
             f"orientation). Nor does the check stop anything: the joint values are computed "
             f"and shown whatever it says (sec. 6.4: only when the data meet the requirements).",
-            reach_check,
+            _reach_check_ok,
         ),
         Manifestation(
             "gr1-gui-check/swapped",
@@ -482,7 +499,7 @@ def _gui_check() -> Cause:
             "Section 2.1 prints 850 mm vertically and 600 mm horizontally; the check compares "
             "the horizontal distance with 850 and the vertical one with 600: a 700 mm "
             "horizontal move passes, a 700 mm vertical one is rejected.",
-            work_area,
+            _work_area_ok,
         ),
     ]
     return _cause(

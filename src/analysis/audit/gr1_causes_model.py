@@ -274,7 +274,9 @@ def _no_dh_table() -> Cause:
     )
 
 
-def _extraction() -> list[Cause]:
+def _x_table5_4() -> Cause:
+    """Table 5-4 (sec. 5.4.2) as extracted: the ten numbers against the listing's cells."""
+
     def cells_from(text: str):
         if "start" in text and "end" in text:
             part = text.split("end")
@@ -305,6 +307,19 @@ def _extraction() -> list[Cause]:
         "cell for cell.",
         reproduces,
     )
+    return _cause(
+        "gr1-x-table5-4",
+        "The extraction scrambles Table 5-4: header order θ1 θ2 θ4 θ3 θ5, the ten numbers "
+        "after the next paragraph.",
+        "extraction",
+        "extraction",
+        "gr1_thesis.TABLE5_4 ('basis', 'uncertainty').",
+        [t54],
+    )
+
+
+def _x_table5_3() -> Cause:
+    """Table 5-3's lost angle headers (sec. 5.4.2)."""
     names = list(paper.TABLE5_3["columns"])
 
     def header_ok(text: str) -> bool:
@@ -326,6 +341,18 @@ def _extraction() -> list[Cause]:
         "listing's input order (px, py, pz, α, β, γ) Table 5-3 gives Table 5-4 exactly.",
         header_ok,
     )
+    return _cause(
+        "gr1-x-table5-3",
+        "The extraction loses Table 5-3's angle headers.",
+        "extraction",
+        "extraction",
+        "gr1_thesis.TABLE5_3 (note).",
+        [t53],
+    )
+
+
+def _x_listing() -> Cause:
+    """The appendix listing's joined lines (pp. 36-46)."""
 
     def parses(text: str) -> bool:
         try:
@@ -343,6 +370,18 @@ def _extraction() -> list[Cause]:
         "(gr1_thesis.LISTING_RESTORATIONS); joined, the statements do not parse.",
         parses,
     )
+    return _cause(
+        "gr1-x-listing",
+        "The extraction joins the listing's lines and inserts page numbers.",
+        "extraction",
+        "extraction",
+        "Restored in gr1_thesis.LISTING.",
+        [lines],
+    )
+
+
+def _x_symbols() -> Cause:
+    """Chapter 3's Greek letters and operators lost (eqs. 3.17, 3.18a)."""
     e317, e318 = paper.EQUATIONS["3.17"], paper.EQUATIONS["3.18a"]
     symbols = [
         Manifestation(
@@ -362,99 +401,88 @@ def _extraction() -> list[Cause]:
             lambda t: chk.equation_holds(t, angle=True),
         ),
     ]
-    return [
-        _cause(
-            "gr1-x-table5-4",
-            "The extraction scrambles Table 5-4: header order θ1 θ2 θ4 θ3 θ5, the ten numbers "
-            "after the next paragraph.",
-            "extraction",
-            "extraction",
-            "gr1_thesis.TABLE5_4 ('basis', 'uncertainty').",
-            [t54],
-        ),
-        _cause(
-            "gr1-x-table5-3",
-            "The extraction loses Table 5-3's angle headers.",
-            "extraction",
-            "extraction",
-            "gr1_thesis.TABLE5_3 (note).",
-            [t53],
-        ),
-        _cause(
-            "gr1-x-listing",
-            "The extraction joins the listing's lines and inserts page numbers.",
-            "extraction",
-            "extraction",
-            "Restored in gr1_thesis.LISTING.",
-            [lines],
-        ),
-        _cause(
-            "gr1-x-symbols",
-            "The extraction turns chapter 3's Greek letters and operators into '?'.",
-            "extraction",
-            "extraction",
-            "The readings in gr1_thesis.EQUATIONS and MATRICES hold where marked.",
-            symbols,
-        ),
-    ]
+    return _cause(
+        "gr1-x-symbols",
+        "The extraction turns chapter 3's Greek letters and operators into '?'.",
+        "extraction",
+        "extraction",
+        "The readings in gr1_thesis.EQUATIONS and MATRICES hold where marked.",
+        symbols,
+    )
+
+
+def _extraction() -> list[Cause]:
+    """What the extraction damaged: Tables 5-4 and 5-3, the listing, chapter 3's symbols."""
+    return [_x_table5_4(), _x_table5_3(), _x_listing(), _x_symbols()]
 
 
 # ---------------------------------------------------------------------------------------------
 # what holds
 # ---------------------------------------------------------------------------------------------
-def _holds() -> list[Cause]:
+def _ch3_holds() -> bool:
+    """Chapter 3: eq. 3.15 is Rot(z) Rot(y) Rot(x) (eq. 3.14), eq. 3.19 is Rz Tz Tx Rx,
+    eqs. 3.17 and 3.18a return the pitch."""
     s = paper.SYMBOLS
+    rx = paper.matrix("3.5").subs(s["theta"], s["psi"])
+    rz = paper.matrix("3.7").subs(s["theta"], s["phi"])
+    eq315 = sp.simplify(rz * paper.matrix("3.6") * rx - paper.matrix("3.15")[:3, :3])
+    th, d, a, al = s["theta_i"], s["d_i"], s["a_i"], s["alpha_i"]
+    Rz = sp.Matrix(sp.BlockDiagMatrix(sp.rot_axis3(-th), sp.eye(1)))
+    Rx = sp.Matrix(sp.BlockDiagMatrix(sp.rot_axis1(-al), sp.eye(1)))
+    Tz, Tx = sp.eye(4), sp.eye(4)
+    Tz[2, 3], Tx[0, 3] = d, a
+    eq319 = sp.simplify(Rz * Tz * Tx * Rx - paper.matrix("3.19"))
+    e317, e318 = paper.EQUATIONS["3.17"], paper.EQUATIONS["3.18a"]
+    return (
+        eq315 == sp.zeros(3, 3)
+        and eq319 == sp.zeros(4, 4)
+        and chk.equation_holds(f"{e317['lhs']} = {e317['rhs']}")
+        and chk.equation_holds(f"{e318['lhs']} = {e318['rhs']}", angle=True)
+    )
 
-    def ch3() -> bool:
-        rx = paper.matrix("3.5").subs(s["theta"], s["psi"])
-        rz = paper.matrix("3.7").subs(s["theta"], s["phi"])
-        eq315 = sp.simplify(rz * paper.matrix("3.6") * rx - paper.matrix("3.15")[:3, :3])
-        th, d, a, al = s["theta_i"], s["d_i"], s["a_i"], s["alpha_i"]
-        Rz = sp.Matrix(sp.BlockDiagMatrix(sp.rot_axis3(-th), sp.eye(1)))
-        Rx = sp.Matrix(sp.BlockDiagMatrix(sp.rot_axis1(-al), sp.eye(1)))
-        Tz, Tx = sp.eye(4), sp.eye(4)
-        Tz[2, 3], Tx[0, 3] = d, a
-        eq319 = sp.simplify(Rz * Tz * Tx * Rx - paper.matrix("3.19"))
-        e317, e318 = paper.EQUATIONS["3.17"], paper.EQUATIONS["3.18a"]
-        return (
-            eq315 == sp.zeros(3, 3)
-            and eq319 == sp.zeros(4, 4)
-            and chk.equation_holds(f"{e317['lhs']} = {e317['rhs']}")
-            and chk.equation_holds(f"{e318['lhs']} = {e318['rhs']}", angle=True)
-        )
 
-    def sec42() -> bool:
-        E = paper.EQUATIONS
-        keys = ("4.2-c3", "4.2-s2", "4.2-c2")
-        ok = [chk.equation_holds(f"{E[k]['lhs']} = {E[k]['rhs']}") for k in keys]
-        ok.append(chk.equation_holds("theta4 = theta234 - theta2 - theta3", angle=True))
-        # the tangents hold (the quadrants do not: gr1-atan)
-        t5 = "(sin(theta1)*n_x - cos(theta1)*n_y)/(sin(theta1)*o_x - cos(theta1)*o_y)"
-        ok.append(chk.equation_holds(f"sin(theta5)/cos(theta5) = {t5}", atol=1e-6))
-        t234 = "o_z/(cos(theta1)*o_x + sin(theta1)*o_y)"
-        ok.append(chk.equation_holds(f"sin(theta234)/cos(theta234) = {t234}", atol=1e-6))
-        return all(ok)
+def _sec42_holds() -> bool:
+    """Section 4.2's c3, s2, c2, theta4 and the tangents of theta5 and theta234."""
+    E = paper.EQUATIONS
+    keys = ("4.2-c3", "4.2-s2", "4.2-c2")
+    ok = [chk.equation_holds(f"{E[k]['lhs']} = {E[k]['rhs']}") for k in keys]
+    ok.append(chk.equation_holds("theta4 = theta234 - theta2 - theta3", angle=True))
+    # the tangents hold (the quadrants do not: gr1-atan)
+    t5 = "(sin(theta1)*n_x - cos(theta1)*n_y)/(sin(theta1)*o_x - cos(theta1)*o_y)"
+    ok.append(chk.equation_holds(f"sin(theta5)/cos(theta5) = {t5}", atol=1e-6))
+    t234 = "o_z/(cos(theta1)*o_x + sin(theta1)*o_y)"
+    ok.append(chk.equation_holds(f"sin(theta234)/cos(theta234) = {t234}", atol=1e-6))
+    return all(ok)
 
-    def theta1_cells() -> bool:
-        rows = paper.TABLE5_3["rows"]
-        got = [vb6.vb_format(math.degrees(math.atan2(r[1], r[0])), "####.###")
-               for r in (rows["start"], rows["end"])]  # fmt: skip
-        want = [vb6.vb_format(paper.TABLE5_4["rows"][k][0], "####.###") for k in ("start", "end")]
-        return got == want
 
-    def c235() -> bool:
-        df = study.printed_presets().set_index("counter")
-        return int(df.loc["C235"].printed) == int(df.loc["C235"].as_pulses) == 4
+def _theta1_cells_holds() -> bool:
+    """Table 5-4's theta1 cells are atan2(py, px) of Table 5-3."""
+    rows = paper.TABLE5_3["rows"]
+    got = [vb6.vb_format(math.degrees(math.atan2(r[1], r[0])), "####.###")
+           for r in (rows["start"], rows["end"])]  # fmt: skip
+    want = [vb6.vb_format(paper.TABLE5_4["rows"][k][0], "####.###") for k in ("start", "end")]
+    return got == want
 
-    def cubic() -> bool:
-        c = paper.CUBIC_SYMBOLS
-        t, T, th0, thf = c["t"], c["t_f"], c["theta_0"], c["theta_f"]
-        f = paper.parse(paper.CUBIC["listing_form"]["reading"].split("=", 1)[1], "cubic")
-        d1 = sp.diff(f, t)
-        conds = [f.subs(t, 0) - th0, f.subs(t, T) - thf, d1.subs(t, 0), d1.subs(t, T)]
-        A = sp.Matrix([[1, 0, 0, 0], [0, 1, 0, 0], [1, T, T**2, T**3], [0, 1, 2 * T, 3 * T**2]])
-        return all(sp.simplify(x) == 0 for x in conds) and sp.simplify(A.det() - T**4) == 0
 
+def _c235_holds() -> bool:
+    """Table 2-3's C235 = 4 is the waist's change over its resolution."""
+    df = study.printed_presets().set_index("counter")
+    return int(df.loc["C235"].printed) == int(df.loc["C235"].as_pulses) == 4
+
+
+def _cubic_holds() -> bool:
+    """The cubic of eqs. 5.1-5.4 meets its four conditions, which determine it."""
+    c = paper.CUBIC_SYMBOLS
+    t, T, th0, thf = c["t"], c["t_f"], c["theta_0"], c["theta_f"]
+    f = paper.parse(paper.CUBIC["listing_form"]["reading"].split("=", 1)[1], "cubic")
+    d1 = sp.diff(f, t)
+    conds = [f.subs(t, 0) - th0, f.subs(t, T) - thf, d1.subs(t, 0), d1.subs(t, T)]
+    A = sp.Matrix([[1, 0, 0, 0], [0, 1, 0, 0], [1, T, T**2, T**3], [0, 1, 2 * T, 3 * T**2]])
+    return all(sp.simplify(x) == 0 for x in conds) and sp.simplify(A.det() - T**4) == 0
+
+
+def _holds() -> list[Cause]:
+    """What holds: chapter 3, section 4.2, Table 5-4's theta1, C235, the cubic."""
     return [
         Cause(
             "gr1-ch3-holds",
@@ -464,7 +492,7 @@ def _holds() -> list[Cause]:
             "reasoning",
             "SymPy (3.15, 3.19) and 200 seeded rotations (3.17, 3.18a).",
             (),
-            ch3,
+            _ch3_holds,
         ),
         Cause(
             "gr1-sec4-2-holds",
@@ -474,7 +502,7 @@ def _holds() -> list[Cause]:
             "reasoning",
             "200 seeded configurations; the quadrants are gr1-atan's.",
             (),
-            sec42,
+            _sec42_holds,
         ),
         Cause(
             "gr1-theta1-cells-hold",
@@ -483,7 +511,7 @@ def _holds() -> list[Cause]:
             "reasoning",
             "Both poses lie in the first quadrant, where Atn(py/px) is right.",
             (),
-            theta1_cells,
+            _theta1_cells_holds,
         ),
         Cause(
             "gr1-c235-holds",
@@ -492,7 +520,7 @@ def _holds() -> list[Cause]:
             "reasoning",
             "The one preset computed as the text says.",
             (),
-            c235,
+            _c235_holds,
         ),
         Cause(
             "gr1-cubic-holds",
@@ -502,7 +530,7 @@ def _holds() -> list[Cause]:
             "reasoning",
             "SymPy; the claim c5.4.1-unique holds.",
             (),
-            cubic,
+            _cubic_holds,
         ),
     ]
 
