@@ -287,87 +287,110 @@ def _git_commit() -> str | None:
     return run.stdout.strip() or None if run.returncode == 0 else None
 
 
-def build_report(
-    out: str | Path = "build/report",
-    notebooks: list[Path] | None = None,
-    *,
-    pdf: bool = True,
-    execute: bool = True,
-    figures: str | Path | None = None,
-) -> Path:
-    """Execute the notebooks and build the report site under ``out``; return its index.html.
+_Say = Callable[[str], None]
+"""A progress printer: one line with the seconds since the build started."""
 
-    ``pdf=False`` skips the printed ``report.pdf`` (it needs Debian's Chromium anyway).
-    ``execute=False`` builds from the notebooks' stored outputs and the figures a run of
-    them saved in ``figures`` (default ``build/figures``): what ``make test`` does after
-    nbval has re-executed every notebook, compared it with its stored outputs and saved its
-    figures, so the browser tests need not execute everything a second time.
-    A notebook that raises does not stop the build: its page shows the outputs up to the
-    failing cell and the error, the front page lists it, and :class:`NotebookFailed` is
-    raised once the site is written (so ``make report`` fails, with a site to look at).
-    """
+
+def _stored_notebooks(
+    paths: list[Path], dl_nb: Path, fig_dir: Path, figures: str | Path | None, say: _Say
+) -> list[tuple[Path, nbformat.NotebookNode, float]]:
+    """The notebooks with their stored outputs (``execute=False``), copied to the downloads
+    ``dl_nb``, and the figures a run of them saved in ``figures`` copied to ``fig_dir``."""
+    executed: list[tuple[Path, nbformat.NotebookNode, float]] = []
+    n = len(paths)
+    saved = Path(figures) if figures is not None else figure_dir()
+    for i, path in enumerate(paths, start=1):
+        say(f"notebook {i}/{n}: {path.name}: stored outputs (not executed)")
+        nb = nbformat.read(path, as_version=4)
+        nbformat.write(nb, dl_nb / path.name)
+        executed.append((path, nb, 0.0))
+        # the figures this notebook saves (not stale ones of notebooks since removed)
+        code = "\n".join(c.source for c in nb.cells if c.cell_type == "code")
+        for stem in re.findall(r"save_figure\(\s*\w+,\s*\"([^\"]+)\"", code):
+            for f in saved.glob(f"{stem}.*"):
+                if f.suffix in (".svg", ".png", ".json"):
+                    shutil.copyfile(f, fig_dir / f.name)
+    return executed
+
+
+def _execute_notebooks(
+    paths: list[Path], dl_nb: Path, failed: dict[str, str], say: _Say
+) -> list[tuple[Path, nbformat.NotebookNode, float]]:
+    """Execute every notebook (fresh kernel each) and copy it to the downloads ``dl_nb``;
+    a notebook that raises is recorded in ``failed`` (stem -> first line of the error)."""
+    executed: list[tuple[Path, nbformat.NotebookNode, float]] = []
+    n = len(paths)
+    for i, path in enumerate(paths, start=1):
+        say(f"notebook {i}/{n}: executing {path.name} ...")
+        t = time.perf_counter()
+        last = [t]
+
+        def beat(k: int, m: int, i=i, path=path, t=t, last=last) -> None:
+            now = time.perf_counter()
+            if now - last[0] >= 10:
+                last[0] = now
+                say(f"notebook {i}/{n}: {path.name} cell {k}/{m}, {now - t:.0f} s")
+
+        nb = nbformat.read(path, as_version=4)
+        try:
+            execute_notebook(path, on_cell=beat, into=nb)
+        except CellExecutionError as exc:
+            failed[path.stem] = _first_line_of_error(exc)
+        dt = time.perf_counter() - t
+        nbformat.write(nb, dl_nb / path.name)
+        executed.append((path, nb, dt))
+        if path.stem in failed:
+            say(f"notebook {i}/{n}: {path.name} FAILED after {dt:.1f} s: {failed[path.stem]}")
+        else:
+            say(f"notebook {i}/{n}: {path.name} done in {dt:.1f} s")
+    return executed
+
+
+def _intro(
+    executed: list[tuple[Path, nbformat.NotebookNode, float]],
+    titles: dict[str, str],
+    failed: dict[str, str],
+    *,
+    execute: bool,
+) -> str:
+    """The front page's opening paragraph: the paper, the commit, how the notebooks ran."""
+    n = len(executed)
+    commit = _git_commit()
+    total = sum(dt for _, _, dt in executed)
+    return (
+        "Li Feng, Zhang Xue-song, Yue Yun, Zhang Zhong-mei. *Research on self-navigation "
+        "system of material grabbing robot based on the inverse kinematics analysis.* Food & "
+        "Machinery, 2016. Every printed equation, table and PLC listing re-derived, "
+        "recomputed or executed. "
+        f"This site was built{f' from commit `{commit}`' if commit else ''}: "
+        + (
+            f"all {n} notebooks were executed for it ({total:.0f} s"
+            + (f"; {sum(k in titles for k in failed)} failed" if failed else "")
+            + ")"
+            if execute
+            else f"from the stored outputs of the {n} notebooks (re-executed and compared "
+            "by nbval in the same test run)"
+        )
+        + ", and the verdicts below recomputed."
+    )
+
+
+def _write_sources(
+    src: Path,
+    fig_dir: Path,
+    nb_dir: Path,
+    executed: list[tuple[Path, nbformat.NotebookNode, float]],
+    *,
+    execute: bool,
+    failed: dict[str, str],
+    say: _Say,
+) -> list:
+    """The site's sources under ``src``: the notebooks prepared as pages, the downloads, the
+    front page with its recomputed verdicts, the register, figures and downloads pages.
+    Returns the downloads (:class:`analysis.app.site_content.Download`)."""
     from analysis.app import site_content as site
     from analysis.app.frontpage import front_page_data
 
-    t0 = time.perf_counter()
-
-    def say(msg: str) -> None:
-        print(f"[{time.perf_counter() - t0:6.1f} s] {msg}", flush=True)
-
-    out = Path(out).resolve()
-    work = out.with_name(out.name + "-src")
-    _fresh_dir(out)
-    _fresh_dir(work)
-    src = work / "site"
-    fig_dir, nb_dir, dl_nb = src / "figures", src / "notebooks", src / "downloads" / "notebooks"
-    for d in (fig_dir, nb_dir, dl_nb):
-        d.mkdir(parents=True)
-    paths = [Path(p).resolve() for p in notebooks] if notebooks else notebook_paths()
-
-    # 1. execute every notebook (fresh kernel each); figures go to the staged figures/
-    executed: list[tuple[Path, nbformat.NotebookNode, float]] = []
-    failed: dict[str, str] = {}  # notebook stem (or "front page") -> what went wrong
-    n = len(paths)
-    if not execute:
-        saved = Path(figures) if figures is not None else figure_dir()
-        for i, path in enumerate(paths, start=1):
-            say(f"notebook {i}/{n}: {path.name}: stored outputs (not executed)")
-            nb = nbformat.read(path, as_version=4)
-            nbformat.write(nb, dl_nb / path.name)
-            executed.append((path, nb, 0.0))
-            # the figures this notebook saves (not stale ones of notebooks since removed)
-            code = "\n".join(c.source for c in nb.cells if c.cell_type == "code")
-            for stem in re.findall(r"save_figure\(\s*\w+,\s*\"([^\"]+)\"", code):
-                for f in saved.glob(f"{stem}.*"):
-                    if f.suffix in (".svg", ".png", ".json"):
-                        shutil.copyfile(f, fig_dir / f.name)
-    # kernels draw with the inline backend, as under nbval (make test), whatever the caller uses
-    with _env(ANALYSIS_FIGURE_DIR=str(fig_dir), MPLBACKEND=NB_BACKEND):
-        for i, path in enumerate(paths if execute else [], start=1):
-            say(f"notebook {i}/{n}: executing {path.name} ...")
-            t = time.perf_counter()
-            last = [t]
-
-            def beat(k: int, m: int, i=i, path=path, t=t, last=last) -> None:
-                now = time.perf_counter()
-                if now - last[0] >= 10:
-                    last[0] = now
-                    say(f"notebook {i}/{n}: {path.name} cell {k}/{m}, {now - t:.0f} s")
-
-            nb = nbformat.read(path, as_version=4)
-            try:
-                execute_notebook(path, on_cell=beat, into=nb)
-            except CellExecutionError as exc:
-                failed[path.stem] = _first_line_of_error(exc)
-            dt = time.perf_counter() - t
-            nbformat.write(nb, dl_nb / path.name)
-            executed.append((path, nb, dt))
-            if path.stem in failed:
-                say(f"notebook {i}/{n}: {path.name} FAILED after {dt:.1f} s: {failed[path.stem]}")
-            else:
-                say(f"notebook {i}/{n}: {path.name} done in {dt:.1f} s")
-
-    # 2. figures, notebooks prepared for the site, downloads, generated pages
     captions = site.figure_captions(fig_dir)
     missing = [s for s, c in captions.items() if not c]
     say(
@@ -399,24 +422,7 @@ def build_report(
         failed["front page"] = f"front_page_data() raised {type(exc).__name__}: {exc}"
         say(failed["front page"])
         sections = []
-    commit = _git_commit()
-    total = sum(dt for _, _, dt in executed)
-    intro = (
-        "Li Feng, Zhang Xue-song, Yue Yun, Zhang Zhong-mei. *Research on self-navigation "
-        "system of material grabbing robot based on the inverse kinematics analysis.* Food & "
-        "Machinery, 2016. Every printed equation, table and PLC listing re-derived, "
-        "recomputed or executed. "
-        f"This site was built{f' from commit `{commit}`' if commit else ''}: "
-        + (
-            f"all {n} notebooks were executed for it ({total:.0f} s"
-            + (f"; {sum(k in titles for k in failed)} failed" if failed else "")
-            + ")"
-            if execute
-            else f"from the stored outputs of the {n} notebooks (re-executed and compared "
-            "by nbval in the same test run)"
-        )
-        + ", and the verdicts below recomputed."
-    )
+    intro = _intro(executed, titles, failed, execute=execute)
     docs = [f"notebooks/{p.stem}" for p, _, _ in executed]
     toc = {"Notebooks": docs, "Report": ["register", "figures", "downloads"]}
     (src / "index.md").write_text(
@@ -426,6 +432,56 @@ def build_report(
     (src / "register.md").write_text(site.register_md(), encoding="utf-8")
     (src / "figures.md").write_text(site.figures_md(captions, homes, titles), encoding="utf-8")
     (src / "downloads.md").write_text(site.downloads_md(src, items), encoding="utf-8")
+    return items
+
+
+def build_report(
+    out: str | Path = "build/report",
+    notebooks: list[Path] | None = None,
+    *,
+    pdf: bool = True,
+    execute: bool = True,
+    figures: str | Path | None = None,
+) -> Path:
+    """Execute the notebooks and build the report site under ``out``; return its index.html.
+
+    ``pdf=False`` skips the printed ``report.pdf`` (it needs Debian's Chromium anyway).
+    ``execute=False`` builds from the notebooks' stored outputs and the figures a run of
+    them saved in ``figures`` (default ``build/figures``): what ``make test`` does after
+    nbval has re-executed every notebook, compared it with its stored outputs and saved its
+    figures, so the browser tests need not execute everything a second time.
+    A notebook that raises does not stop the build: its page shows the outputs up to the
+    failing cell and the error, the front page lists it, and :class:`NotebookFailed` is
+    raised once the site is written (so ``make report`` fails, with a site to look at).
+    """
+    from analysis.app import site_content as site
+
+    t0 = time.perf_counter()
+
+    def say(msg: str) -> None:
+        print(f"[{time.perf_counter() - t0:6.1f} s] {msg}", flush=True)
+
+    out = Path(out).resolve()
+    work = out.with_name(out.name + "-src")
+    _fresh_dir(out)
+    _fresh_dir(work)
+    src = work / "site"
+    fig_dir, nb_dir, dl_nb = src / "figures", src / "notebooks", src / "downloads" / "notebooks"
+    for d in (fig_dir, nb_dir, dl_nb):
+        d.mkdir(parents=True)
+    paths = [Path(p).resolve() for p in notebooks] if notebooks else notebook_paths()
+
+    # 1. execute every notebook (fresh kernel each); figures go to the staged figures/
+    failed: dict[str, str] = {}  # notebook stem (or "front page") -> what went wrong
+    if execute:
+        # kernels draw with the inline backend, as under nbval (make test), whatever the caller uses
+        with _env(ANALYSIS_FIGURE_DIR=str(fig_dir), MPLBACKEND=NB_BACKEND):
+            executed = _execute_notebooks(paths, dl_nb, failed, say)
+    else:
+        executed = _stored_notebooks(paths, dl_nb, fig_dir, figures, say)
+
+    # 2. figures, notebooks prepared for the site, downloads, generated pages
+    items = _write_sources(src, fig_dir, nb_dir, executed, execute=execute, failed=failed, say=say)
 
     # 3. the printed form: one page (singlehtml) printed by Chromium, then offered as download
     doctrees = work / "doctrees"
