@@ -1,11 +1,12 @@
 """What the report's front page says: the verdicts, as data (one function to adapt).
 
-:func:`front_page_data` is the only place that decides what the front page of the report
-site (``make report``, :mod:`analysis.app.report`) shows. It returns a list of
+:func:`front_page_data` (with the section builders it calls, one per section) is the only
+place that decides what the front page of the report site (``make report``,
+:mod:`analysis.app.report`) shows. It returns a list of
 :class:`Verdict` sections; :mod:`analysis.app.site_content` renders them in order, each with
 its counts, table, figures and a link to the page that holds the evidence. When the audit
 register changes shape (for example into root causes with their manifestations), change
-this function and nothing else: the renderer only knows :class:`Verdict`.
+these functions and nothing else: the renderer only knows :class:`Verdict`.
 
 Everything here is recomputed from ``data/`` and the package at build time (a few seconds);
 nothing is read from notebook outputs.
@@ -56,21 +57,10 @@ _LABEL = {  # status -> (singular, plural) for the count cards
 }
 
 
-def front_page_data() -> list[Verdict]:
-    """The front page's sections: audit counts, Table 4, the PLC proof, quantization."""
-    import numpy as np
-
-    from analysis.audit import grabber_audit, register, table4
+def _audit_verdict() -> Verdict:
+    """The errata register of seed 000: root causes, where they show, the item audit."""
+    from analysis.audit import grabber_audit, register
     from analysis.audit.schema import COUNTED
-    from analysis.kinematics.arm import paper_arm
-    from analysis.kinematics.pulses import angles_to_pulses
-    from analysis.plc.generate import generate
-    from analysis.plc.memmap import default_map
-    from analysis.plc.paper_listings import run_paper_listings
-    from analysis.plc.runner import AwlRunner
-    from analysis.plc.translate import translate_s7200
-    from analysis.plc.verify import compare, sweep_targets, table4_targets
-    from analysis.studies import quantization, workspace
 
     # --- the errata register: root causes and where they show ------------------------------
     reg = register.register("grabber")
@@ -88,7 +78,7 @@ def front_page_data() -> list[Verdict]:
         .agg(causes=("status", "size"), places=("places", "sum"))
         .sort_values(["causes", "places"], ascending=False)
     )
-    audit = Verdict(
+    return Verdict(
         title="What the audit found",
         verdict=(
             register.headline(reg)
@@ -107,12 +97,17 @@ def front_page_data() -> list[Verdict]:
         table=by_kind,
     )
 
+
+def _table4_verdict() -> Verdict:
+    """Table 4 recomputed row by row."""
+    from analysis.audit import table4
+
     # --- Table 4 -------------------------------------------------------------------------
     t4 = table4.report_table()
     holds = int((t4["verdict"] == "holds").sum())
     wrong = int((t4["verdict"] == "wrong").sum())
     other = len(t4) - holds - wrong
-    t4_verdict = Verdict(
+    return Verdict(
         title="Table 4, recomputed",
         verdict=(
             f"**{holds} of {len(t4)} rows hold, {wrong} are wrong**"
@@ -125,8 +120,18 @@ def front_page_data() -> list[Verdict]:
         figures=("03-table4-fk-error",),
     )
 
+
+def _plc_verdict(arm) -> Verdict:
+    """The generated programs on awlsim against Python, and the paper's Figures 3-4."""
+    from analysis.kinematics.pulses import angles_to_pulses
+    from analysis.plc.generate import generate
+    from analysis.plc.memmap import default_map
+    from analysis.plc.paper_listings import run_paper_listings
+    from analysis.plc.runner import AwlRunner
+    from analysis.plc.translate import translate_s7200
+    from analysis.plc.verify import compare, sweep_targets, table4_targets
+
     # --- the PLC program on awlsim ---------------------------------------------------------
-    arm = paper_arm()
     xyz = table4_targets()
     targets = pd.DataFrame(xyz, columns=["x_mm", "y_mm", "z_mm"])
     rows = []
@@ -154,7 +159,7 @@ def front_page_data() -> list[Verdict]:
     )
     row1_c1 = int(angles_to_pulses(arm.ik(xyz[0]), arm.params.pulses_per_rev)[0])
     n_sweep = len(sweep_targets(arm))
-    plc_verdict = Verdict(
+    return Verdict(
         title="The PLC program, executed",
         verdict=(
             "The generated S7-200 and S7-300 programs, executed on the awlsim simulator, "
@@ -174,11 +179,18 @@ def front_page_data() -> list[Verdict]:
         figures=("07-rounding-margin",),
     )
 
+
+def _quantization_verdict(arm) -> Verdict:
+    """Whole-pulse rounding at the gripper over the reachable shell (as notebook 06)."""
+    import numpy as np
+
+    from analysis.studies import quantization, workspace
+
     # --- quantization ----------------------------------------------------------------------
     p = workspace.sample_shell(arm, 1_000_000, np.random.default_rng(2016))  # as notebook 06
     err, _, reach = quantization.quantization_map(arm, p)
     s = quantization.error_stats(err, reach)
-    q_verdict = Verdict(
+    return Verdict(
         title="What 0.09° per pulse means at the gripper",
         verdict=(
             "Rounding the exact joint angles to whole pulses (4000 pulses/rev) moves the "
@@ -189,4 +201,13 @@ def front_page_data() -> list[Verdict]:
         evidence=(("notebooks/06_quantization", "06"),),
         figures=("06-error-distribution", "06-error-maps"),
     )
-    return [audit, t4_verdict, plc_verdict, q_verdict]
+
+
+def front_page_data() -> list[Verdict]:
+    """The front page's sections: audit counts, Table 4, the PLC proof, quantization."""
+    from analysis.kinematics.arm import paper_arm
+
+    audit = _audit_verdict()
+    t4_verdict = _table4_verdict()
+    arm = paper_arm()
+    return [audit, t4_verdict, _plc_verdict(arm), _quantization_verdict(arm)]
