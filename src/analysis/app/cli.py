@@ -330,16 +330,8 @@ def _cmd_report(args: argparse.Namespace) -> int:
     return 0
 
 
-def build_parser() -> argparse.ArgumentParser:
-    """The one parser of the command line."""
-    parser = _Parser(
-        prog=PROG,
-        description="Audit of published robot-kinematics papers: kinematics, errata, PLC code.",
-        epilog=EPILOG,
-        formatter_class=_Help,
-    )
-    sub = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
-
+def _add_fk(sub) -> None:
+    """``fk``: joint angles -> end point."""
     p = sub.add_parser(
         "fk",
         help="joint angles (deg) -> end point (mm)",
@@ -352,6 +344,9 @@ def build_parser() -> argparse.ArgumentParser:
     _common(p)
     p.set_defaults(func=_cmd_fk)
 
+
+def _add_ik(sub) -> None:
+    """``ik``: one target or a CSV of them -> joint angles and pulses."""
     p = sub.add_parser(
         "ik",
         help="target (mm) -> joint angles (deg) and pulses",
@@ -395,6 +390,9 @@ def build_parser() -> argparse.ArgumentParser:
     _common(p)
     p.set_defaults(func=_cmd_ik)
 
+
+def _add_stl(sub) -> None:
+    """``stl``: the PLC program and its memory map."""
     p = sub.add_parser(
         "stl",
         help="generate the PLC program (S7-200 STL or S7-300 AWL) and its memory map",
@@ -424,6 +422,9 @@ def build_parser() -> argparse.ArgumentParser:
     _common(p)
     p.set_defaults(func=_cmd_stl)
 
+
+def _add_errata(sub) -> None:
+    """``errata``: show, check or write the registers."""
     p = sub.add_parser(
         "errata",
         help="the errata registers: show, --check, --write",
@@ -439,6 +440,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--paper", help="only this paper (grabber, palletizer, picker, gr1)")
     p.set_defaults(func=_cmd_errata)
 
+
+def _add_arms(sub) -> None:
+    """``arms``: the arms and their parameters."""
     p = sub.add_parser(
         "arms",
         help="list the arms and their parameters",
@@ -448,6 +452,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--json", action="store_true", help="machine-readable output")
     p.set_defaults(func=_cmd_arms)
 
+
+def _add_report(sub) -> None:
+    """``report``: the report site."""
     p = sub.add_parser(
         "report",
         help="execute every notebook and build the report site",
@@ -457,6 +464,24 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--out", type=Path, default=Path("build/report"), help="output folder")
     p.add_argument("--notebooks", nargs="*", type=Path, help="only these notebooks")
     p.set_defaults(func=_cmd_report)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The one parser of the command line."""
+    parser = _Parser(
+        prog=PROG,
+        description="Audit of published robot-kinematics papers: kinematics, errata, PLC code.",
+        epilog=EPILOG,
+        formatter_class=_Help,
+    )
+    sub = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
+
+    _add_fk(sub)
+    _add_ik(sub)
+    _add_stl(sub)
+    _add_errata(sub)
+    _add_arms(sub)
+    _add_report(sub)
     return parser
 
 
