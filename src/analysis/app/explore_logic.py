@@ -1,0 +1,364 @@
+"""The plain logic of the explorer (:mod:`analysis.app.explore`, notebook ``09_explore``),
+tested without a kernel: the arms that load (:func:`available_arms`), a start target
+(:func:`default_target`, :func:`target_from_joints`), every IK branch of one target with its
+status, whole pulse counts (eqs. 20-22 for the paper's arm), the gripper error those pulses
+leave and the manipulability (:func:`pose_report`, :class:`PoseReport`), and the sentence the
+explorer shows (:func:`plain_message`). Nothing here is specific to one arm; every name is
+importable from :mod:`analysis.app.explore` too."""
+
+from __future__ import annotations
+
+import html
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+import pandas as pd
+
+from analysis.kinematics.arm import DEFAULT_TOL_MM, Arm, as_points, load_arm
+from analysis.kinematics.pulses import angles_to_pulses, pulses_to_angles
+from analysis.kinematics.status import STATUS_TEXT, Status
+from analysis.paths import data_dir
+
+POSITION_INPUTS = {"px": "x", "py": "y", "pz": "z"}
+"""Closed-form inputs that are coordinates of the target point [mm]; every other input of an
+arm (e.g. an orientation angle of a pose) is an angle [rad], shown in degrees."""
+MANIPULABILITY_UNIT = 1e6
+"""The table shows the manipulability in 10^6 mm^3/rad^3 (the paper's arm: ~3.7 at Table 4
+row 1, at most ~9.5 where the elbow is square)."""
+
+
+def num(value: float, decimals: int = 2) -> str:
+    """``value`` with ``decimals`` decimals, never "-0.00" (a negative zero prints as 0).
+
+    >>> num(-0.0001, 1), num(-0.05, 1), num(2.345, 2)
+    ('0.0', '-0.1', '2.35')
+    """
+    text = f"{value:.{decimals}f}"
+    return text[1:] if text.startswith("-") and float(text) == 0.0 else text
+
+
+def greek(name: str) -> str:
+    """``theta1`` -> ``θ1`` (joint names of the descriptions, for labels)."""
+    for word, letter in (("theta", "θ"), ("alpha", "α"), ("beta", "β"), ("gamma", "γ")):
+        if name.startswith(word):
+            return letter + name[len(word) :]
+    return name
+
+
+def available_arms() -> tuple[dict[str, str], dict[str, str]]:
+    """The arms described in ``data/arms/*.toml``: ``({name: title}, {name: why not})``.
+
+    The first dict holds every arm that :func:`~analysis.kinematics.arm.load_arm` builds
+    (description and closed form), in file-name order; the second the files that do not
+    load, with the error (e.g. a description that is not a D-H chain yet).
+    """
+    ok, skipped = {}, {}
+    for path in sorted((data_dir() / "arms").glob("*.toml")):
+        try:
+            ok[path.stem] = load_arm(path.stem).description.title
+        except ValueError as exc:
+            skipped[path.stem] = str(exc)
+    return ok, skipped
+
+
+def _position(arm: Arm, p: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
+    """The target point [mm] within an input vector (the inputs named px, py, pz)."""
+    idx = [arm.inputs.index(k) for k in POSITION_INPUTS if k in arm.inputs]
+    if len(idx) != 3:
+        raise ValueError(
+            f"arm {arm.name}: inputs {arm.inputs} do not name the target point (px, py, pz)"
+        )
+    return p[..., idx]
+
+
+RPY_INPUTS = ("alpha", "beta", "gamma")
+"""Closed-form inputs that are the tool's orientation as RPY angles [rad], in the convention
+of :mod:`analysis.kinematics.rpy` (a pose: the GR-1 arm's inputs)."""
+
+
+def target_from_joints(arm: Arm, q: npt.ArrayLike) -> npt.NDArray[np.float64] | None:
+    """The closed form's inputs that joint angles ``q`` (..., n) [rad] reach, (..., k).
+
+    The point (inputs ``px, py, pz``) is :meth:`Arm.fk`; RPY inputs (``alpha, beta, gamma``)
+    come from the D-H chain's tool rotation (:func:`analysis.kinematics.rpy.pose_from_transform`).
+    None if the arm has an input of another kind (its FK cannot be put as a target).
+    """
+    from analysis.kinematics.rpy import pose_from_transform
+
+    known = set(POSITION_INPUTS) | set(RPY_INPUTS)
+    if not set(arm.inputs) <= known:
+        return None
+    q = np.asarray(q, dtype=float)
+    values = dict(zip(("px", "py", "pz"), np.moveaxis(arm.fk(q), -1, 0), strict=True))
+    if set(RPY_INPUTS) & set(arm.inputs):
+        pose = pose_from_transform(arm.table.fk(q))
+        values |= dict(zip(RPY_INPUTS, np.moveaxis(pose[..., 3:], -1, 0), strict=True))
+    return np.stack([values[k] for k in arm.inputs], axis=-1)
+
+
+def default_target(arm: Arm, *, seed: int = 0) -> npt.NDArray[np.float64]:
+    """A target the arm reaches on its first branch, to start the explorer at.
+
+    What :func:`target_from_joints` gives for the first joint vector that solves with
+    status "ok" on the default branch, trying the middle of each joint's range with the
+    inner joints bent by +-30, +-60 deg, then 256 seeded draws within the joint limits;
+    coordinates cleaned of round-off below 1 nm.
+    """
+    lim = np.array([lim if lim is not None else (-np.pi, np.pi) for lim in arm.limits])
+    mid = lim.mean(axis=1)
+    bends = np.zeros((4, arm.n_joints))
+    k = min(arm.n_joints, 3)
+    bends[:, :k] = np.radians([[0, 30, -60], [0, -30, 60], [30, 45, -90], [0, 0, 0]])[:, :k]
+    rng = np.random.default_rng(seed)
+    drawn = lim[:, 0] + rng.random((256, arm.n_joints)) * (lim[:, 1] - lim[:, 0])
+    q = np.concatenate([np.clip(mid + bends, lim[:, 0], lim[:, 1]), drawn])
+    p = target_from_joints(arm, q)
+    if p is None:
+        raise ValueError(
+            f"arm {arm.name}: inputs {arm.inputs} are not a point (px, py, pz) or a pose "
+            f"with RPY angles {RPY_INPUTS}; give the explorer a target"
+        )
+    good = np.flatnonzero(arm.solve(p, arm.branches[:1]).ok[:, 0])
+    return np.round(p[good[0] if good.size else 0], 9) + 0.0
+
+
+@dataclass(frozen=True)
+class PoseReport:
+    """Everything the explorer shows for one target.
+
+    Attributes
+    ----------
+    target : tuple of float
+        The target, one value per input of the arm (``px, py, pz`` [mm]; angles [rad]).
+    branch : str
+        The chosen branch (one of ``Arm.branches``).
+    reachable : bool
+        True if the target has a solution (status "ok"; base-axis targets only with
+        ``theta1_on_axis``).
+    outside_mm : float
+        Signed distance outside the reachable set [mm]: > 0 unreachable by that much,
+        <= 0 reachable (its magnitude is the margin to the nearer boundary).
+    message : str
+        One-line summary; for a bad target the library's exception message, verbatim.
+    error : str or None
+        The exception's class name for a bad target (``"UnreachableError"``,
+        ``"BaseAxisError"``, ``"ValueError"``), else None.
+    table : pandas.DataFrame
+        Index = every branch of the arm. Columns ``theta<j>_deg`` [deg] and ``c<j>`` (whole
+        pulses) per joint, ``error_mm`` (distance of FK(whole-pulse angles) from the target
+        point), ``w_mm3`` (manipulability sqrt(det(J J^T)) [mm^3/rad^3]; for three joints
+        |det J|) and ``status`` (a word of ``STATUS_TEXT``: "ok", or why the branch has no
+        solution, its numbers then missing). Empty for a bad target.
+    status : Status
+        The target's status (:class:`~analysis.kinematics.status.Status`).
+    arm : str
+        The arm's name.
+    """
+
+    target: tuple[float, ...]
+    branch: str
+    reachable: bool
+    outside_mm: float
+    message: str
+    error: str | None
+    table: pd.DataFrame
+    status: Status = Status.OK
+    arm: str = ""
+
+    @property
+    def status_text(self) -> str:
+        """The status as a word (``STATUS_TEXT``): "ok", "out-of-reach", "base-axis", ..."""
+        return STATUS_TEXT[self.status]
+
+    @property
+    def branch_ok(self) -> bool:
+        """True if the chosen branch has a solution."""
+        return self.reachable and self.table.loc[self.branch, "status"] == "ok"
+
+    def row(self) -> pd.Series:
+        """The chosen branch's row of :attr:`table` (KeyError for a bad target)."""
+        return self.table.loc[self.branch]
+
+    def joint_columns(self) -> list[str]:
+        return [c for c in self.table.columns if c.startswith("theta")]
+
+    def angles_deg(self) -> npt.NDArray[np.float64]:
+        """The chosen branch's joint angles [deg] (KeyError for a bad target)."""
+        return self.row()[self.joint_columns()].to_numpy(float)
+
+    def formatted(self) -> pd.DataFrame:
+        """The table for people: column names with units, numbers as text (angles to
+        0.01 deg, the pulse error to 1 um, the manipulability in 10^6 mm^3/rad^3; never
+        "-0.00"), "—" where a branch has no solution. Empty for a bad target."""
+        t = self.table
+        joints = self.joint_columns()
+        ok = (t["status"] == "ok").to_numpy()
+
+        def col(values, fmt):
+            return [fmt(v) if good else "—" for v, good in zip(values, ok, strict=True)]
+
+        out = {f"{greek(c[:-4])} [°]": col(t[c], lambda v: num(v, 2)) for c in joints}
+        for j in range(1, len(joints) + 1):
+            out[f"c{j} [pulses]"] = col(t[f"c{j}"], lambda v: str(int(v)))
+        out["pulse error [mm]"] = col(t["error_mm"], lambda v: num(v, 3))
+        out["w [10⁶ mm³/rad³]"] = col(t["w_mm3"], lambda v: num(v / MANIPULABILITY_UNIT, 3))
+        out["status"] = list(t["status"])
+        return pd.DataFrame(out, index=t.index)
+
+    def to_html(self) -> str:
+        """:meth:`formatted` as HTML, one line per branch (no wrapping), the chosen branch
+        marked and bold, numbers right-aligned; "" for a bad target."""
+        if self.table.empty:
+            return ""
+        f = self.formatted()
+        pad = "padding:2px 10px"
+        th = "".join(
+            f'<th style="{pad};text-align:{"left" if k == 0 else "right"}">{h}</th>'
+            for k, h in enumerate(["branch", *f.columns])
+        )
+        rows = []
+        for b, r in f.iterrows():
+            cells = [("&#9654; " if b == self.branch else "") + html.escape(str(b))]
+            cells += [html.escape(str(v)) for v in r]
+            last = len(cells) - 1
+            tds = "".join(
+                f'<td style="{pad};text-align:{"left" if k in (0, last) else "right"}">{c}</td>'
+                for k, c in enumerate(cells)
+            )
+            style = ' style="font-weight:bold"' if b == self.branch else ""
+            rows.append(f"<tr{style}>{tds}</tr>")
+        return (
+            '<table class="explorer-table" style="white-space:nowrap;border-collapse:'
+            'collapse;font-variant-numeric:tabular-nums">'
+            f"<thead><tr>{th}</tr></thead><tbody>{''.join(rows)}</tbody></table>"
+        )
+
+
+def _manipulability(arm: Arm, q: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
+    """Yoshikawa's sqrt(det(J J^T)) of the positional Jacobian [mm^3/rad^3], shape (...,)."""
+    J = arm.jacobian(q)
+    d = np.linalg.det(J @ np.swapaxes(J, -1, -2))
+    return np.sqrt(np.clip(d, 0.0, None))
+
+
+def pose_report(
+    arm: Arm,
+    target: npt.ArrayLike,
+    branch: str | None = None,
+    *,
+    theta1_on_axis: float | None = None,
+    tol: float = DEFAULT_TOL_MM,
+) -> PoseReport:
+    """Every IK branch of one target: angles, pulses, pulse error, manipulability, status.
+
+    Parameters
+    ----------
+    arm : Arm
+    target : array_like, shape (k,)
+        One value per input of the arm's closed form (``Arm.inputs``; ``px, py, pz`` [mm]).
+    branch : str, optional
+        The branch to highlight; default the arm's first (the paper's: front-up for the
+        grabber, eq. 6, Table 4).
+    theta1_on_axis : float, optional
+        Waist angle [rad] for a target on the base axis (else such a target gets the status
+        "base-axis" and the library's message).
+    tol : float
+        Distance tolerance [mm] passed to :meth:`Arm.solve`.
+
+    Returns
+    -------
+    PoseReport
+
+    Examples
+    --------
+    Table 4 row 1, (100, 100, 600) mm: front-up (45.00, 10.21, -155.13) deg, pulses
+    (500, 113, -1724); row 8 (200, 500, 600) is 31.849 mm beyond the reach:
+
+    >>> from analysis.kinematics.arm import paper_arm
+    >>> pose_report(paper_arm(), [100, 100, 600]).table[["c1", "c2", "c3"]].loc["front-up"].tolist()
+    [500, 113, -1724]
+    >>> rep = pose_report(paper_arm(), [200, 500, 600])
+    >>> rep.status_text, round(rep.outside_mm, 3)
+    ('out-of-reach', 31.849)
+    """
+    names = arm.branches
+    branch = names[0] if branch is None else branch
+    if branch not in names:
+        raise ValueError(f"unknown branch {branch!r}; expected one of {', '.join(names)}")
+    p = as_points(target, inputs=arm.inputs)
+    if p.shape != (len(arm.inputs),):
+        raise ValueError(
+            f"pose_report takes one target of shape ({len(arm.inputs)},), got {p.shape}"
+        )
+    key = tuple(float(v) + 0.0 for v in p)
+    sol = arm.solve(p, names, theta1_on_axis=theta1_on_axis, tol=tol)
+    status, outside = Status(int(sol.status)), float(sol.outside_mm)
+    n = arm.n_joints
+    cols = [f"theta{j}_deg" for j in range(1, n + 1)] + [f"c{j}" for j in range(1, n + 1)]
+    cols += ["error_mm", "w_mm3", "status"]
+    if status != Status.OK:
+        try:
+            arm.raise_for(p, int(status), outside, tol=tol)
+        except ValueError as exc:
+            message, error = str(exc), type(exc).__name__
+        else:  # raise_for raises for every status but OK
+            raise AssertionError(f"status {status!r} without a refusal for target {key}")
+        empty = pd.DataFrame(columns=cols, index=pd.Index([], name="branch"))
+        return PoseReport(key, branch, False, outside, message, error, empty, status, arm.name)
+    ok = sol.ok
+    q = np.where(ok[:, None], sol.theta, 0.0)  # (B, n) rad; 0 stands in where no solution
+    ppr = np.asarray(arm.params.pulses_per_rev, dtype=float)
+    c = angles_to_pulses(q, ppr)
+    err = np.linalg.norm(arm.fk(pulses_to_angles(c, ppr)) - _position(arm, p), axis=-1)
+    # why a branch has no solution: that branch solved alone gives its own status
+    words = [
+        "ok" if ok[i] else STATUS_TEXT[Status(int(arm.solve(p, (b,), tol=tol).status))]
+        for i, b in enumerate(names)
+    ]
+    deg = np.where(ok[:, None], np.degrees(q), np.nan)
+    table = pd.DataFrame(
+        {
+            **{f"theta{j + 1}_deg": deg[:, j] for j in range(n)},
+            **{f"c{j + 1}": pd.array(np.where(ok, c[:, j], 0), dtype="Int64") for j in range(n)},
+            "error_mm": np.where(ok, err, np.nan),
+            "w_mm3": np.where(ok, _manipulability(arm, q), np.nan),
+            "status": words,
+        },
+        index=pd.Index(names, name="branch"),
+    )
+    for j in range(n):  # no pulse count where there is no angle
+        table.loc[~ok, f"c{j + 1}"] = pd.NA
+    r = table.loc[branch]
+    if r["status"] != "ok":
+        message = f"{branch}: no solution on this branch ({r['status']}); pick another branch"
+    else:
+        angles = ", ".join(num(r[f"theta{j}_deg"], 2) for j in range(1, n + 1))
+        pulses = ", ".join(str(int(r[f"c{j}"])) for j in range(1, n + 1))
+        message = (
+            f"{branch}: θ = ({angles})° -> pulses ({pulses}); whole pulses put the gripper "
+            f"{num(r['error_mm'], 3)} mm off the target; margin to the reach boundary "
+            f"{num(max(-outside, 0.0), 1)} mm"
+        )
+    return PoseReport(key, branch, True, outside, message, None, table, status, arm.name)
+
+
+def plain_message(rep: PoseReport) -> str:
+    """What the explorer says about a report: its status word, then one plain sentence.
+
+    The library's messages are kept, except on the base axis, where it names the Python
+    argument that supplies theta1: the explorer offers a check box for it instead.
+
+    >>> from analysis.kinematics.arm import paper_arm
+    >>> print(plain_message(pose_report(paper_arm(), [0, 0, 800])))  # doctest: +ELLIPSIS
+    base-axis — target (0, 0, 800) mm lies on the base axis, where ... θ1 on the base axis" ...
+    """
+    if rep.status == Status.BASE_AXIS:
+        where = ", ".join(f"{v:g}" for v in rep.target)
+        text = (
+            f"target ({where}) mm lies on the base axis, where the waist angle θ1 is "
+            'undefined. Tick "allow θ1 on the base axis" to choose it.'
+        )
+    else:
+        text = rep.message
+    return f"{rep.status_text} — {text}"
