@@ -283,6 +283,96 @@ def _limit_straddles(arm, xyz, branch, theta32, theta1_on_axis) -> npt.NDArray[n
     return solved & (inside(exact) != inside(np.asarray(theta32, dtype=float)))
 
 
+def _status_counts(
+    result: RunResult,
+    arm: Arm,
+    xyz: npt.NDArray[np.float64],
+    branch: str,
+    rounding: str,
+    theta32: npt.NDArray,
+    theta1_on_axis: float | None,
+) -> tuple[int, int, int, int]:
+    """(``status_mismatch``, ``unsafe``, ``band_refusals``, ``limit_straddles``) of
+    :func:`compare`: the PLC's statuses against Python with 0, 0.5 and 2 times the program's
+    band; ``theta32`` the model's float32 angles [rad]."""
+    refs = {
+        b: reference_pulses(arm, xyz, branch, rounding, theta1_on_axis=theta1_on_axis, band=b)
+        for b in (0.0, 0.5, 2.0)
+    }
+    plc_ok = result.reachable
+    unsafe = plc_ok & ~refs[0.0][1]
+    missed = plc_ok & ~refs[0.5][1]
+    extra = ~plc_ok & refs[2.0][1]
+    code = ~plc_ok & ~refs[0.5][1] & (result.status != refs[0.5][2])
+    # near a joint limit the PLC decides with its float32 angle: a disagreement there is
+    # explained where the float32 and the exact angle lie on opposite sides of the limit
+    across = _limit_straddles(arm, xyz, branch, theta32, theta1_on_axis)
+    limit_codes = (result.status == Status.JOINT_LIMITS) | (refs[0.5][2] == Status.JOINT_LIMITS)
+    missed, extra = missed & ~across, extra & ~across
+    code = code & ~(across & limit_codes)
+    unsafe = unsafe & ~across
+    return (
+        int((missed | extra | code).sum()),
+        int(unsafe.sum()),
+        int((~plc_ok & refs[0.0][1]).sum()),
+        int((across & (plc_ok != refs[0.0][1])).sum()),
+    )
+
+
+def _mismatch_table(
+    targets: pd.DataFrame,
+    cols: list[str],
+    xyz: npt.NDArray[np.float64],
+    exact: npt.NDArray[np.float64],
+    ref: npt.NDArray,
+    result: RunResult,
+    counts: npt.NDArray,
+    diff: npt.NDArray,
+    ppr: npt.NDArray[np.float64],
+) -> pd.DataFrame:
+    """One row per joint value where the PLC's count differs from Python's (``diff`` != 0),
+    with the exact count, its distance to the nearest half pulse, whether the two are a
+    revolution apart (``cut``), the float32 count before ROUND (``counts``) and ``ppr``."""
+    # the same joint position one revolution apart (wrap cut) is not a pulse error
+    turns = np.round(diff / ppr)
+    rows = []
+    for i, j in zip(*np.nonzero(diff), strict=True):
+        x = exact[i, j]
+        rows.append(
+            {
+                "kind": targets["kind"].iloc[i],
+                **{c: xyz[i, k] for k, c in enumerate(cols)},
+                "joint": f"c{j + 1}",
+                "python": int(ref[i, j]),
+                "plc": int(result.pulses[i, j]),
+                "exact": x,
+                "dist_half": abs(abs(x - np.trunc(x)) - 0.5),
+                "cut": bool(turns[i, j] != 0),
+                "plc_real": float(counts[i, j]),
+                "ppr": float(ppr[i, j]),
+            }
+        )
+    columns = ["kind", *cols, "joint", "python", "plc", "exact", "dist_half"]
+    return pd.DataFrame(rows, columns=[*columns, "cut", "plc_real", "ppr"])
+
+
+def _all_explained(table: pd.DataFrame) -> bool:
+    """Every mismatch of :func:`_mismatch_table` is a straddle of one half pulse, and every
+    one-revolution difference lies at the wrap cut (+-ppr/2)."""
+    # in one revolution: the PLC's count and float32 value moved by the whole turns between them
+    shift = (table["ppr"] * np.round((table["plc"] - table["python"]) / table["ppr"])).to_numpy()
+    plc = table["plc"].to_numpy() - shift
+    real = table["plc_real"].to_numpy(dtype=float) - shift
+    half = np.minimum(table["python"].to_numpy(), plc) + 0.5
+    straddle = (table["exact"].to_numpy(dtype=float) - half) * (real - half) <= 0
+    one_step = np.abs(plc - table["python"].to_numpy()) <= 1
+    at_cut = np.abs(np.abs(table["exact"].to_numpy(dtype=float)) - table["ppr"] / 2) < 0.05
+    return bool(
+        (one_step & np.where(plc != table["python"], straddle, True)).all()
+        and (at_cut | ~table["cut"]).all()
+    )
+
+
 def compare(
     result: RunResult,
     targets: pd.DataFrame,
@@ -331,69 +421,25 @@ def compare(
         (model.status == result.status).all()
         and (model.pulses[model.reachable] == result.pulses[model.reachable]).all()
     )
-    refs = {
-        b: reference_pulses(arm, xyz, branch, rounding, theta1_on_axis=theta1_on_axis, band=b)
-        for b in (0.0, 0.5, 2.0)
-    }
-    plc_ok = result.reachable
-    unsafe = plc_ok & ~refs[0.0][1]
-    missed = plc_ok & ~refs[0.5][1]
-    extra = ~plc_ok & refs[2.0][1]
-    code = ~plc_ok & ~refs[0.5][1] & (result.status != refs[0.5][2])
-    # near a joint limit the PLC decides with its float32 angle: a disagreement there is
-    # explained where the float32 and the exact angle lie on opposite sides of the limit
-    across = _limit_straddles(arm, xyz, branch, model.theta, theta1_on_axis)
-    limit_codes = (result.status == Status.JOINT_LIMITS) | (refs[0.5][2] == Status.JOINT_LIMITS)
-    missed, extra = missed & ~across, extra & ~across
-    code = code & ~(across & limit_codes)
-    unsafe = unsafe & ~across
+    status_mismatch, unsafe, band_refusals, limit_straddles = _status_counts(
+        result, arm, xyz, branch, rounding, model.theta, theta1_on_axis
+    )
     flag_mm = int((result.reachable != (result.status == 0)).sum())
     unchanged = bool((result.pulses[~result.reachable] == sentinel).all())
     both = ok & result.reachable
     diff = np.where(both[:, None], result.pulses - ref, 0)
     ppr = np.broadcast_to(np.asarray(arm.params.pulses_per_rev, dtype=float), exact.shape)
-    # the same joint position one revolution apart (wrap cut) is not a pulse error
-    turns = np.round(diff / ppr)
-    rows = []
-    for i, j in zip(*np.nonzero(diff), strict=True):
-        x = exact[i, j]
-        rows.append(
-            {
-                "kind": targets["kind"].iloc[i],
-                **{c: xyz[i, k] for k, c in enumerate(cols)},
-                "joint": f"c{j + 1}",
-                "python": int(ref[i, j]),
-                "plc": int(result.pulses[i, j]),
-                "exact": x,
-                "dist_half": abs(abs(x - np.trunc(x)) - 0.5),
-                "cut": bool(turns[i, j] != 0),
-                "plc_real": float(model.counts[i, j]),
-                "ppr": float(ppr[i, j]),
-            }
-        )
-    columns = ["kind", *cols, "joint", "python", "plc", "exact", "dist_half"]
-    table = pd.DataFrame(rows, columns=[*columns, "cut", "plc_real", "ppr"])
+    table = _mismatch_table(targets, cols, xyz, exact, ref, result, model.counts, diff, ppr)
     lap = ppr * np.round((model.counts.astype(float) - exact) / ppr)
     err = np.abs(model.counts.astype(float) - lap - exact)[both]
-    # in one revolution: the PLC's count and float32 value moved by the whole turns between them
-    shift = (table["ppr"] * np.round((table["plc"] - table["python"]) / table["ppr"])).to_numpy()
-    plc = table["plc"].to_numpy() - shift
-    real = table["plc_real"].to_numpy(dtype=float) - shift
-    half = np.minimum(table["python"].to_numpy(), plc) + 0.5
-    straddle = (table["exact"].to_numpy(dtype=float) - half) * (real - half) <= 0
-    one_step = np.abs(plc - table["python"].to_numpy()) <= 1
-    at_cut = np.abs(np.abs(table["exact"].to_numpy(dtype=float)) - table["ppr"] / 2) < 0.05
-    explained = bool(
-        (one_step & np.where(plc != table["python"], straddle, True)).all()
-        and (at_cut | ~table["cut"]).all()
-    )
+    explained = _all_explained(table)
     return Comparison(
         len(xyz),
         int(ok.sum()),
-        int((missed | extra | code).sum()),
-        int(unsafe.sum()),
-        int((~plc_ok & refs[0.0][1]).sum()),
-        int((across & (plc_ok != refs[0.0][1])).sum()),
+        status_mismatch,
+        unsafe,
+        band_refusals,
+        limit_straddles,
         flag_mm,
         unchanged,
         int((diff != 0).sum()),
