@@ -343,6 +343,78 @@ class _PlcTrace(TraceOps):
         return super().atan2(y, x)
 
 
+def _lower(
+    g: Graph, fixed: dict[int, str], trig: str, inputs, refusals, labels: dict
+) -> tuple[Instr, ...]:
+    """The program's code: the inputs' finiteness test (Figure 3's VD0/VD4/VD8), the graph
+    lowered, then status 0 and the reach flag, or a refusal's status code."""
+    low = Lowering(
+        g, fixed, trig, keep_names=True, refusals={c.index: labels[s] for s, c in refusals}
+    )
+    low.emit("network", None, "inputs (Fig. 3) finite? (bit test: no REAL compare sees a NaN)")
+    invalid = "@refuse6"
+    for v in inputs:
+        low.emit("jnotfinite", None, v, invalid)
+    low.run()
+    end = low.label()
+    low.emit("seti", "status", 0)
+    low.emit("set", "reachable")
+    low.emit("jmp", None, end)
+    low.emit("network", None, "refused: status code, reach flag off, c1..cn unchanged, no motion")
+    for code in sorted({*labels, Status.INVALID}):
+        low.emit("label", None, f"@refuse{int(code)}")
+        low.emit("seti", "status", int(code), comment=Status(code).text)
+        low.emit("reset", "reachable")
+        low.emit("jmp", None, end)
+    low.emit("label", None, end)
+    return tuple(low.code)
+
+
+def _work_names(code: tuple[Instr, ...], io: set[str]) -> list[str]:
+    """The scratch variables of ``code`` (every name but the inputs and outputs ``io``), in
+    order of first use."""
+    work: list[str] = []
+    for ins in code:
+        for n in _names(ins):
+            if n not in io and n not in work:
+                work.append(n)
+    return work
+
+
+def _notes(params, branch: str, trig: str, labels: dict) -> tuple[str, ...]:
+    """The program header's notes: the arm, its lengths (assumed ones marked), pulses per
+    revolution, the trigonometry, the status codes and the band it refuses."""
+    ppr = params.pulses_per_rev
+    desc = params.description
+    assumed = set(desc.assumed)
+    vals = ", ".join(
+        f"{k} = {v:g} mm" + (" (assumed)" if k in assumed else "") for k, v in params.items()
+    )
+    ppr_assumed = any(j.pulses_status == "assumed" for j in desc.joints)
+    return (
+        f"arm {params.arm}, branch {branch}; {vals}; "
+        + "/".join(f"{v:g}" for v in ppr)
+        + " pulses/rev"
+        + (" (assumed)" if ppr_assumed else ""),
+        "ATAN2/ACOS: generated subroutines"
+        if trig == "subroutine"
+        else "ATAN/ACOS: native instructions",
+        "status: 0 ok, 1 out of reach, 2 inside reach, 3 base axis, 4 joint limits, 6 not finite"
+        + "".join(
+            f", {int(c)} {Status(c).text}"
+            for c in (Status.DEGENERATE, Status.ORIENTATION)
+            if c in labels
+        ),
+        f"refuses a band: {PLC_MARGIN_MM:g} mm inside the reach and around the base axis"
+        + (
+            f", {PLC_MARGIN_RAD:g} rad off the orientation tolerance"
+            if Status.ORIENTATION in labels
+            else ""
+        )
+        + " (REAL rounding cannot accept what float64 refuses)",
+    )
+
+
 def build_program(
     params,
     branch: str | None = None,
@@ -382,7 +454,6 @@ def build_program(
     body = program_body(m, params, p, branch, theta1_on_axis=theta1_on_axis)
     refusals = body["refusals"]
     outs = {f"c{j + 1}": c for j, c in enumerate(body["c"])}
-    ppr = params.pulses_per_rev
     conds = [c for _, c in refusals if isinstance(c, Node)]
     order = [c.index for c in conds]
     if order != sorted(order):
@@ -394,61 +465,11 @@ def build_program(
         if not isinstance(v, Node) or v.op != "round":
             raise ValueError(f"{name}: pulse counts must end in the ROUND instruction")
         fixed[v.index] = name
-    low = Lowering(
-        g, fixed, trig, keep_names=True, refusals={c.index: labels[s] for s, c in refusals}
-    )
-    low.emit("network", None, "inputs (Fig. 3) finite? (bit test: no REAL compare sees a NaN)")
-    invalid = "@refuse6"
-    for v in cf.INPUTS:
-        low.emit("jnotfinite", None, v, invalid)
-    low.run()
-    end = low.label()
-    low.emit("seti", "status", 0)
-    low.emit("set", "reachable")
-    low.emit("jmp", None, end)
-    low.emit("network", None, "refused: status code, reach flag off, c1..cn unchanged, no motion")
-    for code in sorted({*labels, Status.INVALID}):
-        low.emit("label", None, f"@refuse{int(code)}")
-        low.emit("seti", "status", int(code), comment=Status(code).text)
-        low.emit("reset", "reachable")
-        low.emit("jmp", None, end)
-    low.emit("label", None, end)
-    code = tuple(low.code)
+    code = _lower(g, fixed, trig, cf.INPUTS, refusals, labels)
     io = {*cf.INPUTS, *outs, "reachable", "status"}
-    work: list[str] = []
-    for ins in code:
-        for n in _names(ins):
-            if n not in io and n not in work:
-                work.append(n)
+    work = _work_names(code, io)
     subs = (atan2_subroutine(1), acos_subroutine(2)) if trig == "subroutine" else ()
-    desc = params.description
-    assumed = set(desc.assumed)
-    vals = ", ".join(
-        f"{k} = {v:g} mm" + (" (assumed)" if k in assumed else "") for k, v in params.items()
-    )
-    ppr_assumed = any(j.pulses_status == "assumed" for j in desc.joints)
-    notes = (
-        f"arm {params.arm}, branch {branch}; {vals}; "
-        + "/".join(f"{v:g}" for v in ppr)
-        + " pulses/rev"
-        + (" (assumed)" if ppr_assumed else ""),
-        "ATAN2/ACOS: generated subroutines"
-        if trig == "subroutine"
-        else "ATAN/ACOS: native instructions",
-        "status: 0 ok, 1 out of reach, 2 inside reach, 3 base axis, 4 joint limits, 6 not finite"
-        + "".join(
-            f", {int(c)} {Status(c).text}"
-            for c in (Status.DEGENERATE, Status.ORIENTATION)
-            if c in labels
-        ),
-        f"refuses a band: {PLC_MARGIN_MM:g} mm inside the reach and around the base axis"
-        + (
-            f", {PLC_MARGIN_RAD:g} rad off the orientation tolerance"
-            if Status.ORIENTATION in labels
-            else ""
-        )
-        + " (REAL rounding cannot accept what float64 refuses)",
-    )
+    notes = _notes(params, branch, trig, labels)
     return Program(
         code,
         subs,
