@@ -106,45 +106,9 @@ def _round(a: npt.ArrayLike) -> list:
     return (np.round(np.asarray(a, dtype=float), ROUND_MM) + 0.0).tolist()
 
 
-def arm_figure(
-    arm,
-    q: npt.ArrayLike | None,
-    target: npt.ArrayLike | None = None,
-    *,
-    title: str = "",
-    box: Box | None = None,
-    height: int = 520,
-) -> go.Figure:
-    """The arm at joint angles ``q`` [rad] as a rotatable 3D stick figure [mm].
-
-    Links run through the chain's frame origins (:meth:`Arm.frames`: base, each link's end,
-    the tool); the base axis is dashed; ``target`` (its first three values, x, y, z [mm]) is
-    a red cross. ``q=None`` draws no arm (a target without a solution). Axes share one
-    scale (``aspectmode="manual"`` with the box's proportions), and ``uirevision`` is the
-    arm's name, so a redraw of the same arm keeps the user's camera.
-
-    Parameters
-    ----------
-    arm : analysis.kinematics.arm.Arm
-    q : array_like, shape (n,), or None
-        Joint angles [rad].
-    target : array_like, optional
-        The target; its first three values are x, y, z [mm].
-    title : str
-    box : Box, optional
-        Axis ranges [mm]; default :func:`workspace_box` of the arm.
-
-    Examples
-    --------
-    Table 4 row 1: the corrected front-up angles (45, 10.21, -155.13) deg end on the target:
-
-    >>> from analysis.kinematics.arm import paper_arm
-    >>> arm = paper_arm()
-    >>> fig = arm_figure(arm, np.radians([45, 10.2087, -155.1291]), [100, 100, 600])
-    >>> [round(v[-1]) for v in (fig.data[1].x, fig.data[1].y, fig.data[1].z)]
-    [100, 100, 600]
-    """
-    box = box or workspace_box(arm)
+def _arm_traces(arm, q, target, box: Box) -> list[go.Scatter3d]:
+    """The base axis (dashed), the arm through its frame origins at ``q`` [rad] (none if
+    ``q`` is None) and the target's cross (x, y, z [mm])."""
     traces = [
         go.Scatter3d(
             x=[0.0, 0.0],
@@ -186,6 +150,12 @@ def arm_figure(
                 hovertemplate="target (%{x:.1f}, %{y:.1f}, %{z:.1f}) mm<extra></extra>",
             )
         )
+    return traces
+
+
+def _layout(arm, title: str, box: Box, height: int) -> dict:
+    """The figure's layout: axes of one scale in the box's proportions, ``uirevision`` the
+    arm's name (a redraw of the same arm keeps the user's camera)."""
     span = box.span
     ratio = span / span.max()
     axis = {"showbackground": True, "backgroundcolor": "#f4f6f8", "gridcolor": "#d0d4d8"}
@@ -193,28 +163,66 @@ def arm_figure(
         f"{k}axis": axis | {"title": {"text": f"{k} [mm]"}, "range": [box.lo[i], box.hi[i]]}
         for i, k in enumerate("xyz")
     }
-    fig = go.Figure(
-        data=traces,
-        layout={
-            "template": go.layout.Template(),  # no 10 kB default template in every output
-            "title": {"text": title, "font": _FONT | {"size": 15}, "x": 0.02},
-            "font": _FONT,
-            "height": height,
-            "margin": {"l": 0, "r": 0, "t": 40 if title else 10, "b": 0},
-            "showlegend": True,
-            "legend": {"x": 0.01, "y": 0.95, "bgcolor": "rgba(255,255,255,0.7)"},
-            "paper_bgcolor": "white",
+    return {
+        "template": go.layout.Template(),  # no 10 kB default template in every output
+        "title": {"text": title, "font": _FONT | {"size": 15}, "x": 0.02},
+        "font": _FONT,
+        "height": height,
+        "margin": {"l": 0, "r": 0, "t": 40 if title else 10, "b": 0},
+        "showlegend": True,
+        "legend": {"x": 0.01, "y": 0.95, "bgcolor": "rgba(255,255,255,0.7)"},
+        "paper_bgcolor": "white",
+        "uirevision": arm.name,
+        "scene": scene
+        | {
+            "aspectmode": "manual",
+            "aspectratio": dict(zip("xyz", _round(ratio), strict=True)),
+            "camera": {"eye": {"x": 1.25, "y": -1.35, "z": 0.7}},
             "uirevision": arm.name,
-            "scene": scene
-            | {
-                "aspectmode": "manual",
-                "aspectratio": dict(zip("xyz", _round(ratio), strict=True)),
-                "camera": {"eye": {"x": 1.25, "y": -1.35, "z": 0.7}},
-                "uirevision": arm.name,
-            },
         },
-    )
-    return fig
+    }
+
+
+def arm_figure(
+    arm,
+    q: npt.ArrayLike | None,
+    target: npt.ArrayLike | None = None,
+    *,
+    title: str = "",
+    box: Box | None = None,
+    height: int = 520,
+) -> go.Figure:
+    """The arm at joint angles ``q`` [rad] as a rotatable 3D stick figure [mm].
+
+    Links run through the chain's frame origins (:meth:`Arm.frames`: base, each link's end,
+    the tool); the base axis is dashed; ``target`` (its first three values, x, y, z [mm]) is
+    a red cross. ``q=None`` draws no arm (a target without a solution). Axes share one
+    scale (``aspectmode="manual"`` with the box's proportions), and ``uirevision`` is the
+    arm's name, so a redraw of the same arm keeps the user's camera.
+
+    Parameters
+    ----------
+    arm : analysis.kinematics.arm.Arm
+    q : array_like, shape (n,), or None
+        Joint angles [rad].
+    target : array_like, optional
+        The target; its first three values are x, y, z [mm].
+    title : str
+    box : Box, optional
+        Axis ranges [mm]; default :func:`workspace_box` of the arm.
+
+    Examples
+    --------
+    Table 4 row 1: the corrected front-up angles (45, 10.21, -155.13) deg end on the target:
+
+    >>> from analysis.kinematics.arm import paper_arm
+    >>> arm = paper_arm()
+    >>> fig = arm_figure(arm, np.radians([45, 10.2087, -155.1291]), [100, 100, 600])
+    >>> [round(v[-1]) for v in (fig.data[1].x, fig.data[1].y, fig.data[1].z)]
+    [100, 100, 600]
+    """
+    box = box or workspace_box(arm)
+    return go.Figure(data=_arm_traces(arm, q, target, box), layout=_layout(arm, title, box, height))
 
 
 def figure_bundle(fig: go.Figure, key: str, text: str) -> dict[str, object]:
