@@ -107,8 +107,8 @@ def _eq6() -> Cause:
     arm = _arm()
 
     def demo() -> bool:
-        m_s = chk._quadrant_misses(arm, set(chk.FIXES) - {"gamma"})
-        m_a = chk._quadrant_misses(arm, set(chk.FIXES) - {"gamma"}, arctan_reading="acute")
+        m_s = chk.quadrant_misses(arm, set(chk.FIXES) - {"gamma"})
+        m_a = chk.quadrant_misses(arm, set(chk.FIXES) - {"gamma"}, arctan_reading="acute")
         # quadrant 3 (third quadrant target) is missed under both readings
         return _all_fail(ms) and m_s[2] > 1.0 and m_a[2] > 1.0
 

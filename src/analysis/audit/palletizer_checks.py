@@ -80,6 +80,7 @@ __all__ = [
     "ik_chain",
     "lengths",
     "level_configurations",
+    "quadrant_misses",
     "symbolic_table",
     "uniqueness_counts",
 ]
@@ -90,7 +91,7 @@ def _fmt(v) -> str:
     return np.array2string(np.asarray(v), precision=2, separator=", ", suppress_small=True)
 
 
-def _quadrant_misses(arm, fixed, **kw) -> npt.NDArray[np.float64]:
+def quadrant_misses(arm, fixed, **kw) -> npt.NDArray[np.float64]:
     return miss(arm, QUADRANT_TARGETS, ik_chain(arm, QUADRANT_TARGETS, fixed, **kw)["q"])
 
 
@@ -178,7 +179,7 @@ def _sign_findings(arm: Arm) -> list[Finding]:
     # eq. 12 theta4 and eq. 7
     zero_motor = np.array([0.0, -np.pi / 2, np.pi / 2, np.pi / 2 - (-np.pi / 2) + np.pi / 2])
     home_tip = arm.fk(np.array(_EQ7))
-    m_t4 = _quadrant_misses(arm, all_fix - {"theta4"})
+    m_t4 = quadrant_misses(arm, all_fix - {"theta4"})
     out.append(
         Finding(
             "pal-eq12-theta4",
@@ -196,8 +197,8 @@ def _sign_findings(arm: Arm) -> list[Finding]:
     )
 
     # eq. 4 / eq. 12 sign of alpha, both readings of H
-    m_a_h = _quadrant_misses(arm, all_fix - {"alpha"}, H_reading="height")
-    m_a_d = _quadrant_misses(arm, all_fix - {"alpha", "alpha2", "H"}, H_reading="depth")
+    m_a_h = quadrant_misses(arm, all_fix - {"alpha"}, H_reading="height")
+    m_a_d = quadrant_misses(arm, all_fix - {"alpha", "alpha2", "H"}, H_reading="depth")
     m_init = miss(arm, home_tip, ik_chain(arm, home_tip, all_fix - {"alpha"})["q"])
     m_init_d = miss(
         arm,
@@ -264,7 +265,7 @@ def _eq3_findings(arm: Arm, grid: npt.NDArray[np.float64]) -> list[Finding]:
             f"e.g. G = (30, 10, 100) mm misses {float(m_a2[0]):.2f} mm ({dims})",
         )
     )
-    m_b1 = _quadrant_misses(arm, all_fix - {"beta1"})
+    m_b1 = quadrant_misses(arm, all_fix - {"beta1"})
     chain_home = ik_chain(arm, home_tip, all_fix - {"beta1"})["motor"]
     out.append(
         Finding(
@@ -297,8 +298,8 @@ def _eq6_findings(arm: Arm) -> list[Finding]:
     }
     quad = np.floor(np.mod(np.degrees(az), 360) / 90).astype(int) + 1
     bad_q = {r: sorted({int(k) for k in quad[w]}) for r, w in wrong.items()}
-    m_g = _quadrant_misses(arm, all_fix - {"gamma"})
-    m_g_acute = _quadrant_misses(arm, all_fix - {"gamma"}, arctan_reading="acute")
+    m_g = quadrant_misses(arm, all_fix - {"gamma"})
+    m_g_acute = quadrant_misses(arm, all_fix - {"gamma"}, arctan_reading="acute")
     out.append(
         Finding(
             "pal-eq6-quadrant",
@@ -386,7 +387,7 @@ def _claim_findings(arm: Arm, base: npt.NDArray[np.float64]) -> list[Finding]:
             f"{(P.L1**2 + L4_u**2 - P.L2**2) / (2 * P.L1 * L4_u):.3f}.",
         )
     )
-    m_printed = _quadrant_misses(arm, ())
+    m_printed = quadrant_misses(arm, ())
     m_printed_11 = miss(arm, G, ik_chain(arm, G, ())["q"], eq11="printed")
     out.append(
         Finding(
@@ -506,7 +507,7 @@ def findings(arm: Arm | None = None) -> list[Finding]:
     arm = arm if arm is not None else load_arm("palletizer")
 
     # sanity: everything corrected reaches every quadrant target
-    base = _quadrant_misses(arm, set(FIXES))
+    base = quadrant_misses(arm, set(FIXES))
     if not np.all(base < 1e-9):  # pragma: no cover - guarded by the tests
         raise AssertionError(f"corrected chain misses {base}")
     grid = workspace_grid(arm)
