@@ -19,10 +19,10 @@ from __future__ import annotations
 from importlib.metadata import distribution
 from pathlib import Path
 
-project = "Audit of Li Feng et al. (2016)"
+project = "Audit of four robot-kinematics papers"
 author = "analysis"
 copyright = "the analysis project"
-html_title = "Audit: material-grabbing robot (Li Feng et al., 2016)"
+html_title = "Audit: four robot-kinematics papers"
 
 extensions = ["myst_nb", "sphinx.ext.mathjax"]
 myst_enable_extensions = ["dollarmath", "amsmath", "colon_fence"]

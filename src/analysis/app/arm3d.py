@@ -169,6 +169,8 @@ def _layout(arm, title: str, box: Box, height: int) -> dict:
         "font": _FONT,
         "height": height,
         "margin": {"l": 0, "r": 0, "t": 40 if title else 10, "b": 0},
+        # the tool buttons down the right edge, clear of a long title
+        "modebar": {"orientation": "v"},
         "showlegend": True,
         "legend": {"x": 0.01, "y": 0.95, "bgcolor": "rgba(255,255,255,0.7)"},
         "paper_bgcolor": "white",

@@ -358,9 +358,12 @@ def _intro(
     commit = _git_commit()
     total = sum(dt for _, _, dt in executed)
     return (
-        "Li Feng, Zhang Xue-song, Yue Yun, Zhang Zhong-mei. *Research on self-navigation "
-        "system of material grabbing robot based on the inverse kinematics analysis.* Food & "
-        "Machinery, 2016. Every printed equation, table and PLC listing re-derived, "
+        "The subject: Li Feng, Zhang Xue-song, Yue Yun, Zhang Zhong-mei. *Research on "
+        "self-navigation system of material grabbing robot based on the inverse kinematics "
+        "analysis.* Food & Machinery, 2016 (seed 000, notebooks 01-07 and 09); and three "
+        "companion papers: a 4-axis palletizer (seed 001, notebook 11), a 2P4R fruit picker "
+        "in screw theory (seed 002, notebook 12) and the GR-1 5-DOF handling arm (seed 004, "
+        "notebook 10). Every printed equation, table, listing and claim re-derived, "
         "recomputed or executed. "
         f"This site was built{f' from commit `{commit}`' if commit else ''}: "
         + (

@@ -257,7 +257,7 @@ def front_page_md(
     ``titles`` a notebook stem to its title, ``toc`` a toctree caption to its documents,
     ``problems`` what failed in this build (shown first, in an error box).
     """
-    out = ["# Audit of Li Feng et al. (2016), a 3R material-grabbing robot", "", intro, ""]
+    out = ["# Audit of four robot-kinematics papers", "", intro, ""]
     if problems:
         out += [":::{error}", "**This build is incomplete.**", ""]
         for what, why in problems.items():
