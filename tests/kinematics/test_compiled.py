@@ -268,3 +268,17 @@ def test_tol_is_validated(arm):
     for bad in (-1.0, np.nan, np.inf, "1"):
         with pytest.raises(ValueError, match="tol"):
             arm.solve([100.0, 100.0, 600.0], backend="compiled", tol=bad)
+
+
+@pytest.mark.parametrize("bad", [np.nan, np.inf, -np.inf])
+def test_compiled_solve_refuses_non_finite_targets_like_numpy(arm, bad):
+    """The compiled path counts non-finite inputs in its input copy (no separate pass) and
+    raises the numpy path's error, naming the same target."""
+    p = np.tile([100.0, 100.0, 600.0], (1000, 1))
+    p[617, 1] = bad
+    with pytest.raises(ValueError) as numpy_err:
+        arm.solve(p)
+    with pytest.raises(ValueError) as compiled_err:
+        arm.solve(p, backend="compiled")
+    assert str(compiled_err.value) == str(numpy_err.value)
+    assert "index (617,)" in str(compiled_err.value)

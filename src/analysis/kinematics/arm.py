@@ -335,7 +335,8 @@ class Arm:
             refusal_options`; numpy backend). Joint limits stay as described.
         """
         names = self.branch_names(branches)
-        p = as_points(p, inputs=self.inputs)
+        # the compiled kernel counts non-finite inputs in its input copy (one pass, not two)
+        p = as_points(p, inputs=self.inputs, finite=backend != "compiled")
         tol = check_tol(tol)
         options = refusal_options(tol, margin_mm, margin_rad)
         lim = self.limits if limits else ()

@@ -110,12 +110,17 @@ class IKSolutions(NamedTuple):
 
 
 def as_points(
-    p: npt.ArrayLike, name: str = "target", inputs: Sequence[str] = ("x", "y", "z")
+    p: npt.ArrayLike,
+    name: str = "target",
+    inputs: Sequence[str] = ("x", "y", "z"),
+    *,
+    finite: bool = True,
 ) -> npt.NDArray[np.float64]:
     """Validate and convert targets to a float array of shape (..., k), k = len(inputs)
     (default (..., 3) = x, y, z [mm]).
 
-    Raises ``ValueError`` naming the offending value for text, wrong shapes, NaN or inf.
+    Raises ``ValueError`` naming the offending value for text, wrong shapes, NaN or inf
+    (``finite=False``: the caller checks finiteness itself, as the compiled kernel does).
     """
     try:
         arr = np.asarray(p, dtype=float)
@@ -125,7 +130,9 @@ def as_points(
     if arr.ndim == 0 or arr.shape[-1] != k:
         what = "(x, y, z) in mm" if k == 3 else "(" + ", ".join(inputs) + ")"
         raise ValueError(f"{name} has shape {arr.shape}; expected (..., {k}) = {what}")
-    bad = ~np.isfinite(arr)
+    if not finite or np.isfinite(arr.sum()):  # one pass: NaN or inf make the sum non-finite
+        return arr
+    bad = ~np.isfinite(arr)  # (or the sum overflowed: then nothing is bad)
     if bad.any():
         idx = np.argwhere(bad)[0]
         where = "" if arr.ndim == 1 else f" at index {tuple(int(i) for i in idx[:-1])}"
@@ -143,7 +150,10 @@ def check_joints(q: npt.ArrayLike, n: int, name: str = "joint array") -> npt.NDA
         raise ValueError(f"{name} {q!r} is not numeric: {exc}") from None
     if q.ndim == 0 or q.shape[-1] != n:
         raise ValueError(f"{name} has shape {q.shape}; expected (..., {n})")
-    bad = ~np.isfinite(q) | (np.abs(q) > math.radians(MAX_JOINT_DEG))
+    limit = math.radians(MAX_JOINT_DEG)
+    if q.size and -limit <= q.min() and q.max() <= limit:  # NaN fails both: one pass each
+        return q
+    bad = ~np.isfinite(q) | (np.abs(q) > limit)
     if bad.any():
         idx = tuple(int(i) for i in np.argwhere(bad)[0])
         v = q[idx]
