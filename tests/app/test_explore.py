@@ -218,8 +218,6 @@ def test_docstring_examples():
     assert result.attempted >= 3 and result.failed == 0
 
 
-
-
 # --- the widget explorer -----------------------------------------------------------------
 def _tip(ex):
     """The arm trace's last point in the 3D view (the gripper), or None (no arm drawn)."""
