@@ -23,10 +23,10 @@ from functools import cache
 
 from analysis.audit import gr1_checks as chk
 from analysis.audit import vb6
-from analysis.audit.gr1_checks import all_fail as _all_fail
-from analysis.audit.gr1_checks import make_cause as _cause
 from analysis.audit.gr1_checks import printed_run as _printed_run
 from analysis.audit.schema import Cause, Manifestation, Register
+from analysis.audit.schema import all_fail as _all_fail
+from analysis.audit.schema import make_cause as _cause
 from analysis.kinematics.status import Status
 from analysis.papers import gr1_thesis as paper
 from analysis.studies import gr1 as study

@@ -12,11 +12,11 @@ import sympy as sp
 
 from analysis.audit import gr1_checks as chk
 from analysis.audit import vb6
-from analysis.audit.gr1_checks import all_fail as _all_fail
-from analysis.audit.gr1_checks import make_cause as _cause
 from analysis.audit.gr1_checks import numbers as _numbers
 from analysis.audit.gr1_checks import printed_run as _printed_run
 from analysis.audit.schema import Cause, Manifestation
+from analysis.audit.schema import all_fail as _all_fail
+from analysis.audit.schema import make_cause as _cause
 from analysis.kinematics.dh import DHRow, DHTable
 from analysis.kinematics.status import Status
 from analysis.papers import gr1_thesis as paper

@@ -11,10 +11,10 @@ from functools import cache
 import numpy as np
 import sympy as sp
 
-from analysis.audit.gr1_checks import all_fail as _all_fail
-from analysis.audit.gr1_checks import make_cause as _cause
 from analysis.audit.gr1_checks import numbers as _numbers
 from analysis.audit.schema import Cause, Manifestation
+from analysis.audit.schema import all_fail as _all_fail
+from analysis.audit.schema import make_cause as _cause
 from analysis.papers import gr1_thesis as paper
 from analysis.studies import gr1 as study
 

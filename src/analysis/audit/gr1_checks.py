@@ -30,7 +30,6 @@ import numpy.typing as npt
 import sympy as sp
 
 from analysis.audit import vb6
-from analysis.audit.schema import Cause
 from analysis.kinematics.rpy import rpy_from_matrix
 from analysis.papers import gr1_thesis as paper
 from analysis.studies.gr1 import gr1_arm
@@ -38,14 +37,12 @@ from analysis.studies.gr1 import gr1_arm
 __all__ = [
     "PI_LISTING",
     "PRINCIPAL",
-    "all_fail",
     "cells_matching",
     "configurations",
     "equation_holds",
     "equation_values",
     "listing_env",
     "listing_statement",
-    "make_cause",
     "numbers",
     "printed_run",
     "run_statement",
@@ -360,16 +357,6 @@ def table5_4_cascade():
 
 
 # --------------------------------------------------------------------------- register helpers
-def all_fail(ms) -> bool:
-    """The printed texts fail and the corrections pass every manifestation's check."""
-    return all(not m.verify(m.printed) and m.verify(m.corrected) for m in ms)
-
-
-def make_cause(cid, title, status, kind, evidence, ms, demo=None) -> Cause:
-    """A :class:`Cause` whose demonstration defaults to :func:`all_fail` of its
-    manifestations."""
-    ms = tuple(ms)
-    return Cause(cid, title, status, kind, evidence, ms, demo or (lambda: all_fail(ms)))
 
 
 def numbers(text: str) -> list[float]:

@@ -9,7 +9,7 @@
 formulas with inverse trigonometric functions, recomputation for tables, evaluation for STL.
 ``data/errata/grabber_items.csv`` lists them all (items that hold too); the wrong ones are
 grouped into root causes by :mod:`analysis.audit.grabber_causes`, with the builders here
-(:func:`from_item`, :func:`make_cause`).
+(:func:`from_item`; causes are built by :func:`analysis.audit.schema.make_cause`).
 """
 
 from __future__ import annotations
@@ -22,7 +22,7 @@ import sympy as sp
 from analysis.audit.grabber_checks import all_items
 from analysis.audit.grabber_items import KINDS, PXYZ, Item
 from analysis.audit.grabber_items import S as S
-from analysis.audit.schema import Cause, Manifestation
+from analysis.audit.schema import Cause, Manifestation, make_cause
 from analysis.kinematics.params import paper_params
 
 __all__ = [
@@ -180,17 +180,6 @@ def from_item(cause: str, slug: str, item_id: str, **override) -> Manifestation:
         it.verify,
         item_id,
     )
-
-
-def all_fail(ms) -> bool:
-    """The printed texts fail and the corrections pass every manifestation's check."""
-    return all(not m.verify(m.printed) and m.verify(m.corrected) for m in ms)
-
-
-def make_cause(cid, title, status, kind, evidence, ms, demo=None) -> Cause:
-    """A :class:`Cause` whose demonstration is ``demo`` or, by default, :func:`all_fail`."""
-    ms = tuple(ms)
-    return Cause(cid, title, status, kind, evidence, ms, demo or (lambda: all_fail(ms)))
 
 
 def single_cause(cid, title, status, kind, evidence, slug, item_id) -> Cause:

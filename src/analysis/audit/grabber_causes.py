@@ -19,13 +19,13 @@ from functools import cache
 import numpy as np
 
 from analysis.audit import grabber_causes_stl
-from analysis.audit.grabber_audit import all_fail as _all_fail
 from analysis.audit.grabber_audit import audit
 from analysis.audit.grabber_audit import from_item as _from_item
-from analysis.audit.grabber_audit import make_cause as _cause
 from analysis.audit.grabber_audit import single_cause as _single
 from analysis.audit.grabber_causes_stl import paper_runs
 from analysis.audit.schema import Cause, Manifestation, Register
+from analysis.audit.schema import all_fail as _all_fail
+from analysis.audit.schema import make_cause as _cause
 from analysis.audit.table4 import summary
 from analysis.kinematics.arm import paper_arm
 from analysis.papers import grabber as paper

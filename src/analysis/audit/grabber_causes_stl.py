@@ -10,12 +10,12 @@ from functools import cache
 
 import numpy as np
 
-from analysis.audit.grabber_audit import all_fail as _all_fail
 from analysis.audit.grabber_audit import from_item as _from_item
-from analysis.audit.grabber_audit import make_cause as _cause
 from analysis.audit.grabber_audit import single_cause as _single
 from analysis.audit.grabber_stl import figure5_c2, figure5_repaired
 from analysis.audit.schema import Cause, Manifestation
+from analysis.audit.schema import all_fail as _all_fail
+from analysis.audit.schema import make_cause as _cause
 from analysis.audit.table4 import load_printed
 from analysis.kinematics.arm import paper_arm
 from analysis.kinematics.pulses import angles_to_pulses

@@ -33,13 +33,13 @@ from analysis.audit import palletizer_causes_claims, palletizer_causes_ik
 from analysis.audit import palletizer_checks as chk
 from analysis.audit.palletizer_derivations import is_zero as _zero
 from analysis.audit.palletizer_formulas import ATOL, S
-from analysis.audit.palletizer_formulas import all_fail as _all_fail
 from analysis.audit.palletizer_formulas import findings_by_id as _found
-from analysis.audit.palletizer_formulas import make_cause as _cause
 from analysis.audit.palletizer_formulas import palletizer_arm as _arm
 from analysis.audit.palletizer_formulas import parse_formula as _parse
-from analysis.audit.palletizer_formulas import safe as _safe
 from analysis.audit.schema import Cause, Manifestation, Register
+from analysis.audit.schema import all_fail as _all_fail
+from analysis.audit.schema import make_cause as _cause
+from analysis.audit.schema import safe as _safe
 from analysis.kinematics.dh import link_transform_sym
 from analysis.papers import palletizer as paper
 

@@ -13,17 +13,17 @@ import sympy as sp
 
 from analysis.audit import palletizer_checks as chk
 from analysis.audit.palletizer_formulas import ATOL, S
-from analysis.audit.palletizer_formulas import all_fail as _all_fail
 from analysis.audit.palletizer_formulas import angles_close as _angles_close
 from analysis.audit.palletizer_formulas import dims_text as _dims
 from analysis.audit.palletizer_formulas import evaluate as _eval
 from analysis.audit.palletizer_formulas import findings_by_id as _found
-from analysis.audit.palletizer_formulas import make_cause as _cause
 from analysis.audit.palletizer_formulas import palletizer_arm as _arm
 from analysis.audit.palletizer_formulas import parse_formula as _parse
-from analysis.audit.palletizer_formulas import safe as _safe
 from analysis.audit.palletizer_formulas import target_values as _values
 from analysis.audit.schema import Cause, Manifestation
+from analysis.audit.schema import all_fail as _all_fail
+from analysis.audit.schema import make_cause as _cause
+from analysis.audit.schema import safe as _safe
 from analysis.papers import palletizer as paper
 
 

@@ -15,7 +15,6 @@ import numpy as np
 import sympy as sp
 
 from analysis.audit import palletizer_checks as chk
-from analysis.audit.schema import Cause
 from analysis.kinematics.arm import Arm, Status, load_arm
 from analysis.papers import palletizer as paper
 
@@ -130,27 +129,6 @@ def angles_close(a, b, tol: float = ATOL) -> bool:
     return bool(
         np.all(np.abs(np.mod(np.asarray(a) - np.asarray(b) + np.pi, 2 * np.pi) - np.pi) < tol)
     )
-
-
-def safe(fn):
-    """A verify predicate that answers False instead of raising on a malformed text."""
-
-    def wrapped(text: str) -> bool:
-        try:
-            return bool(fn(text))
-        except Exception:  # a text the predicate cannot read is not a right text
-            return False
-
-    return wrapped
-
-
-def all_fail(ms) -> bool:
-    return all(not m.verify(m.printed) and m.verify(m.corrected) for m in ms)
-
-
-def make_cause(cid, title, status, kind, evidence, ms, demo=None) -> Cause:
-    ms = tuple(ms)
-    return Cause(cid, title, status, kind, evidence, ms, demo or (lambda: all_fail(ms)))
 
 
 @cache

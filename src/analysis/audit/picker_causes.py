@@ -29,14 +29,14 @@ import numpy as np
 from analysis.audit import picker_causes_claims
 from analysis.audit import picker_checks as chk
 from analysis.audit.picker_checks import TIMES
-from analysis.audit.picker_checks import all_fail as _all_fail
 from analysis.audit.picker_checks import assumed_dimensions as _assumed
 from analysis.audit.picker_checks import default_picker as _picker
 from analysis.audit.picker_checks import equation_display as _display
 from analysis.audit.picker_checks import findings_by_id as _found
-from analysis.audit.picker_checks import make_cause as _cause
-from analysis.audit.picker_checks import safe as _safe
 from analysis.audit.schema import Cause, Manifestation, Register
+from analysis.audit.schema import all_fail as _all_fail
+from analysis.audit.schema import make_cause as _cause
+from analysis.audit.schema import safe as _safe
 from analysis.kinematics import picker as pk
 from analysis.kinematics import poe
 from analysis.papers import picker as paper

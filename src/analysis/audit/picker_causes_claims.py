@@ -16,9 +16,9 @@ from analysis.audit.picker_checks import assumed_dimensions as _assumed
 from analysis.audit.picker_checks import default_picker as _picker
 from analysis.audit.picker_checks import equation_display as _display
 from analysis.audit.picker_checks import findings_by_id as _found
-from analysis.audit.picker_checks import make_cause as _cause
-from analysis.audit.picker_checks import safe as _safe
 from analysis.audit.schema import Cause, Manifestation
+from analysis.audit.schema import make_cause as _cause
+from analysis.audit.schema import safe as _safe
 from analysis.kinematics import picker as pk
 from analysis.papers import picker as paper
 

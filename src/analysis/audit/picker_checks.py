@@ -24,7 +24,6 @@ import numpy as np
 import numpy.typing as npt
 
 from analysis.audit.findings import Finding
-from analysis.audit.schema import Cause
 from analysis.kinematics import picker as pk
 from analysis.papers import picker as paper
 
@@ -365,27 +364,6 @@ def findings(picker: pk.Picker | None = None) -> list[Finding]:
 # ---------------------------------------------------------------------------------------------
 # building the register's causes (analysis.audit.picker_causes)
 # ---------------------------------------------------------------------------------------------
-def safe(fn):
-    """A verify predicate that answers False instead of raising on a malformed text."""
-
-    def wrapped(text: str) -> bool:
-        try:
-            return bool(fn(text))
-        except Exception:  # a text the predicate cannot read is not a right text
-            return False
-
-    return wrapped
-
-
-def all_fail(ms) -> bool:
-    """The printed texts fail and the corrections pass every manifestation's check."""
-    return all(not m.verify(m.printed) and m.verify(m.corrected) for m in ms)
-
-
-def make_cause(cid, title, status, kind, evidence, ms, demo=None) -> Cause:
-    """A :class:`Cause` whose demonstration is ``demo`` or, by default, :func:`all_fail`."""
-    ms = tuple(ms)
-    return Cause(cid, title, status, kind, evidence, ms, demo or (lambda: all_fail(ms)))
 
 
 @cache

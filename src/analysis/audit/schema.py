@@ -38,7 +38,10 @@ __all__ = [
     "Cause",
     "Manifestation",
     "Register",
+    "all_fail",
+    "make_cause",
     "read_rows",
+    "safe",
     "validate_rows",
 ]
 
@@ -265,3 +268,28 @@ def validate_rows(rows: list[dict[str, str]], where: str = "register") -> None:
             if "/" in rid:
                 raise ValueError(f"{where} line {n} ({rid}): a cause id has no '/'")
             causes[rid] = r["status"]
+
+
+# --- building registers ------------------------------------------------------------------
+def safe(fn):
+    """A verify predicate that answers False instead of raising on a malformed text."""
+
+    def wrapped(text: str) -> bool:
+        try:
+            return bool(fn(text))
+        except Exception:  # a text the predicate cannot read is not a right text
+            return False
+
+    return wrapped
+
+
+def all_fail(ms) -> bool:
+    """The printed texts fail and the corrections pass every manifestation's check."""
+    return all(not m.verify(m.printed) and m.verify(m.corrected) for m in ms)
+
+
+def make_cause(cid, title, status, kind, evidence, ms, demo=None) -> Cause:
+    """A :class:`Cause` whose demonstration is ``demo`` or, by default, :func:`all_fail` of
+    its manifestations."""
+    ms = tuple(ms)
+    return Cause(cid, title, status, kind, evidence, ms, demo or (lambda: all_fail(ms)))
