@@ -185,8 +185,9 @@ def cubic_coefficients(q0: npt.ArrayLike, qf: npt.ArrayLike, duration: float):
 
 
 def cubic_trajectory(q0: npt.ArrayLike, qf: npt.ArrayLike, duration: float, t: npt.ArrayLike):
-    """Position, velocity, acceleration of the cubic (seed 004 eqs. 5.3-5.4, 5.7-5.9), from
-    its coefficients (eq. 5.3); equals ``trajectory("cubic", ...)``.
+    """Position, velocity, acceleration of the cubic (seed 004 eqs. 5.3-5.4, 5.7-5.9):
+    ``trajectory("cubic", ...)``, whose normalized profile 3 s^2 - 2 s^3 is the thesis's
+    coefficients (:func:`cubic_coefficients`) divided through by (qf - q0).
 
     Parameters
     ----------
@@ -202,12 +203,7 @@ def cubic_trajectory(q0: npt.ArrayLike, qf: npt.ArrayLike, duration: float, t: n
     q, qd, qdd : ndarray, shape (m, ..., n)
         [rad], [rad/s], [rad/s^2].
     """
-    T = _check_duration(duration)
-    t = _check_times(t, T)
-    a0, a1, a2, a3 = cubic_coefficients(q0, qf, T)
-    tt = t.reshape(-1, *([1] * a0.ndim))
-    q = a0 + a1 * tt + a2 * tt**2 + a3 * tt**3
-    return q, a1 + 2 * a2 * tt + 3 * a3 * tt**2, 2 * a2 + 6 * a3 * tt + 0 * tt
+    return trajectory("cubic", q0, qf, duration, t)
 
 
 def acceleration_jumps(
