@@ -65,20 +65,26 @@ import hashlib
 import logging
 import os
 import shutil
+import subprocess
 import tempfile
+import time
 import warnings
 from collections.abc import Generator
 from pathlib import Path
 from typing import IO, Any
 
 import pytest
-from nbval.kernel import RunningKernel
+from nbval.kernel import NbvalKernelspecManager, RunningKernel
 
 MAX_STARTS = 3
 """Kernel starts per notebook (the first one and two retries)."""
 
 TAIL_LINES = 15
 """Lines of a kernel's stderr log quoted in a failure report."""
+
+FORKSERVER = Path(__file__).resolve().with_name("kernel_forkserver.py")
+FORKSERVER_STARTUP = 120.0
+"""Seconds a fork server may take to import its preload list."""
 
 # Linux sun_path is 108 bytes including the terminating NUL; leave room for "-<port>".
 _MAX_IPC_PREFIX = 100
@@ -107,6 +113,46 @@ class _State:
         self.ipc_dir = _make_ipc_dir()
         self.counter = 0
         self.logs: dict[Path, Path] = {}
+        self.preload: list[str] = []
+        self.forkservers: dict[tuple[str, ...], tuple[subprocess.Popen, str]] = {}
+
+    def forkserver(self, interpreter: tuple[str, ...]) -> str | None:
+        """The socket of the fork server for ``interpreter`` (started on first use), or None
+        if it could not start (the kernel then starts normally; see the server's log)."""
+        if interpreter in self.forkservers:
+            proc, sock = self.forkservers[interpreter]
+            return sock if proc.poll() is None else None
+        sock = os.path.join(self.ipc_dir, f"forkserver{len(self.forkservers)}.sock")
+        self.log_dir.mkdir(parents=True, exist_ok=True)
+        worker = os.environ.get("PYTEST_XDIST_WORKER", "main")
+        log = self.log_dir / f"forkserver-{worker}.stderr.log"
+        with open(log, "wb") as fh:
+            proc = subprocess.Popen(
+                [*interpreter, str(FORKSERVER), "serve", sock, ",".join(self.preload)],
+                stdin=subprocess.DEVNULL,
+                stdout=fh,
+                stderr=fh,
+            )
+        self.forkservers[interpreter] = (proc, sock)
+        deadline = time.monotonic() + FORKSERVER_STARTUP
+        while not os.path.exists(sock):
+            if proc.poll() is not None or time.monotonic() > deadline:
+                message = f"kernel fork server did not start; kernels start normally; see {log}"
+                logger.warning(message)
+                warnings.warn(message, KernelStartRetry, stacklevel=2)
+                proc.kill()
+                return None
+            time.sleep(0.02)
+        return sock
+
+    def stop_forkservers(self) -> None:
+        for proc, _ in self.forkservers.values():
+            proc.terminate()
+        for proc, _ in self.forkservers.values():
+            try:
+                proc.wait(timeout=10)
+            except subprocess.TimeoutExpired:
+                proc.kill()
 
     def next_ipc_prefix(self) -> str:
         """Return a fresh absolute path prefix for one kernel's IPC sockets."""
@@ -187,7 +233,6 @@ class IpcRunningKernel(RunningKernel):
 
     def __init__(self, kernel_name: str, cwd: str | None = None, startup_timeout: float = 60):
         from jupyter_client.manager import KernelManager
-        from nbval.kernel import NbvalKernelspecManager
 
         state = _require_state()
         notebook = _current_notebook.get()
@@ -210,7 +255,7 @@ class IpcRunningKernel(RunningKernel):
                 offset = self.stderr_log.stat().st_size
                 km = KernelManager(
                     kernel_name=kernel_name,
-                    kernel_spec_manager=NbvalKernelspecManager(),
+                    kernel_spec_manager=_ForkingSpecManager(),
                     transport="ipc",
                     ip=prefix,
                     connection_file=prefix + ".json",
@@ -262,6 +307,27 @@ class IpcRunningKernel(RunningKernel):
             self._log.close()
 
 
+class _ForkingSpecManager(NbvalKernelspecManager):
+    """nbval's kernel spec manager; with ``--nbval-kernel-preload`` a plain ipykernel spec
+    (``python [flags] -m ipykernel_launcher -f {connection_file}``) is started through the
+    fork server of ``tests/kernel_forkserver.py``."""
+
+    def get_kernel_spec(self, kernel_name: str) -> Any:
+        spec = super().get_kernel_spec(kernel_name)
+        state = _require_state()
+        argv = list(spec.argv)
+        tail = ["-m", "ipykernel_launcher", "-f", "{connection_file}"]
+        if not state.preload or len(argv) < 5 or argv[-4:] != tail:
+            return spec
+        sock = state.forkserver(tuple(argv[:-4]))
+        if sock is None:
+            return spec
+        fallback = argv[:-2]
+        spec.argv = [argv[0], "-I", "-S", str(FORKSERVER), "stub", sock, str(len(fallback))]
+        spec.argv += [*fallback, "-f", "{connection_file}"]
+        return spec
+
+
 def _require_state() -> _State:
     if _state is None:
         raise RuntimeError("nbval_kernel: plugin used before pytest_configure")
@@ -275,6 +341,12 @@ def pytest_addoption(parser: pytest.Parser) -> None:
         default=None,
         help="directory for the notebook kernels' stderr logs "
         "(default: build/nbval-kernel-logs under the rootdir)",
+    )
+    parser.getgroup("nbval").addoption(
+        "--nbval-kernel-preload",
+        default="",
+        help="comma-separated modules a fork server imports once; each ipykernel kernel is "
+        "then forked from it (tests/kernel_forkserver.py); default: none, no fork server",
     )
 
 
@@ -294,6 +366,7 @@ def pytest_configure(config: pytest.Config) -> None:
     option = config.getoption("nbval_kernel_log_dir")
     log_dir = Path(option) if option else config.rootpath / "build" / "nbval-kernel-logs"
     _state = _State(log_dir.resolve(), config.rootpath.resolve())
+    _state.preload = [m for m in config.getoption("nbval_kernel_preload").split(",") if m]
     _original_running_kernel = current
     nbval.plugin.RunningKernel = IpcRunningKernel
 
@@ -306,6 +379,7 @@ def pytest_unconfigure(config: pytest.Config) -> None:
     if _original_running_kernel is not None:
         nbval.plugin.RunningKernel = _original_running_kernel
     if _state is not None:
+        _state.stop_forkservers()
         shutil.rmtree(_state.ipc_dir, ignore_errors=True)
         _state = None
 

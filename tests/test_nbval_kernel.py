@@ -71,6 +71,17 @@ sys.argv[0] = "ipykernel_launcher"
 runpy.run_module("ipykernel_launcher", run_name="__main__")
 """
 
+# Imported by the fork server (--nbval-kernel-preload preloaded_marker), not by the kernel.
+PRELOADED_MARKER = "import os\nIMPORTED_BY, PARENT = os.getpid(), os.getppid()\n"
+FORK_CELL = textwrap.dedent(
+    """\
+    import sys
+    marker = sys.modules.get("preloaded_marker")
+    print(marker is not None and os.getppid() == marker.IMPORTED_BY)
+    print(os.path.exists("ipc.ipynb"), os.environ.get("JPY_PARENT_PID") == str(marker.PARENT))
+    """
+)
+
 TRANSPORT_CELL = textwrap.dedent(
     """\
     import json
@@ -134,6 +145,7 @@ def _start(
     args += ["--nbval-kernel-startup-timeout", str(timeout), "-W", "always::UserWarning"]
     if "nbval_kernel" in plugins:
         args += ["--nbval-kernel-log-dir", str(tmp / f"{name}-logs")]
+        args += ["--nbval-kernel-preload", "preloaded_marker"]
     return subprocess.Popen(
         [*args, *notebooks],
         cwd=tmp,
@@ -161,13 +173,19 @@ def workdir(tmp_path_factory: pytest.TempPathFactory) -> Path:
     tmp = tmp_path_factory.mktemp("nbval_kernel")
     (tmp / "pytest.ini").write_text("[pytest]\n")
     (tmp / "port_clash.py").write_text(PORT_CLASH)
+    (tmp / "preloaded_marker.py").write_text(PRELOADED_MARKER)
     script = tmp / "crashing_kernel.py"
     script.write_text(CRASHING_KERNEL)
     _kernelspec(tmp / "share", "crash_once", "once", tmp / "crash_once.marker", script)
     _kernelspec(tmp / "share", "crash_always", "always", tmp / "crash_always.marker", script)
     two = ("x = 1 + 1\nprint(x)", "2\n")
     _notebook(tmp / "tcp.ipynb", "python3", [two])
-    _notebook(tmp / "ipc.ipynb", "python3", [("import os", ""), (TRANSPORT_CELL, "ipc True 1\n")])
+    ipc = [
+        ("import os", ""),
+        (TRANSPORT_CELL, "ipc True 1\n"),
+        (FORK_CELL, "True\nTrue True\n"),
+    ]
+    _notebook(tmp / "ipc.ipynb", "python3", ipc)
     _notebook(tmp / "once.ipynb", "crash_once", [two])
     _notebook(tmp / "always.ipynb", "crash_always", [two])
     return tmp
@@ -210,6 +228,12 @@ def test_plugin_runs_over_ipc_retries_a_dying_kernel_and_gives_up_naming_the_log
     # compares it to "ipc ...".
     assert ipc_session.outcomes["ipc.ipynb::Cell 0"] == "passed", out
     assert ipc_session.outcomes["ipc.ipynb::Cell 1"] == "passed", out
+    # The python3 kernel was forked from the fork server (which imported the preload list), runs
+    # in the notebook's directory and has the environment jupyter_client gave the kernel process
+    # (JPY_PARENT_PID: the pytest process, the server's parent; the server's own has none).
+    assert ipc_session.outcomes["ipc.ipynb::Cell 2"] == "passed", out
+    # the crashing kernels' specs are not plain ipykernel ones: they start as processes
+    assert "kernel_forkserver" not in (ipc_session.log_dir / "once.ipynb.stderr.log").read_text()
     assert ipc_session.ports_chosen == 0, "the plugin's path asked jupyter_client for TCP ports"
 
     # A kernel that dies at its first start is started again.
