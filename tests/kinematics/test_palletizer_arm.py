@@ -53,7 +53,8 @@ def test_the_shared_solver_enforces_the_elbow_stop(rng, backend):
     inside = grasp_points(rng, rng.uniform(5.0, STOP - 0.5, 400), 400)
     beyond = grasp_points(rng, rng.uniform(STOP + 0.5, L1 + L2 - 0.5, 400), 400)
     outside = grasp_points(rng, rng.uniform(L1 + L2 + 0.5, L1 + L2 + 50, 100), 100)
-    sol = ARM.solve(np.vstack([inside, beyond, outside]), "all", backend=backend)
+    front = ("front-up", "front-down")  # the waist facing the grasp point
+    sol = ARM.solve(np.vstack([inside, beyond, outside]), front, backend=backend)
     assert (sol.status[:400] == Status.OK).all()
     assert (sol.status[400:800] == Status.JOINT_LIMITS).all()
     assert (sol.status[800:] == Status.OUT_OF_REACH).all()  # reach is checked first
@@ -62,10 +63,19 @@ def test_the_shared_solver_enforces_the_elbow_stop(rng, backend):
     t3 = sol.theta[:400, 0, 2]
     assert ((t3 >= math.pi / 2) & (t3 <= math.pi)).all()
     # the same targets without the limits: both branches solve, elbow-down mirrors theta3
-    free = ARM.solve(np.vstack([inside, beyond]), "all", limits=False, backend=backend)
+    free = ARM.solve(np.vstack([inside, beyond]), front, limits=False, backend=backend)
     assert (free.status == Status.OK).all() and free.ok.all()
     np.testing.assert_allclose(free.theta[:, 1, 2], -free.theta[:, 0, 2], atol=1e-12)
     np.testing.assert_allclose(free.theta[:400, 0], sol.theta[:400, 0], atol=0.0)
+    # reaching back over the base: the wrist lies rho + L3 behind the axis; "back-up" is in
+    # the stop exactly where that wrist is within sqrt(L1^2 + L2^2), "back-down" never
+    P = np.vstack([inside, beyond, outside])
+    back = ARM.solve(P, ("back-up", "back-down"), backend=backend)
+    rho = np.hypot(P[:, 0], P[:, 1])
+    d_back = np.hypot(rho + L3, P[:, 2] + H)
+    far = np.abs(d_back - STOP) > 1e-6
+    np.testing.assert_array_equal(back.ok[far, 0], (d_back < STOP)[far])
+    assert not back.ok[:, 1].any()
 
 
 def test_the_initial_pose_sits_on_the_stop_and_is_admitted():

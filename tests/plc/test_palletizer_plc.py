@@ -64,7 +64,7 @@ def test_sweep_covers_every_status(targets):
         "cut",
     }
     xyz = targets[["x_mm", "y_mm", "z_mm"]].to_numpy()
-    sol = ARM.solve(xyz[np.isfinite(xyz).all(axis=1)])
+    sol = ARM.solve(xyz[np.isfinite(xyz).all(axis=1)], "front-up")  # the program's branch
     assert set(np.unique(sol.status)) == {0, 1, 3, 4, 5}
 
 

@@ -20,6 +20,7 @@ import numpy.typing as npt
 import sympy as sp
 
 from analysis.kinematics.arm import Arm
+from analysis.kinematics.arms.palletizer import BRANCHES as BRANCHES
 from analysis.kinematics.dh import DHRow, DHTable, link_transform_sym
 from analysis.papers import palletizer as paper
 
@@ -247,33 +248,12 @@ def miss(arm: Arm, target, q, eq11: str = "product") -> npt.NDArray[np.float64]:
     return np.where(ok, np.linalg.norm(tip - np.asarray(target, float), axis=-1), np.nan)
 
 
-BRANCHES = ("front-up", "front-down", "back-up", "back-down")
-
-
 def all_ik(arm: Arm, target: npt.ArrayLike) -> npt.NDArray[np.float64]:
-    """All D-H solutions (..., 4 branches, 4 angles) [rad] with the gripper level, NaN where
-    a branch does not reach. Branches :data:`BRANCHES`: the waist facing the target
-    (gamma = atan2) or turned by pi (the arm reaching back over its base), the elbow above
-    ("up", theta3 > 0) or below the shoulder-wrist line."""
-    p = np.asarray(target, dtype=float)
-    x0, y0, z0 = np.moveaxis(p, -1, 0)
-    L1, L2, L3, h = lengths(arm)
-    rho, zw = np.hypot(x0, y0), z0 + h
-    g = np.arctan2(y0, x0)
-    out = []
-    for waist, w in ((g, rho - L3), (g + np.pi, -rho - L3)):
-        L4 = np.hypot(w, zw)
-        with np.errstate(invalid="ignore", divide="ignore"):
-            a1 = np.arccos((L1**2 + L4**2 - L2**2) / (2 * L1 * L4))
-            b1 = np.arccos((L1**2 + L2**2 - L4**2) / (2 * L1 * L2))
-        elev = np.arctan2(zw, w)
-        for sign in (1.0, -1.0):
-            t2 = -(elev + sign * a1)
-            t3 = sign * (np.pi - b1)
-            t4 = np.pi / 2 - (t2 + t3)
-            t1 = np.mod(waist + np.pi, 2 * np.pi) - np.pi
-            out.append(np.stack([t1, t2, t3, t4], axis=-1))
-    return np.stack(out, axis=-2)
+    """All solutions (..., 4 branches, 4 angles) [rad] with the gripper level, NaN where a
+    branch does not reach, joint limits not applied: the arm's own closed form
+    (:mod:`analysis.kinematics.arms.palletizer`, branches ``arm.branches``: the waist facing
+    the target or turned by pi, the elbow above or below the shoulder-wrist line)."""
+    return arm.solve(np.asarray(target, dtype=float), "all", limits=False).theta
 
 
 def uniqueness_counts(arm: Arm, targets: npt.ArrayLike) -> dict[str, npt.NDArray]:
@@ -292,6 +272,7 @@ def uniqueness_counts(arm: Arm, targets: npt.ArrayLike) -> dict[str, npt.NDArray
     t3 = np.where(ok, q[..., 2], np.nan)
     beta1 = np.pi - np.abs(t3)
     lim = arm.limits[2] or (-np.inf, np.inf)
+    front = arm.branches.index("front-up")  # the waist facing the target (eq. 6)
     with np.errstate(invalid="ignore"):
         stop = ok & (t3 >= lim[0]) & (t3 <= lim[1])
         return {
@@ -299,9 +280,9 @@ def uniqueness_counts(arm: Arm, targets: npt.ArrayLike) -> dict[str, npt.NDArray
             "interior<90": (ok & (beta1 < np.pi / 2)).sum(-1),
             "between-directions<90": (ok & (np.abs(t3) < np.pi / 2)).sum(-1),
             "elbow-up": (ok & (t3 > 0)).sum(-1),
-            "elbow-up+front": (ok[..., 0] & (t3[..., 0] > 0)).astype(int),
+            "elbow-up+front": (ok[..., front] & (t3[..., front] > 0)).astype(int),
             "stop": stop.sum(-1),
-            "stop+front": stop[..., 0].astype(int),
+            "stop+front": stop[..., front].astype(int),
         }
 
 

@@ -80,7 +80,7 @@ def target_values() -> dict[str, np.ndarray]:
     arm = palletizer_arm()
     G = _targets()
     L1, L2, L3, h = chk.lengths(arm)
-    q = arm.solve(G).branch("elbow-up")
+    q = arm.solve(G).branch("front-up")
     frames = arm.frames(q)
     shoulder, elbow, wrist = frames[:, 2], frames[:, 3], frames[:, 4]
     a, b = shoulder - elbow, wrist - elbow

@@ -17,19 +17,24 @@ and, with eq. 12 corrected to keep the gripper level (theta4 = pi/2 - (theta2 + 
 ============  =======================  ===============  ==================================
 branch        theta2                   theta3           theta4
 ============  =======================  ===============  ==================================
-elbow-up      -(alpha1 + alpha2)       pi - beta1       alpha1 + alpha2 + beta1 - pi/2
-elbow-down    alpha1 - alpha2          beta1 - pi       alpha2 - alpha1 - beta1 - pi/2
+front-up      -(alpha1 + alpha2)       pi - beta1       alpha1 + alpha2 + beta1 - pi/2
+front-down    alpha1 - alpha2          beta1 - pi       alpha2 - alpha1 - beta1 - pi/2
 ============  =======================  ===============  ==================================
 
-theta1 = gamma for both. "elbow-up" is the paper's pose (eq. 4: alpha = alpha1 + alpha2 -
-pi/2, beta = pi/2 - beta1, motor angles -> D-H angles by eq. 12). theta1, theta2, theta4
-are wrapped to (-pi, pi]; theta3 is not (branch-signed, continuous at the stretched arm).
-Refused: out of reach (L4 > L1 + L2), inside the inner reach (L4 < |L1 - L2|), on the base
-axis (rho = 0: gamma undefined), and, in the isosceles family L1 = L2, the wrist on the
-shoulder (L4 = 0: alpha2 undefined; status "degenerate"). The description adds the elbow stop
-of sec. 2, theta3 in [90, 180] deg (``data/arms/palletizer.toml``, reasons there), which the
-shared solver and the generated PLC program apply after these refusals (status "joint
-limits"): with it only "elbow-up" solves, for wrist distances up to sqrt(L1^2 + L2^2).
+theta1 = gamma for both. "front-up" (the elbow above the shoulder-wrist line) is the paper's
+pose (eq. 4: alpha = alpha1 + alpha2 - pi/2, beta = pi/2 - beta1, motor angles -> D-H angles
+by eq. 12). "back-up" and "back-down" turn the waist to gamma + pi and reach back over the
+base: the same formulas with the wrist at w = -rho - L3 in the arm plane. These four are every
+solution with the gripper level; section 2's claim that the pose is unique is audited against
+them (:mod:`analysis.audit.palletizer_derivations`). theta1, theta2, theta4 are wrapped to
+(-pi, pi]; theta3 is not (branch-signed, continuous at the stretched arm).
+Refused: out of reach (L4 > L1 + L2), inside the inner reach (L4 < |L1 - L2|), each for the
+branch's own wrist; on the base axis (rho = 0: gamma undefined); and, in the isosceles family
+L1 = L2, the wrist on the shoulder (L4 = 0: alpha2 undefined; status "degenerate"). The
+description adds the elbow stop of sec. 2, theta3 in [90, 180] deg
+(``data/arms/palletizer.toml``, reasons there), which the shared solver and the generated PLC
+program apply after these refusals (status "joint limits"): with it only the "up" branches
+solve, for wrist distances up to sqrt(L1^2 + L2^2).
 """
 
 from __future__ import annotations
@@ -38,7 +43,10 @@ from analysis.kinematics.status import Status
 
 __all__ = ["BRANCHES", "INPUTS", "check", "geometry", "ik", "refusal"]
 
-BRANCHES = ("elbow-up", "elbow-down")
+BRANCHES = ("front-up", "front-down", "back-up", "back-down")
+"""The waist facing the grasp point (front, eqs. 1 and 6) or turned by pi (back: the arm
+reaches over its base); the elbow above the shoulder-wrist line (up, theta3 > 0: the
+paper's pose) or below it."""
 INPUTS = ("px", "py", "pz")
 """The grasp point G = (X0, Y0, Z0) [mm] in the base frame."""
 
@@ -63,43 +71,36 @@ def geometry(P) -> dict:
 
 
 def ik(m, p, P, *, tol, axis_tol=None, margin_rad=0.0, theta1_on_axis=None):
-    """Both elbow branches for grasp point ``p`` [mm] (corrected eqs. 1-6 and 12).
+    """The four solutions for grasp point ``p`` [mm] (corrected eqs. 1-6 and 12).
 
-    Returns ``branches`` {name: (theta1..theta4)} [rad], ``refusals`` in priority order and
-    ``outside`` (signed distance of the wrist outside its reach [mm]). ``tol`` is the
-    distance tolerance at the reach shells, ``axis_tol`` (default ``tol``) at the base axis
-    and the shoulder; ``margin_rad`` is unused (no angular tolerance; see
-    :mod:`analysis.kinematics.arms`).
+    Returns ``branches`` {name: (theta1..theta4)} [rad], ``refusals`` of the grasp point in
+    priority order, ``branch_refusals`` {name: [...]} (the front and back wrists lie at
+    different distances from the shoulder), and ``outside`` (signed distance of the nearer
+    wrist outside its reach [mm]). ``tol`` is the distance tolerance at the reach shells,
+    ``axis_tol`` (default ``tol``) at the base axis and the shoulder; ``margin_rad`` is
+    unused (no angular tolerance; see :mod:`analysis.kinematics.arms`).
 
     Examples
     --------
     >>> from analysis.kinematics.ops import numpy_ops as m
     >>> P = {"L1": 200.0, "L2": 200.0, "L3": 50.0, "h": 70.0}
     >>> r = ik(m, (250.0, 0.0, 100.0), P, tol=1e-6)
-    >>> [round(float(m.degrees(t)), 2) for t in r["branches"]["elbow-up"]]
+    >>> [round(float(m.degrees(t)), 2) for t in r["branches"]["front-up"]]
     [0.0, -89.35, 97.98, 81.38]
+    >>> [round(float(m.degrees(t)), 2) for t in r["branches"]["back-up"]]
+    [180.0, 179.09, 60.91, -149.99]
     """
     x, y, z = p
     L1, L2, L3, h = P["L1"], P["L2"], P["L3"], P["h"]
     outer = m.let("outer", L1 + L2)
     inner = m.let("inner", m.abs(L1 - L2))
-    m.section("reach check: |L1 - L2| <= L4 <= L1 + L2 (eq. 2)")
+    axis_tol = tol if axis_tol is None else axis_tol
+    m.section("reach box; gamma = atan2(Y0, X0) (eqs. 1, 6); the base axis")
     zw = m.let("zw", z + h)
     box = outer + L3 + tol
     out_box = m.any_(m.gt(m.abs(x), box), m.gt(m.abs(y), box), m.gt(m.abs(zw), outer + tol))
     rho = m.let("rho", m.sqrt(x * x + y * y))
-    w = m.let("w", rho - L3)
-    l4sq = m.let("L4sq", w * w + zw * zw)
-    l4 = m.let("L4", m.sqrt(l4sq))
-    beyond = m.let("beyond", l4 - outer)
-    within = m.let("within", inner - l4)
-    refusals = [
-        (Status.OUT_OF_REACH, out_box),
-        (Status.OUT_OF_REACH, m.gt(beyond, tol)),
-        (Status.INSIDE_REACH, m.gt(within, tol)),
-    ]
-    m.section("gamma = atan2(Y0, X0) (eqs. 1, 6); the base axis")
-    axis_tol = tol if axis_tol is None else axis_tol
+    refusals = [(Status.OUT_OF_REACH, out_box)]
     on_axis = m.le(rho, axis_tol)
     gamma = m.atan2(y, x)
     if theta1_on_axis is None:
@@ -107,33 +108,55 @@ def ik(m, p, P, *, tol, axis_tol=None, margin_rad=0.0, theta1_on_axis=None):
     else:
         gamma = m.select(on_axis, theta1_on_axis, gamma)
     gamma = m.let("theta1", m.wrap(gamma))
-    wrist_on_shoulder = m.le(l4, axis_tol)
-    refusals.append((Status.DEGENERATE, wrist_on_shoulder))
-    m.section("alpha1, alpha2, beta1 (eq. 3)")
-    l4safe = m.select(wrist_on_shoulder, 1.0, l4)
-    ca1 = m.clip((L1 * L1 - L2 * L2 + l4sq) / (2.0 * L1 * l4safe), -1.0, 1.0)
-    a1 = m.let("alpha1", m.acos(ca1))
-    a2 = m.let("alpha2", m.atan2(zw, w))
-    cb1 = m.clip(((L1 * L1 + L2 * L2) - l4sq) / (2.0 * L1 * L2), -1.0, 1.0)
-    b1 = m.let("beta1", m.acos(cb1))
-    m.section("D-H angles (eq. 12, gripper kept level)")
-    s12 = m.let("alpha12", a1 + a2)
-    branches = {
-        "elbow-up": (
-            gamma,
-            m.let("theta2", m.wrap(-s12)),
-            m.let("theta3", m.pi - b1),
-            m.let("theta4", m.wrap((s12 + b1) - m.pi / 2)),
-        ),
-        "elbow-down": (
-            gamma,
+    branches, branch_refusals, outside = {}, {}, {}
+    # the wrist in the arm plane: the waist facing the grasp point (front) or turned by pi,
+    # the arm reaching back over its base (back: the wrist lies rho + L3 behind the axis)
+    for side, w_expr, theta1 in (
+        ("front", rho - L3, gamma),
+        ("back", -rho - L3, m.wrap(gamma + m.pi)),
+    ):
+        m.section(f"{side}: reach check |L1 - L2| <= L4 <= L1 + L2 (eq. 2)")
+        w = m.let(f"w_{side}", w_expr)
+        l4sq = m.let(f"L4sq_{side}", w * w + zw * zw)
+        l4 = m.let(f"L4_{side}", m.sqrt(l4sq))
+        beyond = m.let(f"beyond_{side}", l4 - outer)
+        within = m.let(f"within_{side}", inner - l4)
+        conds = [  # computed in priority order (the PLC program tests them in this order)
+            (Status.OUT_OF_REACH, m.gt(beyond, tol)),
+            (Status.INSIDE_REACH, m.gt(within, tol)),
+        ]
+        wrist_on_shoulder = m.le(l4, axis_tol)
+        conds.append((Status.DEGENERATE, wrist_on_shoulder))
+        m.section(f"{side}: alpha1, alpha2, beta1 (eq. 3)")
+        l4safe = m.select(wrist_on_shoulder, 1.0, l4)
+        ca1 = m.clip((L1 * L1 - L2 * L2 + l4sq) / (2.0 * L1 * l4safe), -1.0, 1.0)
+        a1 = m.let(f"alpha1_{side}", m.acos(ca1))
+        a2 = m.let(f"alpha2_{side}", m.atan2(zw, w))
+        cb1 = m.clip(((L1 * L1 + L2 * L2) - l4sq) / (2.0 * L1 * L2), -1.0, 1.0)
+        b1 = m.let(f"beta1_{side}", m.acos(cb1))
+        m.section(f"{side}: D-H angles (eq. 12, gripper kept level)")
+        s12 = m.let(f"alpha12_{side}", a1 + a2)
+        branches[f"{side}-up"] = (
+            theta1,
+            m.let(f"theta2_{side}", m.wrap(-s12)),
+            m.let(f"theta3_{side}", m.pi - b1),
+            m.let(f"theta4_{side}", m.wrap((s12 + b1) - m.pi / 2)),
+        )
+        branches[f"{side}-down"] = (
+            theta1,
             m.wrap(a1 - a2),
             b1 - m.pi,
             m.wrap(((a2 - a1) - b1) - m.pi / 2),
-        ),
+        )
+        branch_refusals[f"{side}-up"] = branch_refusals[f"{side}-down"] = conds
+        outside[side] = m.select(m.gt(beyond, within), beyond, within)
+    out_f, out_b = outside["front"], outside["back"]
+    return {
+        "branches": branches,
+        "refusals": refusals,
+        "branch_refusals": branch_refusals,
+        "outside": m.select(m.lt(out_f, out_b), out_f, out_b),
     }
-    outside = m.select(m.gt(beyond, within), beyond, within)
-    return {"branches": branches, "refusals": refusals, "outside": outside}
 
 
 def refusal(status: Status, p, P, *, tol: float, distance: float) -> tuple[str, float]:
