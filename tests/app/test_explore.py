@@ -298,7 +298,7 @@ def test_explorer_fk_mode(arm):
     assert ex.report.row()["theta1_deg"] == pytest.approx(30.0, abs=1e-9)
     # the stretched arm: margin 0, printed as 0.0 (never "-0.0 mm")
     t1.value, t2.value, t3.value = 0.0, 0.0, 0.0
-    assert "margin to the reach boundary 0.0 mm" in ex.message.value
+    assert "reach margin 0.0 mm" in ex.message.value
     assert "-0.0" not in ex.message.value and "-0.00" not in ex.table.value
     t1.value, t2.value, t3.value = 30.0, 20.0, -60.0
     ex.fk_mode.value = False  # back to IK: the target sliders take the FK point

@@ -337,8 +337,8 @@ def pose_report(
         pulses = ", ".join(str(int(r[f"c{j}"])) for j in range(1, n + 1))
         message = (
             f"{branch}: θ = ({angles})° -> pulses ({pulses}); whole pulses put the gripper "
-            f"{num(r['error_mm'], 3)} mm off the target; margin to the reach boundary "
-            f"{num(max(-outside, 0.0), 1)} mm"
+            f"{num(r['error_mm'], 3)} mm off the target; reach margin "
+            f"{num(max(-outside, 0.0), 1)} mm (the largest over the branches' wrists)"
         )
     return PoseReport(key, branch, True, outside, message, None, table, status, arm.name)
 
