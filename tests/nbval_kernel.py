@@ -205,6 +205,48 @@ def _tail(path: Path, start: int = 0, lines: int = TAIL_LINES) -> str:
     return "\n".join(kept[-lines:])
 
 
+def _wait_for_ready(km: Any, kc: Any, timeout: float) -> None:
+    """``kc.wait_for_ready(timeout)`` with the kernel's death noticed within 0.1 s.
+
+    jupyter_client 8.10's loop (``KernelClient._async_wait_for_ready``) sends ``kernel_info``,
+    waits up to 1 s for the reply and only then asks whether the kernel is alive: a kernel that
+    crashes at start-up costs a second per start. Same protocol here (ready = a
+    ``kernel_info_reply`` and then any IOPub message, which shows IOPub is connected; then
+    IOPub is flushed), with the shell polled every 0.1 s and ``kernel_info`` re-sent every
+    second, as there. Raises RuntimeError with jupyter_client's messages."""
+    from queue import Empty
+
+    deadline = time.monotonic() + timeout
+    resend = 0.0
+    while True:
+        if time.monotonic() >= resend:
+            kc.kernel_info()
+            resend = time.monotonic() + 1.0
+        try:
+            msg = kc.get_shell_msg(timeout=0.1)
+        except Empty:
+            msg = None
+        if msg is not None and msg["msg_type"] == "kernel_info_reply":
+            try:
+                kc.get_iopub_msg(timeout=0.2)
+            except Empty:
+                resend = 0.0  # IOPub not connected yet: ask again
+            else:
+                handle = getattr(kc, "_handle_kernel_info_reply", None)
+                if handle is not None:  # protocol version adaptation, as jupyter_client does
+                    handle(msg)
+                break
+        if not km.is_alive():
+            raise RuntimeError("Kernel died before replying to kernel_info")
+        if time.monotonic() > deadline:
+            raise RuntimeError(f"Kernel didn't respond in {timeout:g} seconds")
+    while True:  # flush IOPub
+        try:
+            kc.get_iopub_msg(timeout=0.2)
+        except Empty:
+            break
+
+
 def _exit_code(km: Any) -> int | None:
     """The kernel process's exit code, if the manager has a finished process."""
     process = getattr(getattr(km, "provisioner", None), "process", None)
@@ -264,7 +306,7 @@ class IpcRunningKernel(RunningKernel):
                 kc = km.client()
                 kc.start_channels()
                 try:
-                    kc.wait_for_ready(timeout=startup_timeout)
+                    _wait_for_ready(km, kc, startup_timeout)
                 except RuntimeError as exc:
                     died = not km.is_alive()
                     code = _exit_code(km)

@@ -191,38 +191,35 @@ def workdir(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return tmp
 
 
-# One test per session: under ``pytest -n 2`` (plain ``--dist load``) tests of one module may
-# land on both workers, and a module fixture shared by tests on both would run its session twice.
-# (``--dist loadgroup`` would pin them to one worker, but with pytest 9.2 and xdist 3.8 it silently
-# stops grouping: pytest-dev/pytest-xdist#1386.)
+# Both sessions run at once (the TCP one mostly waits out its startup timeout), from one
+# fixture used by one test: under ``pytest -n 2`` tests of one module may land on both workers,
+# and a module fixture shared by tests on both would run its sessions twice. (``--dist
+# loadgroup`` would pin them to one worker, but with pytest 9.2 and xdist 3.8 it silently stops
+# grouping: pytest-dev/pytest-xdist#1386.)
 @pytest.fixture(scope="module")
-def tcp_session(workdir: Path) -> Session:
-    """nbval's own TCP kernel start under the clash.
+def sessions(workdir: Path) -> tuple[Session, Session]:
+    """(tcp, ipc): nbval's own TCP kernel start under the clash, and the plugin's IPC start
+    under the clash with a crash-once and a crash-always kernel.
 
-    Its kernel never answers, and nbval waits out the startup timeout before reporting the
-    death: 5 s keeps the test short (the plugin's session keeps 30 s for real starts)."""
-    proc = _start(workdir, "tcp", ["tcp.ipynb"], ["port_clash"], timeout=5)
-    return _finish(workdir, "tcp", proc)
-
-
-@pytest.fixture(scope="module")
-def ipc_session(workdir: Path) -> Session:
-    """The plugin's IPC start under the clash, with a crash-once and a crash-always kernel."""
+    The TCP session's kernel never answers, and nbval waits out the startup timeout before
+    reporting the death: 5 s keeps it short (the plugin's session keeps 30 s for real starts)."""
+    tcp = _start(workdir, "tcp", ["tcp.ipynb"], ["port_clash"], timeout=5)
     notebooks = ["ipc.ipynb", "once.ipynb", "always.ipynb"]
-    proc = _start(workdir, "ipc", notebooks, ["port_clash", "nbval_kernel"])
-    return _finish(workdir, "ipc", proc)
+    ipc = _start(workdir, "ipc", notebooks, ["port_clash", "nbval_kernel"])
+    return _finish(workdir, "tcp", tcp), _finish(workdir, "ipc", ipc)
 
 
-def test_tcp_path_dies_when_a_chosen_port_is_taken(tcp_session: Session) -> None:
+def test_a_taken_port_kills_the_tcp_kernel_and_the_plugin_survives_it(
+    sessions: tuple[Session, Session],
+) -> None:
+    tcp_session, ipc_session = sessions
+    # nbval's own path: the kernel dies
     assert tcp_session.ports_chosen == 5, tcp_session.output
     assert tcp_session.outcomes == {"tcp.ipynb::Cell 0": "error"}, tcp_session.output
     assert "Kernel died before replying to kernel_info" in tcp_session.output
     assert tcp_session.returncode == 1
 
-
-def test_plugin_runs_over_ipc_retries_a_dying_kernel_and_gives_up_naming_the_log(
-    ipc_session: Session,
-) -> None:
+    # the plugin's path: IPC, a retry, and a clear error naming the log
     out = ipc_session.output
     # Despite taken ports: the second cell prints the transport as the kernel sees it; nbval
     # compares it to "ipc ...".
