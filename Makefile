@@ -12,6 +12,10 @@ NB_BACKEND := module://matplotlib_inline.backend_inline
 # about 1 s of CPU less per notebook. Only modules that do not capture their surroundings at import.
 NB_PRELOAD := numpy,sympy,matplotlib,numba,pinocchio
 export PYTHONHASHSEED := 0
+# Bytecode caches (src/, the venv, and pytest's rewritten test modules) are written and reused:
+# an environment that sets PYTHONDONTWRITEBYTECODE would recompile them in every process (every
+# xdist worker and notebook kernel), about 1 s each.
+unexport PYTHONDONTWRITEBYTECODE
 
 .PHONY: all venv test test-fast test-browser report bench lab lint clean
 
