@@ -129,6 +129,18 @@ def test_rpy_is_rz_ry_rx_and_its_inverse(rng):
         rpy.matrix_from_rpy([1.0, 2.0])
 
 
+@pytest.mark.parametrize("beta_deg", [90.0, -90.0, 90.0 - 1e-9, -90.0 + 1e-9])
+def test_rpy_inverse_at_gimbal_lock_gives_the_same_rotation(rng, beta_deg):
+    """At beta = +-90 deg only gamma -+ alpha is defined: eq. 3.18's atan2 of two round-off
+    zeros used to give an alpha and a gamma of different rotations (up to 180 deg apart)."""
+    a = rng.uniform(-np.pi, np.pi, (500, 3))
+    a[:, 1] = math.radians(beta_deg)
+    R = rpy.matrix_from_rpy(a)
+    back = rpy.rpy_from_matrix(R)
+    assert_allclose(rpy.rotation_angle(R, rpy.matrix_from_rpy(back)), 0.0, 1e-6, "round trip")
+    assert_allclose(back[:, 1], a[:, 1], 1e-6, "beta")
+
+
 # --- the closed form: FK(IK(pose)) = pose, all backends -----------------------------------------
 def test_ik_of_fk_recovers_every_configuration(arm, configs):
     T = arm.table.fk(configs)

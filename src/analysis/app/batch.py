@@ -1,6 +1,7 @@
 """Batch inverse kinematics from CSV to CSV, streamed in chunks with constant memory.
 
-``ik --input IN.csv --output OUT.csv``: the input is read strictly
+``ik --input IN.csv --output OUT.csv``: the input (columns :func:`input_columns`: x_mm,
+y_mm, z_mm; for a pose also its angles in degrees) is read strictly
 (:func:`analysis.app.safe_io.iter_table_chunks`: a missing, duplicate or ragged column is an
 error naming its true line), solved chunk by chunk, and written to a temporary file that
 replaces the output only when everything succeeded (:func:`~analysis.app.safe_io.
@@ -26,11 +27,27 @@ from analysis.kinematics.arm import Arm
 from analysis.kinematics.pulses import angles_to_pulses
 from analysis.kinematics.status import STATUS_TEXT, Status
 
-__all__ = ["INPUT_COLUMNS", "WRITE_ROWS", "output_columns", "solve_csv"]
+__all__ = ["INPUT_COLUMNS", "WRITE_ROWS", "input_columns", "output_columns", "solve_csv"]
 
 INPUT_COLUMNS = ("x_mm", "y_mm", "z_mm")
+"""The columns of a point target (every arm's first three inputs, px, py, pz)."""
 WRITE_ROWS = 25_000
 """Targets formatted at a time (bounds the memory of the text being written)."""
+
+
+def input_columns(arm: Arm) -> tuple[str, ...]:
+    """The input CSV's columns for ``arm``: ``x_mm, y_mm, z_mm``, then any angle of a pose in
+    degrees, as on the command line (the GR-1: ``alpha_deg, beta_deg, gamma_deg``, RPY).
+
+    >>> from analysis.kinematics.arm import load_arm
+    >>> input_columns(load_arm("gr1"))
+    ('x_mm', 'y_mm', 'z_mm', 'alpha_deg', 'beta_deg', 'gamma_deg')
+    """
+    point = dict(zip(("px", "py", "pz"), INPUT_COLUMNS, strict=True))
+    return tuple(
+        point.get(name) or f"{name}_{'deg' if unit == 'rad' else unit}"
+        for name, unit in zip(arm.inputs, arm.input_units, strict=True)
+    )
 
 
 def output_columns(arm: Arm) -> list[str]:
@@ -97,19 +114,27 @@ def solve_csv(
     check_paths(inputs=[p for p in (input_path, params) if p], outputs=[output_path],
                 make_parents=True)  # fmt: skip
     names = arm.branch_names(branch or arm.branches[0])
+    columns = input_columns(arm)
+    degrees = [unit == "rad" for unit in arm.input_units]
     counts: Counter = Counter()
     total = solved = 0
     with atomic_writer(output_path, newline="", make_parents=True) as fh:
         first = True
         for _, cols in iter_table_chunks(
             input_path,
-            required=INPUT_COLUMNS,
-            numeric=INPUT_COLUMNS,
+            required=columns,
+            numeric=columns,
             allow_extra=True,
             chunk_rows=chunk_rows,
         ):
             header = list(cols)
-            p_all = np.stack([cols[c] for c in INPUT_COLUMNS], axis=-1)
+            p_all = np.stack(
+                [
+                    np.radians(cols[c]) if d else cols[c]
+                    for c, d in zip(columns, degrees, strict=True)
+                ],
+                axis=-1,
+            )
             for s in range(0, len(p_all), WRITE_ROWS):
                 part = {k: v[s : s + WRITE_ROWS] for k, v in cols.items()}
                 p = p_all[s : s + WRITE_ROWS]
@@ -123,7 +148,7 @@ def solve_csv(
         if first:  # no data rows: the header alone
             import pandas as pd
 
-            pd.DataFrame(columns=[*INPUT_COLUMNS, *output_columns(arm)]).to_csv(fh, index=False)
+            pd.DataFrame(columns=[*columns, *output_columns(arm)]).to_csv(fh, index=False)
     return {
         "input": str(input_path),
         "output": str(output_path),

@@ -22,7 +22,6 @@ from pathlib import Path
 __all__ = ["build_parser", "main"]
 
 PROG = "python -m analysis"
-INPUT_COLUMNS = ("x_mm", "y_mm", "z_mm")
 EPILOG = """examples:
   python -m analysis ik 100 100 600 --json            Table 4 row 1, the paper's branch
   python -m analysis ik 100 100 600 --branch all      all four solutions
@@ -154,17 +153,25 @@ def _cmd_ik(args: argparse.Namespace) -> int:
     return _ik_single(args, arm)
 
 
-def _input_units(arm) -> tuple[str, ...]:
-    """Units of the arm's inputs: mm for a position, rad for an angle (the closed form's
-    ``INPUT_UNITS``; a point by default). The command line takes angles in degrees."""
-    return getattr(arm.closed_form, "INPUT_UNITS", ("mm",) * len(arm.inputs))
-
-
 def _input_labels(arm) -> list[str]:
     return [
         f"{name} [{'deg' if unit == 'rad' else unit}]"
-        for name, unit in zip(arm.inputs, _input_units(arm), strict=True)
+        for name, unit in zip(arm.inputs, arm.input_units, strict=True)
     ]
+
+
+def _nearest_pose_hint(arm, target) -> str:
+    """The nearest orientation the arm can take at the target's position, as a command."""
+    import numpy as np
+
+    from analysis.studies.gr1 import project_orientation
+
+    pose, turned = project_orientation(arm, np.asarray(target, dtype=float))
+    words = [f"{v:g}" for v in pose[:3]] + [f"{math.degrees(v):.3f}" for v in pose[3:]]
+    return (
+        f"the nearest orientation it can take there is {math.degrees(float(turned)):.3f} deg "
+        f"away: python -m analysis ik {' '.join(words)} --arm {arm.name} --branch all"
+    )
 
 
 def _axis(args) -> float | None:
@@ -179,10 +186,16 @@ def _ik_single(args: argparse.Namespace, arm) -> int:
     given = list(args.target)
     target = [
         math.radians(v) if unit == "rad" else v
-        for v, unit in zip(given, _input_units(arm), strict=True)
+        for v, unit in zip(given, arm.input_units, strict=True)
     ]
     names = arm.branch_names(args.branch or arm.branches[0])
-    sols = arm.ik_all(target, theta1_on_axis=_axis(args), tol=args.tol, branches=names)
+    try:
+        sols = arm.ik_all(target, theta1_on_axis=_axis(args), tol=args.tol, branches=names)
+    except ValueError as exc:
+        hint = getattr(arm.closed_form, "PROJECTION_HINT", None)
+        if hint is None or hint not in str(exc):
+            raise
+        raise UsageError(str(exc).replace(hint, _nearest_pose_hint(arm, target))) from None
     out = [
         {
             "branch": name,
@@ -191,7 +204,7 @@ def _ik_single(args: argparse.Namespace, arm) -> int:
         }
         for name, theta in sols.items()
     ]
-    units = _input_units(arm)
+    units = arm.input_units
     if all(u == "mm" for u in units):
         lines = [f"target ({', '.join(f'{v:g}' for v in given)}) mm"]
     else:
@@ -369,7 +382,12 @@ def _add_ik(sub) -> None:
     )
     p.add_argument("--branch", help="IK branch, or 'all' (default: the arm's first, the paper's)")
     p.add_argument("--json", action="store_true", help="machine-readable output and errors")
-    p.add_argument("--input", type=Path, help="batch: CSV with columns x_mm, y_mm, z_mm")
+    p.add_argument(
+        "--input",
+        type=Path,
+        help="batch: CSV with columns x_mm, y_mm, z_mm (the GR-1: also alpha_deg, beta_deg, "
+        "gamma_deg)",
+    )
     p.add_argument("--output", type=Path, help="batch: output CSV (one row per target, branch)")
     p.add_argument(
         "--chunk-rows", type=int, default=100_000, help="batch: rows per chunk (memory bound)"

@@ -200,6 +200,12 @@ class Arm:
         return tuple(self.closed_form.INPUTS)
 
     @property
+    def input_units(self) -> tuple[str, ...]:
+        """Units of the inputs: "mm" for a coordinate, "rad" for an angle (the closed form's
+        ``INPUT_UNITS``; a point when it has none)."""
+        return tuple(getattr(self.closed_form, "INPUT_UNITS", ("mm",) * len(self.inputs)))
+
+    @property
     def n_joints(self) -> int:
         return len(self.description.joints)
 

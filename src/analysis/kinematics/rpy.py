@@ -35,6 +35,7 @@ import numpy.typing as npt
 from analysis.kinematics.ops import numpy_ops
 
 __all__ = [
+    "GIMBAL_LOCK_COS",
     "matrix_from_rpy",
     "pose_from_transform",
     "rotation_angle",
@@ -74,15 +75,35 @@ def matrix_from_rpy(rpy: npt.ArrayLike) -> npt.NDArray[np.float64]:
     return np.stack([np.stack(c, axis=-1) for c in cols], axis=-1)
 
 
+GIMBAL_LOCK_COS = 1e-10
+"""Below this cos(beta) = |(n_x, n_y)|, alpha and gamma are not separately defined (beta =
++-90 deg: only gamma -+ alpha is); :func:`rpy_from_matrix` then takes alpha = 0."""
+
+
 def rpy_from_matrix(R: npt.ArrayLike) -> npt.NDArray[np.float64]:
     """RPY angles (..., 3) [rad] of rotation matrices (..., 3, 3): eq. 3.18 corrected,
-    beta in [-90, 90] deg (eq. 3.17's root taken positive)."""
+    beta in [-90, 90] deg (eq. 3.17's root taken positive).
+
+    At beta = +-90 deg (gimbal lock: n_x = n_y = 0, where eq. 3.18's atan2 of two zeros
+    leaves alpha and gamma to round-off) alpha = 0 and gamma carries the rotation:
+    o = (sin(gamma - alpha), cos(gamma - alpha), 0) at +90 deg and
+    (-sin(gamma + alpha), cos(gamma + alpha), 0) at -90 deg, so that
+    ``matrix_from_rpy(rpy_from_matrix(R)) == R`` everywhere.
+
+    >>> R = matrix_from_rpy(np.radians([-60.0, 90.0, -64.0]))
+    >>> np.degrees(rpy_from_matrix(R)).round(6).tolist()
+    [0.0, 90.0, -4.0]
+    """
     R = np.asarray(R, dtype=float)
     if R.ndim < 2 or R.shape[-2:] != (3, 3):
         raise ValueError(f"rotation matrices have shape {R.shape}; expected (..., 3, 3)")
-    beta = np.arctan2(-R[..., 2, 0], np.hypot(R[..., 0, 0], R[..., 1, 0]))
-    alpha = np.arctan2(R[..., 1, 0], R[..., 0, 0])
-    gamma = np.arctan2(R[..., 2, 1], R[..., 2, 2])
+    cb = np.hypot(R[..., 0, 0], R[..., 1, 0])
+    beta = np.arctan2(-R[..., 2, 0], cb)
+    lock = cb < GIMBAL_LOCK_COS
+    alpha = np.where(lock, 0.0, np.arctan2(R[..., 1, 0], R[..., 0, 0]))
+    sign = np.where(R[..., 2, 0] < 0, 1.0, -1.0)  # n_z = -sin(beta)
+    locked = np.arctan2(sign * R[..., 0, 1], R[..., 1, 1])
+    gamma = np.where(lock, locked, np.arctan2(R[..., 2, 1], R[..., 2, 2]))
     return np.stack([alpha, beta, gamma], axis=-1)
 
 

@@ -89,6 +89,9 @@ BRANCHES = ("front-up", "front-down", "back-up", "back-down")
 INPUTS = ("px", "py", "pz", "alpha", "beta", "gamma")
 """The pose: position [mm] and RPY angles [rad] (eqs. 3.14-3.15), Table 5-3's columns."""
 INPUT_UNITS = ("mm", "mm", "mm", "rad", "rad", "rad")
+PROJECTION_HINT = "orientation_tol=None gives the nearest reachable orientation"
+"""The end of the orientation refusal: how a Python caller gets the nearest orientation (the
+command line replaces it by that orientation, :mod:`analysis.app.cli`)."""
 """Units of :data:`INPUTS` (the command line takes the angles in degrees)."""
 ORIENTATION_TOL_RAD = 1e-4
 """Largest angle [rad] between the approach vector and the arm plane that is accepted (and
@@ -319,8 +322,7 @@ def refusal(status: Status, p, P, *, tol: float, distance: float) -> tuple[str, 
         return (
             f"{where} asks for an approach vector {angle:.3f} deg out of the arm plane at "
             f"azimuth {azimuth:.3f} deg; a 5-DOF arm keeps it in that plane (accepted: "
-            f"{math.degrees(ORIENTATION_TOL_RAD):.2g} deg); orientation_tol=None gives the "
-            f"nearest reachable orientation"
+            f"{math.degrees(ORIENTATION_TOL_RAD):.2g} deg); {PROJECTION_HINT}"
         ), float("nan")
     if status == Status.DEGENERATE:
         return (
