@@ -46,8 +46,10 @@ test: $(STAMP)
 	MPLBACKEND=$(NB_BACKEND) $(PY) -m pytest -p tests.nbval_kernel --nbval-kernel-preload $(NB_PRELOAD) -n 2 --dist loadfile --nbval --nbval-sanitize-with tests/nbval_sanitize.cfg notebooks
 	ANALYSIS_SITE_EXECUTE=0 MPLBACKEND=Agg $(PY) -m pytest tests/browser
 
+# The developer loop (about 25 s): the unit tests without those marked slow (the awlsim sweeps,
+# the subprocess sessions, the site build; tests/conftest.py), stopping at the first failure.
 test-fast: $(STAMP)
-	$(PY) -m pytest -n 2 --dist worksteal -x tests --ignore=tests/browser
+	MPLBACKEND=Agg $(PY) -m pytest -n 2 --dist worksteal -x -m "not slow" tests --ignore=tests/browser
 
 # The browser tests against build/report as `make report` left it (no rebuild).
 test-browser: $(STAMP)
