@@ -165,3 +165,29 @@ def test_notebook_paths_lists_numbered_notebooks(tmp_path):
     for name in ("02_b.ipynb", "01_a.ipynb", "scratch.ipynb"):
         (tmp_path / name).write_text("{}")
     assert [p.name for p in notebook_paths(tmp_path)] == ["01_a.ipynb", "02_b.ipynb"]
+
+
+def test_warning_counter_counts_what_sphinx_counts(tmp_path):
+    """The build's warning count comes from the warning stream (public API), one per line
+    Sphinx writes; Sphinx's own private counter is the reference here."""
+    import io
+
+    from sphinx.application import Sphinx
+    from sphinx.util.docutils import docutils_namespace
+
+    from analysis.app.report import _WarningCounter
+
+    src = tmp_path / "src"
+    src.mkdir()
+    (src / "conf.py").write_text("project = 't'\n")
+    (src / "index.rst").write_text(
+        "Title\n=====\n\nSee :ref:`no-such-label` and :doc:`missing`.\n\n.. no-such-directive::\n"
+    )
+    sink = io.StringIO()
+    counter = _WarningCounter(sink)
+    with docutils_namespace():
+        app = Sphinx(str(src), str(src), str(tmp_path / "out"), str(tmp_path / "dt"), "html",
+                     status=None, warning=counter, freshenv=True)  # fmt: skip
+        app.build(force_all=True)
+    assert counter.count == app._warncount == 3, sink.getvalue()
+    assert sink.getvalue().count("WARNING") + sink.getvalue().count("ERROR") == 3

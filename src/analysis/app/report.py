@@ -39,6 +39,7 @@ from __future__ import annotations
 import contextlib
 import functools
 import http.server
+import io
 import os
 import re
 import shutil
@@ -192,6 +193,7 @@ def _sphinx(src: Path, out: Path, doctrees: Path, builder: str = "html") -> int:
 
     if not sys.stderr.isatty():
         nocolor()
+    warnings = _WarningCounter(sys.stderr)
     with patch_docutils(CONF_DIR), docutils_namespace():
         app = Sphinx(
             str(src),
@@ -200,14 +202,34 @@ def _sphinx(src: Path, out: Path, doctrees: Path, builder: str = "html") -> int:
             str(doctrees),
             builder,
             status=None,  # our own progress lines instead of Sphinx's per-file log
-            warning=sys.stderr,
+            warning=warnings,
             freshenv=False,
             verbosity=0,
         )
         app.build(force_all=True)
         if app.statuscode:
             raise RuntimeError(f"sphinx-build ({builder}) failed with status {app.statuscode}")
-        return int(app._warncount)
+        return warnings.count
+
+
+class _WarningCounter(io.TextIOBase):
+    """Sphinx's warning stream: passes everything to ``target`` and counts the warning and
+    error lines (``<location>: WARNING: <message>``, the format Sphinx's warning handler
+    writes), what a reader of the build log sees."""
+
+    _LINE = re.compile(r"(?:^|: )(?:WARNING|ERROR|CRITICAL): ", re.MULTILINE)
+
+    def __init__(self, target) -> None:
+        self.target = target
+        self.count = 0
+
+    def write(self, text: str) -> int:
+        self.count += len(self._LINE.findall(text))
+        self.target.write(text)
+        return len(text)
+
+    def flush(self) -> None:
+        self.target.flush()
 
 
 class _QuietHandler(http.server.SimpleHTTPRequestHandler):
