@@ -38,6 +38,7 @@ from pathlib import Path
 import numpy as np
 import numpy.typing as npt
 
+from analysis.kinematics import pool
 from analysis.kinematics.arms import closed_form as load_cf
 from analysis.kinematics.dh import chain_frames
 from analysis.kinematics.solution import IKSolutions, as_points, check_joints, solve_body
@@ -390,16 +391,19 @@ def ik_kernel(closed_form: str, params: tuple, names: tuple, limits: tuple) -> K
 
 
 def allocate(n_joints: int, shape: tuple, branches: Sequence[str]):
-    """Output buffers for :func:`solve` (pass them back as ``out=`` to reuse memory)."""
+    """Output buffers for :func:`solve` (pass them back as ``out=`` to reuse memory).
+
+    They come from :mod:`analysis.kinematics.pool`: memory of results that are gone is
+    reused, not mapped and touched again."""
     n = int(np.prod(shape, dtype=np.int64))
     B = len(branches)
-    theta = np.empty((B, n_joints, n))
-    ok = np.empty((B, n), dtype=bool)
+    theta = pool.empty((B, n_joints, n))
+    ok = pool.empty((B, n), dtype=bool)
     return IKSolutions(
         np.moveaxis(theta, -1, 0).reshape(*shape, B, n_joints),
         np.moveaxis(ok, -1, 0).reshape(*shape, B),
-        np.empty(shape, dtype=np.int8),
-        np.empty(shape),
+        pool.empty(shape, dtype=np.int8),
+        pool.empty(shape),
         tuple(branches),
     )
 
@@ -408,7 +412,7 @@ def allocate_points(shape: tuple) -> np.ndarray:
     """An output buffer of shape (..., 3) for :func:`fk` (``out=``): x, y and z each
     contiguous underneath, as the kernel writes them."""
     n = int(np.prod(shape, dtype=np.int64))
-    return np.moveaxis(np.empty((3, n)), 0, -1).reshape(*shape, 3)
+    return np.moveaxis(pool.empty((3, n)), 0, -1).reshape(*shape, 3)
 
 
 def _storage(view: np.ndarray, shape: tuple) -> np.ndarray:
