@@ -131,3 +131,19 @@ def test_float32_error_before_round(targets):
     away = err.drop(index="shoulder")
     assert away.to_numpy().max() < 1e-3  # measured 4.1e-4
     assert err.loc["shoulder"].max() < 0.5  # measured 0.28: L4 < 1 mm, see the docstring
+
+
+def test_the_back_reaching_program_on_awlsim_equals_python(targets):
+    """The waist turned by pi (``back-up``, the one back branch inside the elbow stop): its
+    S7-300 program on awlsim against Python over the same sweep (measured: 312 of the 1,087
+    targets solved), the waist half a turn from atan2(Y0, X0)."""
+    r = pr.run(ARM, "s7-300", targets, branch="back-up")
+    c = r.comparison
+    assert not r.stopped and c.model_exact and c.all_explained
+    assert c.status_mismatch == 0 and c.flag_mismatch == 0 and c.unchanged_ok
+    solved = r.result.status == 0
+    assert solved.sum() > 100
+    xyz = targets[["x_mm", "y_mm", "z_mm"]].to_numpy()[solved]
+    waist = ARM.solve(xyz, "back-up").branch("back-up")[:, 0]
+    turn = np.angle(np.exp(1j * (waist - np.arctan2(xyz[:, 1], xyz[:, 0]))))
+    np.testing.assert_allclose(np.abs(turn), np.pi, atol=1e-9)
