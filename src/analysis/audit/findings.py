@@ -1,33 +1,18 @@
 """One record type for the findings of the companion-paper audits (seeds 001 and 002).
 
 A :class:`Finding` is one printed statement judged against a derivation or a run:
-``(id, location, printed, corrected, kind, evidence)`` plus a verdict. The register of the
-main paper (:mod:`analysis.audit.register`) has its own schema; these records carry the
-same columns so that they can be merged into it.
+``(id, location, printed, corrected, kind, evidence)`` plus a verdict. The papers' registers
+(:mod:`analysis.audit.schema`) are built from them; a finding's kind is one of the schema's
+:data:`~analysis.audit.schema.KINDS`.
 """
 
 from __future__ import annotations
 
 from dataclasses import asdict, dataclass
 
-__all__ = ["KINDS", "VERDICTS", "Finding", "as_rows"]
+from analysis.audit.schema import KINDS
 
-KINDS: tuple[str, ...] = (
-    "sign",
-    "index",
-    "label",
-    "missing term",
-    "branch/quadrant",
-    "transcription",
-    "unit",
-    "cross-reference",
-    "undefined symbol",
-    "claim",
-    "reasoning",
-)
-"""Kinds of discrepancy: those of the main register plus ``undefined symbol`` (a symbol used
-and never defined), ``claim`` (a statement in the text that a run refutes or bounds) and
-``reasoning`` (an inference the evidence does not support)."""
+__all__ = ["KINDS", "VERDICTS", "Finding", "as_rows"]
 
 VERDICTS: tuple[str, ...] = ("holds", "wrong", "undecidable")
 
