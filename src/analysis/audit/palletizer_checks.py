@@ -42,7 +42,6 @@ import sympy as sp
 from analysis.audit.findings import Finding
 
 # the ``X as X`` imports: the derivations' other public names, importable from here as before
-from analysis.audit.palletizer_derivations import BRANCHES as BRANCHES
 from analysis.audit.palletizer_derivations import (
     FIXES,
     QUADRANT_TARGETS,

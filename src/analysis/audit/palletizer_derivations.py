@@ -20,7 +20,6 @@ import numpy.typing as npt
 import sympy as sp
 
 from analysis.kinematics.arm import Arm
-from analysis.kinematics.arms.palletizer import BRANCHES as BRANCHES
 from analysis.kinematics.dh import DHRow, DHTable, link_transform_sym
 from analysis.papers import palletizer as paper
 
