@@ -25,7 +25,7 @@ import numpy as np
 import pytest
 
 from analysis.kinematics import compiled, rpy
-from analysis.kinematics.arm import BaseAxisError, Status, UnreachableError
+from analysis.kinematics.arm import BaseAxisError, OrientationError, Status, UnreachableError
 from analysis.kinematics.arms import gr1 as cf
 from analysis.kinematics.ops import numpy_ops
 from analysis.kinematics.pinocchio_model import PinocchioArm
@@ -233,7 +233,7 @@ def test_table5_3_poses_are_refused_for_their_orientation(arm):
     sol = arm.solve(thesis_poses())
     assert sol.status.tolist() == [Status.ORIENTATION] * 2
     assert Status(7).text == "orientation"
-    with pytest.raises(ValueError, match=r"approach vector 69\.137 deg out of the arm plane"):
+    with pytest.raises(OrientationError, match=r"approach vector 69\.137 deg out of the arm plane"):
         arm.ik(thesis_poses()[0])
     with pytest.raises(ValueError, match=r"60\.733 deg"):
         arm.ik(thesis_poses()[1])

@@ -182,6 +182,7 @@ def _ik_single(args: argparse.Namespace, arm) -> int:
     import numpy as np
 
     from analysis.kinematics.pulses import angles_to_pulses
+    from analysis.kinematics.solution import OrientationError
 
     given = list(args.target)
     target = [
@@ -191,10 +192,9 @@ def _ik_single(args: argparse.Namespace, arm) -> int:
     names = arm.branch_names(args.branch or arm.branches[0])
     try:
         sols = arm.ik_all(target, theta1_on_axis=_axis(args), tol=args.tol, branches=names)
-    except ValueError as exc:
-        hint = getattr(arm.closed_form, "PROJECTION_HINT", None)
-        if hint is None or hint not in str(exc):
-            raise
+    except OrientationError as exc:
+        # the library names the Python way to the nearest orientation; here, the command
+        hint = arm.closed_form.PROJECTION_HINT
         raise UsageError(str(exc).replace(hint, _nearest_pose_hint(arm, target))) from None
     out = [
         {

@@ -44,6 +44,7 @@ from analysis.kinematics.solution import (
     MAX_TOL_MM,
     BaseAxisError,
     IKSolutions,
+    OrientationError,
     UnreachableError,
     as_points,
     check_joints,
@@ -61,6 +62,7 @@ __all__ = [
     "Arm",
     "BaseAxisError",
     "IKSolutions",
+    "OrientationError",
     "Params",
     "Status",
     "UnreachableError",
@@ -412,6 +414,8 @@ class Arm:
             The target is outside the reachable set; the message says by how much.
         BaseAxisError
             The target is on the base axis and ``theta1_on_axis`` was not given.
+        OrientationError
+            A pose whose orientation the arm cannot take (the GR-1).
 
         Examples
         --------
@@ -472,6 +476,8 @@ class Arm:
             raise UnreachableError(message, p, outside, limit, status)
         if status == Status.BASE_AXIS:
             raise BaseAxisError(message, p)
+        if status == Status.ORIENTATION:
+            raise OrientationError(message, p)
         raise ValueError(message)
 
 

@@ -26,6 +26,7 @@ __all__ = [
     "MAX_TOL_MM",
     "BaseAxisError",
     "IKSolutions",
+    "OrientationError",
     "UnreachableError",
     "as_points",
     "check_joints",
@@ -63,6 +64,15 @@ class UnreachableError(ValueError):
         self.distance_mm = float(distance_mm)
         self.limit_mm = float(limit_mm)
         self.status = Status(status)
+
+
+class OrientationError(ValueError):
+    """The pose's position is reachable, its orientation is not (a 5-DOF arm: the approach
+    vector leaves the arm plane); the message says by how much."""
+
+    def __init__(self, message: str, target):
+        super().__init__(message)
+        self.target = tuple(float(v) for v in target)
 
 
 class BaseAxisError(ValueError):
