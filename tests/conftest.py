@@ -34,32 +34,10 @@ def arm():
     return paper_arm()
 
 
-# Tests that take seconds each (awlsim sweeps, subprocess sessions, a Sphinx build, the
-# registers): marked ``slow`` and run first. ``--dist worksteal`` hands each xdist worker a
-# contiguous half of the collection and lets an idle worker steal from the end of the other's
-# queue, so long tests at the front are shared out and the run ends on short ones (the
-# longest-first rule), instead of one worker finishing a long test alone.
-SLOW_FILES = frozenset(
-    {
-        "tests/plc/test_gr1_plc.py",
-        "tests/plc/test_plc_awlsim.py",
-        "tests/plc/test_conventions_plc.py",
-        "tests/plc/test_palletizer_plc.py",
-        "tests/test_nbval_kernel.py",
-        "tests/test_kernel_forkserver.py",
-        "tests/app/test_report.py",
-        "tests/audit/test_vb6.py",
-    }
-)
-
-
-def pytest_collection_modifyitems(config, items):
-    root = config.rootpath
-    for item in items:
-        try:
-            rel = item.path.relative_to(root).as_posix()
-        except ValueError:
-            continue
-        if rel in SLOW_FILES:
-            item.add_marker(pytest.mark.slow)
+def pytest_collection_modifyitems(items):
+    """Tests marked ``slow`` (awlsim sweeps, subprocess sessions, a Sphinx build, the VB6
+    runs: ``pytestmark`` in their modules) run first. ``--dist worksteal`` hands each xdist
+    worker a contiguous half of the collection and lets an idle worker steal from the end of
+    the other's queue, so long tests at the front are shared out and the run ends on short
+    ones (longest first), instead of one worker finishing a long test alone."""
     items.sort(key=lambda item: item.get_closest_marker("slow") is None)  # stable

@@ -16,6 +16,8 @@ import pytest
 
 from kernel_forkserver import _IMPORT_TIME_STATE
 
+pytestmark = pytest.mark.slow  # seconds per test: run first (tests/conftest.py)
+
 FORKSERVER = Path(__file__).resolve().with_name("kernel_forkserver.py")
 
 

@@ -28,6 +28,8 @@ import pytest
 
 import nbval_kernel
 
+pytestmark = pytest.mark.slow  # seconds per test: run first (tests/conftest.py)
+
 TESTS = Path(__file__).resolve().parent
 
 

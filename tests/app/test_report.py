@@ -13,7 +13,10 @@ import pytest
 from analysis.app.report import NotebookFailed, build_report, execute_notebook, notebook_paths
 
 # sphinx-book-theme 1.4 still touches an attribute Sphinx 11 will remove
-pytestmark = pytest.mark.filterwarnings("ignore:.*HandleFootnoteTransform.app")
+pytestmark = [
+    pytest.mark.filterwarnings("ignore:.*HandleFootnoteTransform.app"),
+    pytest.mark.slow,  # seconds per test: run first (tests/conftest.py)
+]
 
 
 def _notebook(path, code: str, title: str) -> None:

@@ -14,6 +14,8 @@ import pytest
 from analysis.audit import vb6
 from analysis.papers import gr1_thesis as g
 
+pytestmark = pytest.mark.slow  # seconds per test: run first (tests/conftest.py)
+
 
 def snippet(body: str, **options: bool) -> dict[str, vb6.Value]:
     """Run ``body`` as the body of an event procedure and return its locals."""

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 import pandas as pd
+import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
@@ -24,6 +25,8 @@ from analysis.plc.approx import PlcFloat32Ops
 from analysis.plc.model import predict
 from analysis.plc.runner import RunResult
 from analysis.plc.verify import compare
+
+pytestmark = pytest.mark.slow  # seconds per test: run first (tests/conftest.py)
 
 ARM = paper_arm()
 SENTINEL = -999_999

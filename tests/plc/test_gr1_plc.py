@@ -25,6 +25,8 @@ from analysis.plc.translate import translate_s7200
 from analysis.plc.verify import compare
 from analysis.studies.gr1 import gr1_arm, project_orientation, thesis_poses
 
+pytestmark = pytest.mark.slow  # seconds per test: run first (tests/conftest.py)
+
 pytest.importorskip("awlsim")
 SENTINEL = -999_999
 ARM = gr1_arm()
@@ -48,7 +50,6 @@ def targets():
     return pose_sweep_targets(ARM)
 
 
-@pytest.mark.slow
 @pytest.mark.parametrize(
     ("variant", "branch"),
     [

@@ -29,6 +29,8 @@ from analysis.kinematics.arm import Status, load_arm
 from analysis.plc import palletizer_run as pr
 from analysis.plc.verify import reference_pulses
 
+pytestmark = pytest.mark.slow  # seconds per test: run first (tests/conftest.py)
+
 pytest.importorskip("awlsim")
 ARM = load_arm("palletizer")
 

@@ -22,6 +22,8 @@ from analysis.plc.runner import AwlRunner
 from analysis.plc.translate import I_BASE, PLS_LOG, Q_BASE, SM_BASE, translate_s7200
 from analysis.plc.verify import compare, sweep_targets, table4_targets
 
+pytestmark = pytest.mark.slow  # seconds per test: run first (tests/conftest.py)
+
 pytest.importorskip("awlsim")
 SENTINEL = -999_999
 ARM = Arm(paper_params())
@@ -43,7 +45,6 @@ def targets():
     return sweep_targets(ARM)
 
 
-@pytest.mark.slow
 @pytest.mark.parametrize(
     ("variant", "branch"),
     [
