@@ -6,7 +6,7 @@ PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed
 
 # Tests draw off-screen (tests/conftest.py sets Agg); notebook kernels use the inline
-# backend, whose figure outputs are part of what nbval compares.
+# backend, whose figure outputs are part of what nbval compares (`make lab`, `make report`).
 NB_BACKEND := module://matplotlib_inline.backend_inline
 # Imported once by a fork server from which every notebook kernel is forked (tests/kernel_forkserver.py):
 # about 1 s of CPU less per notebook. Only modules that do not capture their surroundings at import.
@@ -32,18 +32,26 @@ $(STAMP): requirements.lock pyproject.toml
 	$(PY) -m ipykernel install --sys-prefix --name python3 --display-name "Python 3 (analysis)" >/dev/null
 	@touch $(STAMP)
 
-# The whole suite: unit, property and cross-check tests, then every notebook under nbval,
-# then the report site in a browser.
+# The whole suite: the notebooks under nbval, the unit, property and cross-check tests and the
+# doctests in one pytest session on two xdist workers, then the report site in a browser.
+# One session, not two: the machine's two cores stay busy to the end, and the start-up (workers,
+# collection) is paid once. --dist loadscope keeps each notebook's cells in one worker, in
+# order (a unit test module is one scope too); --no-loadscope-reorder keeps the order of
+# tests/conftest.py: the notebooks first, then the tests marked slow, longest work first.
+# Tests draw with Agg; the notebook kernels get the inline backend (--nbval-kernel-env), whose
+# figure outputs are part of what nbval compares.
 # tests/nbval_kernel.py starts the notebook kernels over IPC (no TCP port race between the
-# xdist workers), retries a kernel that dies at start-up and keeps each kernel's stderr in
-# build/nbval-kernel-logs/.
+# xdist workers), forks them from a preloaded server, retries a kernel that dies at start-up
+# and keeps each kernel's stderr in build/nbval-kernel-logs/.
 # tests/browser builds the site once and checks it in Debian's /usr/bin/chromium (without it
 # those tests are skipped, saying why); here from the notebooks' stored outputs and the
 # figures that the nbval run just saved in build/figures (ANALYSIS_SITE_EXECUTE=0): nbval has
 # re-executed every notebook and compared it with those outputs the line before.
 test: $(STAMP)
-	MPLBACKEND=Agg $(PY) -m pytest -n 2 --dist worksteal tests --ignore=tests/browser --doctest-modules src
-	MPLBACKEND=$(NB_BACKEND) $(PY) -m pytest -p tests.nbval_kernel --nbval-kernel-preload $(NB_PRELOAD) -n 2 --dist loadfile --nbval --nbval-sanitize-with tests/nbval_sanitize.cfg notebooks
+	MPLBACKEND=Agg $(PY) -m pytest -n 2 --dist loadscope --no-loadscope-reorder \
+	  -p tests.nbval_kernel --nbval-kernel-preload $(NB_PRELOAD) --nbval-kernel-env MPLBACKEND=$(NB_BACKEND) \
+	  --nbval --nbval-sanitize-with tests/nbval_sanitize.cfg notebooks \
+	  --doctest-modules tests src --ignore=tests/browser
 	ANALYSIS_SITE_EXECUTE=0 MPLBACKEND=Agg $(PY) -m pytest tests/browser
 
 # The developer loop (about 25 s): the unit tests without those marked slow (the awlsim sweeps,

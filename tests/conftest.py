@@ -35,9 +35,13 @@ def arm():
 
 
 def pytest_collection_modifyitems(items):
-    """Tests marked ``slow`` (awlsim sweeps, subprocess sessions, a Sphinx build, the VB6
-    runs: ``pytestmark`` in their modules) run first. ``--dist worksteal`` hands each xdist
-    worker a contiguous half of the collection and lets an idle worker steal from the end of
-    the other's queue, so long tests at the front are shared out and the run ends on short
-    ones (longest first), instead of one worker finishing a long test alone."""
-    items.sort(key=lambda item: item.get_closest_marker("slow") is None)  # stable
+    """Longest work first: the notebooks (nbval cells, seconds per notebook), then the tests
+    marked ``slow`` (awlsim sweeps, subprocess sessions, a Sphinx build, the VB6 runs:
+    ``pytestmark`` in their modules), then the rest. ``make test`` hands out whole notebooks and
+    test modules in this order (``--dist loadscope --no-loadscope-reorder``), ``make test-fast``
+    single tests (``--dist worksteal``: each worker starts on its own half of the collection and
+    an idle one steals from the end of the other's). Either way the long work is shared out at
+    the start and the run ends on short tests, not one worker finishing a long one alone."""
+    items.sort(
+        key=lambda item: (item.path.suffix != ".ipynb", item.get_closest_marker("slow") is None)
+    )  # stable

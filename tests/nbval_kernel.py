@@ -37,6 +37,13 @@ What this plugin changes
    (``--nbval-kernel-log-dir``, default ``build/nbval-kernel-logs`` under the rootdir). The
    path, and the last lines of the log, are added to the report of every failing cell, and a
    start that fails for good names the path in its error.
+4. ``--nbval-kernel-preload m1,m2``: kernels are forked from a server that imported those
+   modules once (``tests/kernel_forkserver.py``).
+5. ``--nbval-kernel-env NAME=VALUE`` (repeatable) sets a variable for the kernels (and their
+   fork server) only, so that one session can run tests that draw with Agg and notebooks whose
+   stored figures come from the inline backend (``make test``).
+6. An xdist mode that would hand a notebook's cells to different workers (``load``,
+   ``worksteal``, ``loadgroup``: see :func:`check_dist`) is refused with a usage error.
 
 Where it hooks in, and why there
 --------------------------------
@@ -114,6 +121,7 @@ class _State:
         self.counter = 0
         self.logs: dict[Path, Path] = {}
         self.preload: list[str] = []
+        self.kernel_env: dict[str, str] = {}
         self.forkservers: dict[tuple[str, ...], tuple[subprocess.Popen, str]] = {}
 
     def forkserver(self, interpreter: tuple[str, ...]) -> str | None:
@@ -129,6 +137,7 @@ class _State:
         with open(log, "wb") as fh:
             proc = subprocess.Popen(
                 [*interpreter, str(FORKSERVER), "serve", sock, ",".join(self.preload)],
+                env=self.env(),
                 stdin=subprocess.DEVNULL,
                 stdout=fh,
                 stderr=fh,
@@ -153,6 +162,10 @@ class _State:
                 proc.wait(timeout=10)
             except subprocess.TimeoutExpired:
                 proc.kill()
+
+    def env(self) -> dict[str, str]:
+        """The kernels' environment: this process's, with ``--nbval-kernel-env`` applied."""
+        return {**os.environ, **self.kernel_env}
 
     def next_ipc_prefix(self) -> str:
         """Return a fresh absolute path prefix for one kernel's IPC sockets."""
@@ -302,7 +315,7 @@ class IpcRunningKernel(RunningKernel):
                     ip=prefix,
                     connection_file=prefix + ".json",
                 )
-                km.start_kernel(stderr=self._log, cwd=cwd)
+                km.start_kernel(stderr=self._log, cwd=cwd, env=state.env())
                 kc = km.client()
                 kc.start_channels()
                 try:
@@ -370,6 +383,34 @@ class _ForkingSpecManager(NbvalKernelspecManager):
         return spec
 
 
+def parse_kernel_env(pairs: list[str]) -> dict[str, str]:
+    """``--nbval-kernel-env NAME=VALUE`` options as a dict; a pair without ``=`` or without a
+    name is a usage error naming it."""
+    env = {}
+    for pair in pairs:
+        name, sep, value = pair.partition("=")
+        if not sep or not name:
+            raise pytest.UsageError(f"--nbval-kernel-env {pair!r}: expected NAME=VALUE")
+        env[name] = value
+    return env
+
+
+def check_dist(nbval: bool, dist: str) -> None:
+    """Refuse an xdist mode that would split a notebook's cells between workers.
+
+    nbval runs a notebook's cells in order in one kernel, started for the first cell; under
+    ``--dist load`` or ``worksteal`` a later cell can land on the other worker, which has no
+    kernel with that notebook's state. ``loadgroup`` would be right but with pytest 9.2 and
+    pytest-xdist 3.8 it ignores the groups (xdist writes the retired ``Item._nodeid``;
+    pytest-dev/pytest-xdist#1386), so it is refused too."""
+    if nbval and dist not in ("no", "each", "loadfile", "loadscope"):
+        raise pytest.UsageError(
+            f"nbval_kernel: --dist {dist} would hand the cells of one notebook to different "
+            "workers (each cell must run in that notebook's kernel, in order); use --dist "
+            "loadscope or loadfile"
+        )
+
+
 def _require_state() -> _State:
     if _state is None:
         raise RuntimeError("nbval_kernel: plugin used before pytest_configure")
@@ -390,6 +431,14 @@ def pytest_addoption(parser: pytest.Parser) -> None:
         help="comma-separated modules a fork server imports once; each ipykernel kernel is "
         "then forked from it (tests/kernel_forkserver.py); default: none, no fork server",
     )
+    parser.getgroup("nbval").addoption(
+        "--nbval-kernel-env",
+        action="append",
+        default=[],
+        metavar="NAME=VALUE",
+        help="set an environment variable for the notebook kernels only (repeatable), e.g. "
+        "their matplotlib backend when the tests in the same session draw with Agg",
+    )
 
 
 def pytest_configure(config: pytest.Config) -> None:
@@ -409,6 +458,8 @@ def pytest_configure(config: pytest.Config) -> None:
     log_dir = Path(option) if option else config.rootpath / "build" / "nbval-kernel-logs"
     _state = _State(log_dir.resolve(), config.rootpath.resolve())
     _state.preload = [m for m in config.getoption("nbval_kernel_preload").split(",") if m]
+    _state.kernel_env = parse_kernel_env(config.getoption("nbval_kernel_env"))
+    check_dist(config.getoption("nbval", False), config.getoption("dist", "no"))
     _original_running_kernel = current
     nbval.plugin.RunningKernel = IpcRunningKernel
 

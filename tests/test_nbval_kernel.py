@@ -81,8 +81,12 @@ FORK_CELL = textwrap.dedent(
     marker = sys.modules.get("preloaded_marker")
     print(marker is not None and os.getppid() == marker.IMPORTED_BY)
     print(os.path.exists("ipc.ipynb"), os.environ.get("JPY_PARENT_PID") == str(marker.PARENT))
+    print(os.environ["MPLBACKEND"])
     """
 )
+# --nbval-kernel-env sets it for the kernels (and their fork server) only: the pytest session
+# itself runs with Agg
+KERNEL_BACKEND = "module://matplotlib_inline.backend_inline"
 
 TRANSPORT_CELL = textwrap.dedent(
     """\
@@ -148,6 +152,7 @@ def _start(
     if "nbval_kernel" in plugins:
         args += ["--nbval-kernel-log-dir", str(tmp / f"{name}-logs")]
         args += ["--nbval-kernel-preload", "preloaded_marker"]
+        args += ["--nbval-kernel-env", f"MPLBACKEND={KERNEL_BACKEND}"]
     return subprocess.Popen(
         [*args, *notebooks],
         cwd=tmp,
@@ -185,7 +190,7 @@ def workdir(tmp_path_factory: pytest.TempPathFactory) -> Path:
     ipc = [
         ("import os", ""),
         (TRANSPORT_CELL, "ipc True 1\n"),
-        (FORK_CELL, "True\nTrue True\n"),
+        (FORK_CELL, f"True\nTrue True\n{KERNEL_BACKEND}\n"),
     ]
     _notebook(tmp / "ipc.ipynb", "python3", ipc)
     _notebook(tmp / "once.ipynb", "crash_once", [two])
@@ -229,7 +234,9 @@ def test_a_taken_port_kills_the_tcp_kernel_and_the_plugin_survives_it(
     assert ipc_session.outcomes["ipc.ipynb::Cell 1"] == "passed", out
     # The python3 kernel was forked from the fork server (which imported the preload list), runs
     # in the notebook's directory and has the environment jupyter_client gave the kernel process
-    # (JPY_PARENT_PID: the pytest process, the server's parent; the server's own has none).
+    # (JPY_PARENT_PID: the pytest process, the server's parent; the server's own has none),
+    # with the MPLBACKEND of --nbval-kernel-env (the server has it too: the stub compares them
+    # and execs a plain kernel, not a fork, where they differ).
     assert ipc_session.outcomes["ipc.ipynb::Cell 2"] == "passed", out
     # the crashing kernels' specs are not plain ipykernel ones: they start as processes
     assert "kernel_forkserver" not in (ipc_session.log_dir / "once.ipynb.stderr.log").read_text()
@@ -272,3 +279,22 @@ def test_log_names_follow_the_notebook_path(tmp_path: Path) -> None:
         os.rmdir(state.ipc_dir)
     assert inside == tmp_path / "logs" / "notebooks__01_a.ipynb.stderr.log"
     assert outside.name.startswith("01_a.ipynb-") and outside != inside
+
+
+def test_kernel_env_options_are_name_value_pairs() -> None:
+    assert nbval_kernel.parse_kernel_env(["MPLBACKEND=a=b", "EMPTY="]) == {
+        "MPLBACKEND": "a=b",
+        "EMPTY": "",
+    }
+    for bad in ("MPLBACKEND", "=value"):
+        with pytest.raises(pytest.UsageError, match=f"--nbval-kernel-env '{bad}'"):
+            nbval_kernel.parse_kernel_env([bad])
+
+
+@pytest.mark.parametrize("dist", ["load", "worksteal", "loadgroup"])
+def test_a_dist_mode_that_splits_notebooks_is_refused(dist: str) -> None:
+    with pytest.raises(pytest.UsageError, match=f"--dist {dist} would hand the cells"):
+        nbval_kernel.check_dist(True, dist)
+    nbval_kernel.check_dist(False, dist)  # without --nbval nothing to protect
+    for fine in ("no", "each", "loadfile", "loadscope"):
+        nbval_kernel.check_dist(True, fine)
