@@ -19,6 +19,7 @@ import numpy as np
 
 from analysis.plc.ir import CMP, Program, Subroutine
 from analysis.plc.memmap import MemoryMap, default_map
+from analysis.plc.peephole import optimize_awl
 
 __all__ = ["allocate", "emit_s7200", "emit_s7200_subroutines", "emit_s7300", "fmt_real"]
 
@@ -158,6 +159,7 @@ def emit_s7300(
     *,
     startup_target=(100.0, 100.0, 600.0),
     extra_ob1: list[str] | None = None,
+    optimize: bool = True,
 ) -> str:
     """S7-300/400 AWL source of ``program`` (FCs, OB100 with the Figure 3 target, OB1).
 
@@ -169,6 +171,11 @@ def emit_s7300(
     startup_target : 3 floats or None
         Written to the inputs in OB100 (startup), like the paper's Figure 3 example
         (100, 100, 600) mm; None leaves the inputs alone.
+    extra_ob1 : list of str, optional
+        AWL lines appended to OB1.
+    optimize : bool
+        Remove reloads of a value just stored and stores overwritten before they are read
+        (:func:`~.peephole.optimize_awl`): the same results in fewer instructions.
     """
     mmap = mmap or default_map("s7-300", program.inputs, len(program.outputs))
     mmap.check_program(program.inputs, program.outputs)
@@ -208,7 +215,8 @@ def emit_s7300(
     if extra_ob1:
         lines += extra_ob1
     lines += ["END_ORGANIZATION_BLOCK", ""]
-    return "\n".join(lines)
+    text = "\n".join(lines)
+    return optimize_awl(text) if optimize else text
 
 
 # ---------------------------------------------------------------------- S7-200 STL

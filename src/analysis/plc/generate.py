@@ -26,6 +26,7 @@ def generate(
     params: Params | None = None,
     motion: bool = True,
     theta1_on_axis: float | None = None,
+    optimize: bool = True,
 ) -> tuple[str, str]:
     """Program text and MAP.json text for one dialect.
 
@@ -44,6 +45,9 @@ def generate(
         S7-200 and the paper's arm only: append the PTO motion networks.
     theta1_on_axis : float, optional
         Waist angle [rad] on the base axis (default: refuse such targets, status 3).
+    optimize : bool
+        S7-300: the AWL after :func:`~.peephole.optimize_awl` (fewer loads and stores, the
+        same results). The S7-200 text is never rewritten.
     """
     if dialect not in DIALECTS:
         raise ValueError(f"dialect {dialect!r} is not one of {', '.join(DIALECTS)}")
@@ -61,7 +65,7 @@ def generate(
     cf = closed_form(params.description.closed_form)
     start = getattr(cf, "STARTUP_TARGET", (100.0, 100.0, 600.0))
     if dialect == "s7-300":
-        text = emit_s7300(prog, mmap, startup_target=start)
+        text = emit_s7300(prog, mmap, startup_target=start, optimize=optimize)
     else:
         with_motion = motion and params.arm == "grabber"
         text = emit_s7200(

@@ -19,8 +19,7 @@ LDR<op> a, b           L a; L b; <op>R; = TOS; JUO -> CPU STOP (NaN in a REAL co
                        stops an S7-200: the translation sets the STOP bit and ends OB1)
 AENO                   TOS := TOS AND NOT OV (ENO = 0 after an overflow/illegal value)
 MOVR/MOVD/MOVW/MOVB    L; T (integer constants as L#n / DW#16#..)
-+R -R /R  IN1, OUT     L OUT; L IN1; op; T OUT (OUT := OUT op IN1)
-*R IN1, OUT            L IN1; L OUT; *R; T OUT
++R -R *R /R IN1, OUT   L OUT; L IN1; op; T OUT (OUT := OUT op IN1)
 SQRT/SIN/COS... IN,OUT L IN; op; T OUT
 ROUND IN, OUT          exact S7-200 rule (TRUNC, then +-1 if |fraction| >= 0.5: halves away
                        from zero), not RND (ties to even)
@@ -35,12 +34,19 @@ PLS n                  no PTO hardware: logs the pulse count SMD72/SMD82 and cle
 
 Box instructions run only with power flow: unless the translator knows the TOS is the
 always-on SM0.0, each box is wrapped in ``A TOS; JCN skip``.
+
+The AWL then goes through :func:`analysis.plc.peephole.optimize_awl` (``optimize=False``
+keeps it literal): ``MOVR a, b`` followed by ``+R c, b`` becomes ``L a; L c; +R; T b``
+instead of ``L a; T b; L b; L c; +R; T b``. Only the AWL that awlsim runs changes, not the
+S7-200 text, and nothing observable does (the module's docstring says why).
 """
 
 from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
+
+from analysis.plc.peephole import optimize_awl
 
 __all__ = ["SM_BASE", "STOP_BIT", "Translation", "translate_s7200"]
 
@@ -58,8 +64,10 @@ PLS_LOG = 1660  # MD1660 channel 0 count, MD1664 channel 1; MW1672/1674 number o
 _BOX_ARITH = {
     "+R": "+R",
     "-R": "-R",
+    "*R": "*R",
     "/R": "/R",
     "+D": "+D",
+    "*D": "*D",
     "-D": "-D",
     "/D": "/D",
     "ANDD": "AD",
@@ -374,11 +382,6 @@ class _Emitter:
             w = {"MOVR": "D", "MOVD": "D", "MOVW": "W", "MOVB": "B"}[op]
             self.i("L", o(args[0], w))
             self.i("T", o(args[1], w))
-        elif op == "*R" or op == "*D":
-            self.i("L", o(args[0]))
-            self.i("L", o(args[1]))
-            self.i(op)
-            self.i("T", o(args[1]))
         elif op in _BOX_ARITH:
             self.i("L", o(args[1]))
             self.i("L", o(args[0]))
@@ -472,13 +475,15 @@ class _Emitter:
         self.i("T", dst)
 
 
-def translate_s7200(text: str) -> Translation:
+def translate_s7200(text: str, *, optimize: bool = True) -> Translation:
     """Translate S7-200 STL text (Micro/WIN text form) into AWL for awlsim.
 
     Parameters
     ----------
     text : str
         ``ORGANIZATION_BLOCK ...:OB1`` and ``SUBROUTINE_BLOCK NAME:SBRn`` blocks.
+    optimize : bool
+        Remove reloads and overwritten stores (:func:`~.peephole.optimize_awl`).
 
     Returns
     -------
@@ -540,4 +545,5 @@ def translate_s7200(text: str) -> Translation:
             ]
             out += ["NAN:  SET", f"      S     M {STOP_BIT[0]}.{STOP_BIT[1]}", "      BEU"]
             out += ["END_ORGANIZATION_BLOCK", ""]
-    return Translation("\n".join(out), tuple(notes))
+    awl = "\n".join(out)
+    return Translation(optimize_awl(awl) if optimize else awl, tuple(notes))
