@@ -194,6 +194,22 @@ def test_every_command_has_help(capsys, command):
 
 
 def test_errata_subcommand_passes_options_through(capsys):
-    """`python -m analysis errata --check`: the committed register matches the audit."""
-    code, out, _ = run(capsys, "errata", "--check")
-    assert code == 0 and "up to date" in out
+    """`python -m analysis errata --check --paper picker`: that committed register matches its
+    audit, and the README block (every paper's rows) is not judged from one paper. (Every
+    register and the README block without --paper: tests/audit/test_register.py and
+    test_readme_errata.py.)"""
+    code, out, err = run(capsys, "errata", "--check", "--paper", "picker")
+    assert (code, out.strip(), err) == (0, "up to date", "")
+    code, _, err = run(capsys, "errata", "--check", "--paper", "nobody")
+    assert code == 2 and "no paper 'nobody'; expected one of grabber" in err
+
+
+def test_errata_for_one_paper_generates_its_register_and_never_the_readme(monkeypatch):
+    from analysis.audit import register as reg
+
+    assert list(reg._generated(["picker"])) == [reg.register_path("picker")]
+    monkeypatch.setattr(reg, "available", lambda: ["picker"])  # all papers: the README too
+    assert list(reg._generated(["picker"])) == [
+        reg.register_path("picker"),
+        reg.PROJECT / "README.md",
+    ]

@@ -455,7 +455,11 @@ def _add_errata(sub) -> None:
     g = p.add_mutually_exclusive_group()
     g.add_argument("--check", action="store_true", help="exit 1 if a generated file is stale")
     g.add_argument("--write", action="store_true", help="rewrite the registers and README")
-    p.add_argument("--paper", help="only this paper (grabber, palletizer, picker, gr1)")
+    p.add_argument(
+        "--paper",
+        help="only this paper's register (grabber, palletizer, picker, gr1); the README block "
+        "lists every paper and is checked and written only without --paper",
+    )
     p.set_defaults(func=_cmd_errata)
 
 

@@ -80,13 +80,17 @@ def _items_text() -> str:
 
 
 def _generated(papers=None) -> dict[Path, str]:
-    """Every file the audits generate: path -> content."""
-    papers = papers or available()
+    """Every file the audits of ``papers`` generate (default: all): path -> content.
+
+    The README block lists every paper, so it is generated only when all are selected: from
+    some papers alone it would drop the others' rows."""
+    papers = list(papers or available())
     out = {register_path(p): register(p).csv_text() for p in papers}
     if "grabber" in papers:
         out[data_dir() / "errata" / "grabber_items.csv"] = _items_text()
-    readme = PROJECT / "README.md"
-    out[readme] = readme_text(readme, papers)
+    if set(papers) >= set(available()):
+        readme = PROJECT / "README.md"
+        out[readme] = readme_text(readme)
     return out
 
 
