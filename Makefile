@@ -47,8 +47,13 @@ $(STAMP): requirements.lock pyproject.toml
 # those tests are skipped, saying why); here from the notebooks' stored outputs and the
 # figures that the nbval run just saved in build/figures (ANALYSIS_SITE_EXECUTE=0): nbval has
 # re-executed every notebook and compared it with those outputs the line before.
+# ANALYSIS_AWLSIM_MEMO (analysis.plc.runner.sweep): a notebook and a test that execute the same
+# program on the same targets share one awlsim run; emptied first, so it lasts one `make test`.
+AWLSIM_MEMO := $(CURDIR)/build/awlsim-memo
+
 test: $(STAMP)
-	MPLBACKEND=Agg $(PY) -m pytest -n 2 --dist loadscope --no-loadscope-reorder \
+	rm -rf $(AWLSIM_MEMO)
+	ANALYSIS_AWLSIM_MEMO=$(AWLSIM_MEMO) MPLBACKEND=Agg $(PY) -m pytest -n 2 --dist loadscope --no-loadscope-reorder \
 	  -p tests.nbval_kernel --nbval-kernel-preload $(NB_PRELOAD) --nbval-kernel-env MPLBACKEND=$(NB_BACKEND) \
 	  --nbval --nbval-sanitize-with tests/nbval_sanitize.cfg notebooks \
 	  --doctest-modules tests src --ignore=tests/browser

@@ -20,7 +20,7 @@ from analysis.plc.generate import generate
 from analysis.plc.memmap import MemoryMap, default_map
 from analysis.plc.model import predict
 from analysis.plc.pose_targets import pose_sweep_targets
-from analysis.plc.runner import AwlRunner
+from analysis.plc.runner import AwlRunner, sweep
 from analysis.plc.translate import translate_s7200
 from analysis.plc.verify import compare
 from analysis.studies.gr1 import gr1_arm, project_orientation, thesis_poses
@@ -63,11 +63,12 @@ def targets():
 )
 def test_sweep_matches_python(variant, branch, targets):
     src, mmap, trig = _source(variant, branch)
-    runner = AwlRunner(src, mmap)
-    res = runner.solve(targets[COLS].to_numpy(), sentinel=SENTINEL)
+    # executed on awlsim once per `make test` (notebook 10 runs the S7-300 front-up program)
+    done = sweep(src, mmap, targets[COLS].to_numpy(), sentinel=SENTINEL)
+    res = done.result
     dialect = "s7-300" if variant.startswith("s7-300") else "s7-200"
     cmp = compare(res, targets, ARM, branch, dialect, SENTINEL, trig)
-    assert cmp.n == 1044 and not runner.stopped  # no REAL compare saw a NaN
+    assert cmp.n == 1044 and not done.stopped  # no REAL compare saw a NaN
     assert cmp.model_exact  # the float32 model = awlsim, status and pulses, bit for bit
     assert cmp.status_mismatch == 0 and cmp.flag_mismatch == 0 and cmp.unchanged_ok
     # every status this program can give occurs (front-up: 519 ok, 150 out of reach, 5 on

@@ -18,7 +18,7 @@ from analysis.plc.generate import generate
 from analysis.plc.ir import build_program
 from analysis.plc.memmap import default_map
 from analysis.plc.paper_listings import figure_text, run_paper_listings
-from analysis.plc.runner import AwlRunner
+from analysis.plc.runner import AwlRunner, sweep
 from analysis.plc.translate import I_BASE, PLS_LOG, Q_BASE, SM_BASE, translate_s7200
 from analysis.plc.verify import compare, sweep_targets, table4_targets
 
@@ -58,8 +58,9 @@ def targets():
 )
 def test_sweep_matches_python(variant, branch, targets):
     src, mmap, dialect, prog = _source(variant, branch, with_program=True)
-    runner = AwlRunner(src, mmap)
-    res = runner.solve(targets[["x_mm", "y_mm", "z_mm"]].to_numpy(), sentinel=SENTINEL)
+    # executed on awlsim once per `make test` (notebook 07 runs the front-up programs too)
+    done = sweep(src, mmap, targets[["x_mm", "y_mm", "z_mm"]].to_numpy(), sentinel=SENTINEL)
+    res = done.result
     cmp = compare(res, targets, ARM, branch, dialect, SENTINEL, prog.trig)
     assert cmp.n >= 1000
     assert set(targets["kind"]) >= {
@@ -73,7 +74,7 @@ def test_sweep_matches_python(variant, branch, targets):
         "huge",
         "cut",
     }
-    assert not runner.stopped  # no REAL compare saw a NaN
+    assert not done.stopped  # no REAL compare saw a NaN
     # the float32 model of the program reproduces awlsim bit for bit (status and pulses)
     assert cmp.model_exact
     # the same targets refused, with the same status code, as Python (base axis included)

@@ -29,7 +29,7 @@ import pandas as pd
 
 from analysis.kinematics.arm import Arm
 from analysis.plc.memmap import MemoryMap
-from analysis.plc.runner import AwlRunner, RunResult
+from analysis.plc.runner import RunResult, sweep
 from analysis.plc.verify import Comparison, compare
 
 __all__ = [
@@ -241,12 +241,11 @@ def run(
     src, map_text = text if text is not None else program(arm, dialect, branch)
     mmap = MemoryMap.from_dict(json.loads(map_text))
     awl = translate_s7200(src).awl if dialect == "s7-200" else src
-    runner = AwlRunner(awl, mmap)
     xyz = targets[["x_mm", "y_mm", "z_mm"]].to_numpy(dtype=float)
-    res = runner.solve(xyz, sentinel=SENTINEL)
+    done = sweep(awl, mmap, xyz, sentinel=SENTINEL)
     trig = "subroutine" if "ATAN2/ACOS: generated subroutines" in src else "native"
-    cmp = compare(res, targets, arm, branch, dialect, SENTINEL, trig)
-    return PlcRun(cmp, res, targets, runner.stopped)
+    cmp = compare(done.result, targets, arm, branch, dialect, SENTINEL, trig)
+    return PlcRun(cmp, done.result, targets, done.stopped)
 
 
 def real_errors(arm: Arm, targets: pd.DataFrame, dialect: str = "s7-200") -> pd.DataFrame:

@@ -5,6 +5,16 @@ addresses, ``runCycle()``, read c1..c3 and the reach flag back (awlsim's Python 
 ``AwlSim``, ``runCycle``).
 The M area (2048 bytes by default) is read and written directly, big-endian.
 
+:func:`sweep` is that on a fresh CPU, as one call. Within one test run the notebooks and
+the tests execute some of the same programs on the same targets (notebook 07 and
+``tests/plc/test_plc_awlsim.py``, for instance); with ``ANALYSIS_AWLSIM_MEMO`` naming a
+directory, :func:`sweep` stores each result there under a digest of everything that
+determines it (the AWL text, the memory map, the targets' bytes, the sentinel, the REAL
+addresses read, awlsim's version and this module's source) and a later identical call
+reads it instead of executing again. ``make test`` points it at a directory it empties
+first, so every distinct program and target set runs on awlsim once per ``make test``;
+unset (the default), every call executes.
+
 awlsim evaluates REAL operations in Python doubles and rounds every accumulator store to
 float32, like a CPU's REAL arithmetic. RND rounds ties to even (S7-300), the S7-200 ROUND
 halves away from zero: a float32 value of exactly k + 0.5 is the only place they differ.
@@ -12,15 +22,23 @@ halves away from zero: a float32 value of exactly k + 0.5 is the only place they
 
 from __future__ import annotations
 
+import hashlib
+import os
 import struct
+import tempfile
+import zipfile
 from dataclasses import dataclass
+from pathlib import Path
 
 import numpy as np
 import numpy.typing as npt
 
 from analysis.plc.memmap import MemoryMap
 
-__all__ = ["AwlRunner", "RunResult", "run_targets"]
+__all__ = ["MEMO_ENV", "AwlRunner", "RunResult", "Sweep", "run_targets", "sweep"]
+
+MEMO_ENV = "ANALYSIS_AWLSIM_MEMO"
+"""Environment variable: a directory where :func:`sweep` keeps its results (unset: none)."""
 
 
 def _awlsim():
@@ -166,6 +184,96 @@ class AwlRunner:
                 status[n] = self.read_dint(sbyte)
             extra[n] = [self.read_real(b) for b in reals]
         return RunResult(pulses, ok, extra if reals else None, status)
+
+
+@dataclass(frozen=True)
+class Sweep:
+    """What :func:`sweep` returns.
+
+    Attributes
+    ----------
+    result : RunResult
+    stopped : bool
+        The CPU was stopped (a NaN reached a REAL compare in translated S7-200 code).
+    source : {"awlsim", "memo"}
+        Executed by this call, or read from ``ANALYSIS_AWLSIM_MEMO`` (executed earlier in
+        the run by an identical call).
+    """
+
+    result: RunResult
+    stopped: bool
+    source: str
+
+
+def _digest(source: str, mmap: MemoryMap, t: np.ndarray, sentinel, reals) -> str:
+    from awlsim.common.version import VERSION_STRING
+
+    h = hashlib.sha256()
+    for part in (
+        VERSION_STRING,
+        Path(__file__).read_text(encoding="utf-8"),
+        source,
+        mmap.to_json(),
+        repr((t.shape, sentinel, tuple(reals))),
+    ):
+        h.update(part.encode("utf-8"))
+        h.update(b"\0")
+    h.update(np.ascontiguousarray(t, dtype="<f8").tobytes())
+    return h.hexdigest()
+
+
+def _read_memo(path: Path) -> Sweep | None:
+    try:
+        with np.load(path) as z:
+            reals = z["reals"] if bool(z["has_reals"]) else None
+            res = RunResult(z["pulses"], z["reachable"], reals, z["status"])
+            return Sweep(res, bool(z["stopped"]), "memo")
+    except (OSError, ValueError, KeyError, EOFError, zipfile.BadZipFile):
+        return None  # absent or unreadable: execute instead
+
+
+def _write_memo(path: Path, out: Sweep) -> None:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    r = out.result
+    reals = r.reals if r.reals is not None else np.empty((len(r.pulses), 0))
+    fd, tmp = tempfile.mkstemp(dir=path.parent, suffix=".tmp")
+    try:
+        with os.fdopen(fd, "wb") as fh:
+            np.savez(
+                fh,
+                pulses=r.pulses,
+                reachable=r.reachable,
+                reals=reals,
+                has_reals=r.reals is not None,
+                status=r.status,
+                stopped=out.stopped,
+            )
+        os.replace(tmp, path)  # whole or not at all: a reader never sees half a file
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+
+
+def sweep(
+    source: str,
+    mmap: MemoryMap,
+    targets: npt.ArrayLike,
+    sentinel: int | None = None,
+    reals: tuple[int, ...] = (),
+) -> Sweep:
+    """Load ``source`` on a fresh CPU (with its first scan) and run one cycle per target
+    (:meth:`AwlRunner.solve`, the same parameters). With ``ANALYSIS_AWLSIM_MEMO`` set, an
+    identical earlier call's result is read instead (module docstring)."""
+    t = np.asarray(targets, dtype=float).reshape(-1, len(mmap.inputs))
+    memo = os.environ.get(MEMO_ENV)
+    path = Path(memo) / f"{_digest(source, mmap, t, sentinel, reals)}.npz" if memo else None
+    if path is not None and (hit := _read_memo(path)) is not None:
+        return hit
+    runner = AwlRunner(source, mmap)
+    out = Sweep(runner.solve(t, sentinel=sentinel, reals=reals), runner.stopped, "awlsim")
+    if path is not None:
+        _write_memo(path, out)
+    return out
 
 
 def run_targets(
