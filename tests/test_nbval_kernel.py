@@ -298,3 +298,24 @@ def test_a_dist_mode_that_splits_notebooks_is_refused(dist: str) -> None:
     nbval_kernel.check_dist(False, dist)  # without --nbval nothing to protect
     for fine in ("no", "each", "loadfile", "loadscope"):
         nbval_kernel.check_dist(True, fine)
+
+
+def test_no_notebook_schema_uses_the_formats_left_unchecked() -> None:
+    """nbval_kernel blocks rfc3987_syntax (start-up time); jsonschema then skips only the "iri"
+    and "iri-reference" formats, which nbformat's schemas (every version) never use."""
+    import json
+
+    import nbformat
+
+    def formats(node: object) -> set[str]:
+        if isinstance(node, dict):
+            own = {node["format"]} if isinstance(node.get("format"), str) else set()
+            return own.union(*(formats(v) for v in node.values()))
+        if isinstance(node, list):
+            return set().union(*(formats(v) for v in node))
+        return set()
+
+    schemas = sorted(Path(nbformat.__file__).parent.glob("v*/*.json"))
+    assert len(schemas) >= 7
+    used = set().union(*(formats(json.loads(p.read_text())) for p in schemas))
+    assert not used & {"iri", "iri-reference"}, used
