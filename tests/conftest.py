@@ -45,3 +45,24 @@ def pytest_collection_modifyitems(items):
     items.sort(
         key=lambda item: (item.path.suffix != ".ipynb", item.get_closest_marker("slow") is None)
     )  # stable
+
+
+# Building the papers' registers takes seconds of SymPy, cached per process. Under
+# `--dist loadscope` (make test) the modules that build them share one work unit, so only one
+# xdist worker pays for it: the audit tests and the report site (which lists every register).
+_REGISTER_SCOPE = ("tests/audit/", "tests/app/test_report.py")
+
+
+def pytest_xdist_make_scheduler(config, log):
+    """``--dist loadscope`` with the register-building modules as one scope (see above)."""
+    if config.getoption("dist") != "loadscope":
+        return None  # xdist's own scheduler
+    from xdist.scheduler import LoadScopeScheduling
+
+    class Scheduling(LoadScopeScheduling):
+        def _split_scope(self, nodeid: str) -> str:
+            if nodeid.startswith(_REGISTER_SCOPE):
+                return "the papers' registers"
+            return super()._split_scope(nodeid)
+
+    return Scheduling(config, log)
