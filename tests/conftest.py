@@ -53,6 +53,11 @@ def pytest_collection_modifyitems(items):
 _REGISTER_SCOPE = ("tests/audit/", "tests/app/test_report.py")
 
 
+def shared_scope(nodeid: str) -> str | None:
+    """The loadscope unit a test shares with others beyond its module, if any."""
+    return "the papers' registers" if nodeid.startswith(_REGISTER_SCOPE) else None
+
+
 def pytest_xdist_make_scheduler(config, log):
     """``--dist loadscope`` with the register-building modules as one scope (see above)."""
     if config.getoption("dist") != "loadscope":
@@ -61,8 +66,6 @@ def pytest_xdist_make_scheduler(config, log):
 
     class Scheduling(LoadScopeScheduling):
         def _split_scope(self, nodeid: str) -> str:
-            if nodeid.startswith(_REGISTER_SCOPE):
-                return "the papers' registers"
-            return super()._split_scope(nodeid)
+            return shared_scope(nodeid) or super()._split_scope(nodeid)
 
     return Scheduling(config, log)
