@@ -127,36 +127,54 @@ def test_maths_is_rendered_with_every_outside_request_blocked(
         assert not re.search(r"<script[^>]+src=\"(https?:)?//", html), p
 
 
-def test_every_image_loads(page, site_url, pages, blocked):
-    broken = []
-    for p in pages:
-        _goto(page, site_url + p)
-        bad = page.evaluate(
-            """async () => {
-                const imgs = [...document.images];
-                imgs.forEach(i => { i.loading = 'eager'; });
-                await Promise.all(imgs.map(i => i.complete ? null
-                    : new Promise(r => { i.onload = i.onerror = r; })));
-                return imgs.filter(i => !(i.naturalWidth > 0)).map(i => i.src);
-            }"""
-        )
-        broken += [f"{p}: {src}" for src in bad]
+# What three tests check on every page, read in one visit per page (MathJax typeset, every
+# image loaded or failed): the images that did not load, the URLs the page refers to, and each
+# figure image of the main text with its caption.
+_CRAWL = """async () => {
+    const imgs = [...document.images];
+    imgs.forEach(i => { i.loading = 'eager'; });
+    await Promise.all(imgs.map(i => i.complete ? null
+        : new Promise(r => { i.onload = i.onerror = r; })));
+    return {
+        broken: imgs.filter(i => !(i.naturalWidth > 0)).map(i => i.src),
+        urls: [
+            ...[...document.querySelectorAll('a[href]')].map(a => a.href),
+            ...[...document.querySelectorAll('img[src], script[src]')].map(e => e.src),
+            ...[...document.querySelectorAll('link[href]')].map(l => l.href),
+        ],
+        figures: [...document.querySelectorAll('main img')].map(i => {
+            const c = i.closest('figure')?.querySelector('figcaption .caption-text');
+            return {src: i.getAttribute('src'), caption: c ? c.innerText : null};
+        }),
+    };
+}"""
+
+
+@pytest.fixture(scope="module")
+def crawl(context, site_url, pages, blocked) -> dict[str, dict]:
+    """Every page opened once in the browser: page path -> what :data:`_CRAWL` read."""
+    page = context.new_page()
+    page.blocked = blocked
+    try:
+        out = {}
+        for p in pages:
+            _goto(page, site_url + p)
+            out[p] = page.evaluate(_CRAWL)
+        return out
+    finally:
+        page.close()
+
+
+def test_every_image_loads(crawl, blocked):
+    broken = [f"{p}: {src}" for p, seen in crawl.items() for src in seen["broken"]]
     assert not broken, broken
     assert not blocked
 
 
-def test_every_internal_link_resolves(page, context, site_url, pages):
+def test_every_internal_link_resolves(crawl, context, site_url):
     targets: dict[str, set[str]] = {}
-    for p in pages:
-        _goto(page, site_url + p)
-        urls = page.evaluate(
-            """() => [
-                ...[...document.querySelectorAll('a[href]')].map(a => a.href),
-                ...[...document.querySelectorAll('img[src], script[src]')].map(e => e.src),
-                ...[...document.querySelectorAll('link[href]')].map(l => l.href),
-            ]"""
-        )
-        for url in urls:
+    for seen in crawl.values():
+        for url in seen["urls"]:
             if not url.startswith(site_url):
                 continue
             parts = urlsplit(url)
@@ -223,7 +241,7 @@ def test_downloads_are_present_and_what_they_say(page, context, site_url, site_d
     assert dl.value.suggested_filename == "ik_s7-200.awl"
 
 
-def test_every_figure_has_a_caption_with_units(page, site_url, site_dir, pages, shots):
+def test_every_figure_has_a_caption_with_units(page, crawl, site_url, site_dir, shots):
     stems = sorted({p.stem for p in (site_dir / "_images").glob("[0-9][0-9]-*.png")})
     assert stems
     _goto(page, site_url + "figures.html")
@@ -235,15 +253,8 @@ def test_every_figure_has_a_caption_with_units(page, site_url, site_dir, pages, 
     )
     assert sorted(c["src"].rsplit("/", 1)[-1][:-4] for c in captions) == stems
     bad = []
-    for p in pages:
-        _goto(page, site_url + p)
-        found = page.evaluate(
-            """() => [...document.querySelectorAll('main img')].map(i => {
-                const c = i.closest('figure')?.querySelector('figcaption .caption-text');
-                return {src: i.getAttribute('src'), caption: c ? c.innerText : null};
-            })"""
-        )
-        for f in found:
+    for p, seen in crawl.items():
+        for f in seen["figures"]:
             stem = f["src"].rsplit("/", 1)[-1].rsplit(".", 1)[0]
             cap = (f["caption"] or "").split(" (SVG", 1)[0].strip()  # without the links
             if not cap or MISSING_CAPTION in cap or cap.startswith(stem) or not UNITS.search(cap):
