@@ -59,7 +59,7 @@ test: $(STAMP)
 	  --doctest-modules tests src --ignore=tests/browser
 	ANALYSIS_SITE_EXECUTE=0 MPLBACKEND=Agg $(PY) -m pytest tests/browser
 
-# The developer loop (about 25 s): the unit tests without those marked slow (the awlsim sweeps,
+# The developer loop (about 22 s): the unit tests without those marked slow (the awlsim sweeps,
 # the subprocess sessions, the site build; tests/conftest.py), stopping at the first failure.
 test-fast: $(STAMP)
 	MPLBACKEND=Agg $(PY) -m pytest -n 2 --dist worksteal -x -m "not slow" tests --ignore=tests/browser
