@@ -45,8 +45,8 @@ def input_columns(arm: Arm) -> tuple[str, ...]:
     """
     point = dict(zip(("px", "py", "pz"), INPUT_COLUMNS, strict=True))
     return tuple(
-        point.get(name) or f"{name}_{'deg' if unit == 'rad' else unit}"
-        for name, unit in zip(arm.inputs, arm.input_units, strict=True)
+        point.get(name) or f"{name}_{unit}"
+        for name, unit in zip(arm.inputs, arm.user_units, strict=True)
     )
 
 
@@ -115,7 +115,6 @@ def solve_csv(
                 make_parents=True)  # fmt: skip
     names = arm.branch_names(branch or arm.branches[0])
     columns = input_columns(arm)
-    degrees = [unit == "rad" for unit in arm.input_units]
     counts: Counter = Counter()
     total = solved = 0
     with atomic_writer(output_path, newline="", make_parents=True) as fh:
@@ -128,13 +127,7 @@ def solve_csv(
             chunk_rows=chunk_rows,
         ):
             header = list(cols)
-            p_all = np.stack(
-                [
-                    np.radians(cols[c]) if d else cols[c]
-                    for c, d in zip(columns, degrees, strict=True)
-                ],
-                axis=-1,
-            )
+            p_all = arm.from_user(np.stack([cols[c] for c in columns], axis=-1))
             for s in range(0, len(p_all), WRITE_ROWS):
                 part = {k: v[s : s + WRITE_ROWS] for k, v in cols.items()}
                 p = p_all[s : s + WRITE_ROWS]

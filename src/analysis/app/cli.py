@@ -154,10 +154,7 @@ def _cmd_ik(args: argparse.Namespace) -> int:
 
 
 def _input_labels(arm) -> list[str]:
-    return [
-        f"{name} [{'deg' if unit == 'rad' else unit}]"
-        for name, unit in zip(arm.inputs, arm.input_units, strict=True)
-    ]
+    return [f"{name} [{unit}]" for name, unit in zip(arm.inputs, arm.user_units, strict=True)]
 
 
 def _nearest_pose_hint(arm, target) -> str:
@@ -185,10 +182,7 @@ def _ik_single(args: argparse.Namespace, arm) -> int:
     from analysis.kinematics.solution import OrientationError
 
     given = list(args.target)
-    target = [
-        math.radians(v) if unit == "rad" else v
-        for v, unit in zip(given, arm.input_units, strict=True)
-    ]
+    target = arm.from_user(given).tolist()
     names = arm.branch_names(args.branch or arm.branches[0])
     try:
         sols = arm.ik_all(target, theta1_on_axis=_axis(args), tol=args.tol, branches=names)
@@ -204,14 +198,14 @@ def _ik_single(args: argparse.Namespace, arm) -> int:
         }
         for name, theta in sols.items()
     ]
-    units = arm.input_units
+    units = arm.user_units
     if all(u == "mm" for u in units):
         lines = [f"target ({', '.join(f'{v:g}' for v in given)}) mm"]
     else:
         lines = [
             "pose "
-            + ", ".join(f"{lab.split(' [')[0]} = {v:g} {'deg' if u == 'rad' else u}"
-                        for lab, v, u in zip(_input_labels(arm), given, units, strict=True))
+            + ", ".join(f"{name} = {v:g} {u}"
+                        for name, v, u in zip(arm.inputs, given, units, strict=True))
         ]  # fmt: skip
     for s in out:
         ang = ", ".join(f"{t:.2f}" for t in s["theta_deg"])

@@ -208,6 +208,29 @@ class Arm:
         return tuple(getattr(self.closed_form, "INPUT_UNITS", ("mm",) * len(self.inputs)))
 
     @property
+    def user_units(self) -> tuple[str, ...]:
+        """Units a user gives the inputs in (command line, CSV columns): an angle in degrees,
+        a coordinate in mm; :meth:`from_user` converts.
+
+        >>> load_arm("gr1").user_units
+        ('mm', 'mm', 'mm', 'deg', 'deg', 'deg')
+        """
+        return tuple("deg" if u == "rad" else u for u in self.input_units)
+
+    def from_user(self, values: npt.ArrayLike) -> np.ndarray:
+        """``(..., k)`` inputs in :attr:`user_units` -> in :attr:`input_units` (degrees to
+        radians; coordinates unchanged).
+
+        >>> load_arm("gr1").from_user([100, 0, 600, 0, 90, 180]).round(4).tolist()
+        [100.0, 0.0, 600.0, 0.0, 1.5708, 3.1416]
+        """
+        v = np.asarray(values, dtype=float)
+        angle = np.array([u == "rad" for u in self.input_units])
+        if v.shape[-1:] != angle.shape:
+            raise ValueError(f"{self.name} takes {len(angle)} inputs per target, got {v.shape}")
+        return np.where(angle, np.radians(v), v)
+
+    @property
     def n_joints(self) -> int:
         return len(self.description.joints)
 
