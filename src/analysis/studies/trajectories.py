@@ -187,21 +187,8 @@ def cubic_coefficients(q0: npt.ArrayLike, qf: npt.ArrayLike, duration: float):
 def cubic_trajectory(q0: npt.ArrayLike, qf: npt.ArrayLike, duration: float, t: npt.ArrayLike):
     """Position, velocity, acceleration of the cubic (seed 004 eqs. 5.3-5.4, 5.7-5.9):
     ``trajectory("cubic", ...)``, whose normalized profile 3 s^2 - 2 s^3 is the thesis's
-    coefficients (:func:`cubic_coefficients`) divided through by (qf - q0).
-
-    Parameters
-    ----------
-    q0, qf : array_like, shape (..., n)
-        Start and end joint angles [rad].
-    duration : float
-        T [s], > 0.
-    t : array_like, shape (m,)
-        Sample times [s] in [0, T].
-
-    Returns
-    -------
-    q, qd, qdd : ndarray, shape (m, ..., n)
-        [rad], [rad/s], [rad/s^2].
+    coefficients (:func:`cubic_coefficients`) divided through by (qf - q0). Parameters
+    and results as :func:`trajectory`'s.
     """
     return trajectory("cubic", q0, qf, duration, t)
 
