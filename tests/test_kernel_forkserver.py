@@ -95,6 +95,9 @@ def test_forked_kernel_runs_is_interrupted_and_dies_with_its_stub(tmp_path, serv
 
         # an interrupt (SIGINT to the stub's process group) reaches the forked kernel
         msg_id = kc.execute("import time\ntime.sleep(60)", stop_on_error=False)
+        # not "as soon as execute_input is published": that comes before the cell runs, and an
+        # interrupt then is caught by the kernel's loop ("KeyboardInterrupt caught in kernel",
+        # no reply; seen under load). A second is long enough for the cell to be sleeping.
         time.sleep(1.0)
         km.interrupt_kernel()
         reply = kc.get_shell_msg(timeout=20)
