@@ -58,6 +58,7 @@ def shared_scope(nodeid: str) -> str | None:
     return "the papers' registers" if nodeid.startswith(_REGISTER_SCOPE) else None
 
 
+@pytest.hookimpl(optionalhook=True)  # a hook of pytest-xdist: `-p no:xdist` must still work
 def pytest_xdist_make_scheduler(config, log):
     """``--dist loadscope`` with the register-building modules as one scope (see above)."""
     if config.getoption("dist") != "loadscope":
