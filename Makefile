@@ -39,7 +39,8 @@ $(STAMP): requirements.lock pyproject.toml
 # order (a unit test module is one scope too); --no-loadscope-reorder keeps the order of
 # tests/conftest.py: the notebooks first, then the tests marked slow, longest work first.
 # Tests draw with Agg; the notebook kernels get the inline backend (--nbval-kernel-env), whose
-# figure outputs are part of what nbval compares.
+# figure outputs are part of what nbval compares. A cell may take 300 s (the longest takes about
+# 3 s): a hung cell fails, naming itself, instead of holding the run for nbval's default 2000 s.
 # tests/nbval_kernel.py starts the notebook kernels over IPC (no TCP port race between the
 # xdist workers), forks them from a preloaded server, retries a kernel that dies at start-up
 # and keeps each kernel's stderr in build/nbval-kernel-logs/.
@@ -55,7 +56,7 @@ test: $(STAMP)
 	rm -rf $(AWLSIM_MEMO)
 	ANALYSIS_AWLSIM_MEMO=$(AWLSIM_MEMO) MPLBACKEND=Agg $(PY) -m pytest -n 2 --dist loadscope --no-loadscope-reorder \
 	  -p tests.nbval_kernel --nbval-kernel-preload $(NB_PRELOAD) --nbval-kernel-env MPLBACKEND=$(NB_BACKEND) \
-	  --nbval --nbval-sanitize-with tests/nbval_sanitize.cfg notebooks \
+	  --nbval --nbval-sanitize-with tests/nbval_sanitize.cfg --nbval-cell-timeout 300 notebooks \
 	  --doctest-modules tests src --ignore=tests/browser
 	ANALYSIS_SITE_EXECUTE=0 MPLBACKEND=Agg $(PY) -m pytest tests/browser
 
