@@ -27,6 +27,17 @@ def rng() -> np.random.Generator:
     return np.random.default_rng(20161)
 
 
+@pytest.fixture(autouse=True)
+def _sympy_seeded():
+    """SymPy draws random numbers inside some algorithms (multivariate factorisation picks
+    random evaluation points, ``sympy.core.random``). Seeded before each test, a test takes the
+    same path through SymPy in every run, whichever worker and order it runs in (the notebook
+    kernels: tests/kernel_forkserver.py)."""
+    from sympy.core.random import seed
+
+    seed(20161)
+
+
 @pytest.fixture(scope="session")
 def arm():
     from analysis.kinematics.arm import paper_arm

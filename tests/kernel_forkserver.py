@@ -37,7 +37,10 @@ What a forked kernel inherits, and what it does not
   ``display.max_columns`` by whether it runs inside a kernel, the inline backend hooks into
   the running shell. The server exits, naming them, if the preload list imports any.
 * Python's ``random`` re-seeds itself in a forked child; NumPy's legacy global generator does
-  not (every notebook here uses seeded ``default_rng`` generators).
+  not (every notebook here uses seeded ``default_rng`` generators). SymPy's own generator
+  (``sympy.core.random``: multivariate factorisation draws random evaluation points) is seeded
+  in the server after the preload, so every kernel starts from one state and a notebook takes
+  the same path through SymPy in every run (a rare slow path then shows every time or never).
 * No thread is running in the server when it forks (checked: ``threading.active_count()``;
   OpenBLAS' pool re-initialises through its own ``pthread_atfork`` handlers).
 """
@@ -52,6 +55,8 @@ import struct
 import sys
 
 _HEADER = struct.Struct("!I")
+SYMPY_SEED = 20161
+"""The seed of SymPy's generator in every forked kernel (see the module docstring)."""
 _FORWARDED = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP, signal.SIGQUIT)
 # read by Python or a preloaded module when it starts or is imported
 # modules that capture where they run when imported: ipykernel/IPython read JPY_PARENT_PID and
@@ -185,6 +190,8 @@ def serve(sock_path: str, preload: list[str]) -> None:
 
     if threading.active_count() != 1:
         raise SystemExit(f"kernel_forkserver: preloading {preload} started threads; cannot fork")
+    if "sympy.core.random" in sys.modules:
+        sys.modules["sympy.core.random"].seed(SYMPY_SEED)
 
     wake_r, wake_w = os.pipe()
     os.set_blocking(wake_w, False)

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import json
 import os
+import random
 import subprocess
 import sys
 import time
@@ -14,7 +15,7 @@ from pathlib import Path
 
 import pytest
 
-from kernel_forkserver import _IMPORT_TIME_STATE
+from kernel_forkserver import _IMPORT_TIME_STATE, SYMPY_SEED
 
 pytestmark = pytest.mark.slow  # seconds per test: run first (tests/conftest.py)
 
@@ -33,7 +34,7 @@ def _wait_for(path: str, proc: subprocess.Popen, timeout: float = 60) -> None:
 def server(tmp_path: Path):
     sock = str(tmp_path / "fs.sock")
     proc = subprocess.Popen(
-        [sys.executable, str(FORKSERVER), "serve", sock, "json"],
+        [sys.executable, str(FORKSERVER), "serve", sock, "json,sympy.core.random"],
         stderr=subprocess.PIPE,
         text=True,
     )
@@ -92,6 +93,9 @@ def test_forked_kernel_runs_is_interrupted_and_dies_with_its_stub(tmp_path, serv
         assert status == "ok" and out[1] == "True"  # preloaded in the server
         kernel_pid = int(out[0])
         assert kernel_pid != km.provisioner.process.pid  # the stub is not the kernel
+        # SymPy's generator starts from the server's seed in every kernel
+        status, out = _run(kc, "from sympy.core.random import rng\nprint(rng.random())")
+        assert status == "ok" and float(out[0]) == random.Random(SYMPY_SEED).random()
 
         # an interrupt (SIGINT to the stub's process group) reaches the forked kernel
         msg_id = kc.execute("import time\ntime.sleep(60)", stop_on_error=False)
