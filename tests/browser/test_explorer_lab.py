@@ -192,6 +192,20 @@ def _camera(plot) -> dict:
     return plot.evaluate("el => el._fullLayout.scene._scene.getCamera().eye")
 
 
+def _settled_camera(page, plot, timeout_s: float = 10) -> dict:
+    """The camera once two reads 200 ms apart agree (the last mouse events of a drag may still
+    be moving it when the drag returns)."""
+    deadline = time.monotonic() + timeout_s
+    eye = _camera(plot)
+    while time.monotonic() < deadline:
+        page.wait_for_timeout(200)
+        now = _camera(plot)
+        if now == eye:
+            return now
+        eye = now
+    raise AssertionError(f"the 3D view kept moving for {timeout_s} s: {eye}")
+
+
 def _drag(page, box, dx: float, dy: float) -> None:
     x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
     page.mouse.move(x, y)
@@ -270,7 +284,7 @@ def test_explorer_in_jupyterlab(lab, lab_page, shots):
     plot.scroll_into_view_if_needed()
     before = _camera(plot)
     _drag(page, plot.bounding_box(), 120, 40)
-    after = _camera(plot)
+    after = _settled_camera(page, plot)
     assert after != before, (before, after)
     _type_into(page, "x [mm]", 100)
     _type_into(page, "y [mm]", 100)
