@@ -47,6 +47,7 @@ What a forked kernel inherits, and what it does not
 
 from __future__ import annotations
 
+import gc
 import json
 import os
 import signal
@@ -57,6 +58,8 @@ import sys
 _HEADER = struct.Struct("!I")
 SYMPY_SEED = 20161
 """The seed of SymPy's generator in every forked kernel (see the module docstring)."""
+GC_THRESHOLD = (100_000, 50, 100)
+"""The cyclic collector's thresholds in every forked kernel (as in tests/conftest.py)."""
 _FORWARDED = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP, signal.SIGQUIT)
 # read by Python or a preloaded module when it starts or is imported
 # modules that capture where they run when imported: ipykernel/IPython read JPY_PARENT_PID and
@@ -192,6 +195,11 @@ def serve(sock_path: str, preload: list[str]) -> None:
         raise SystemExit(f"kernel_forkserver: preloading {preload} started threads; cannot fork")
     if "sympy.core.random" in sys.modules:
         sys.modules["sympy.core.random"].seed(SYMPY_SEED)
+    # what the kernels inherit from the collector: the preloaded modules moved out of its reach
+    # (gc.freeze, as Python's documentation advises before forking: no child scans or touches
+    # them) and the tests' first threshold (tests/conftest.py: SymPy-heavy cells, fewer runs)
+    gc.freeze()
+    gc.set_threshold(*GC_THRESHOLD)
 
     wake_r, wake_w = os.pipe()
     os.set_blocking(wake_w, False)

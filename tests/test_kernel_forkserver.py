@@ -15,7 +15,7 @@ from pathlib import Path
 
 import pytest
 
-from kernel_forkserver import _IMPORT_TIME_STATE, SYMPY_SEED
+from kernel_forkserver import _IMPORT_TIME_STATE, GC_THRESHOLD, SYMPY_SEED
 
 pytestmark = pytest.mark.slow  # seconds per test: run first (tests/conftest.py)
 
@@ -96,6 +96,9 @@ def test_forked_kernel_runs_is_interrupted_and_dies_with_its_stub(tmp_path, serv
         # SymPy's generator starts from the server's seed in every kernel
         status, out = _run(kc, "from sympy.core.random import rng\nprint(rng.random())")
         assert status == "ok" and float(out[0]) == random.Random(SYMPY_SEED).random()
+        # and the collector's settings: the preload frozen, the tests' threshold
+        status, out = _run(kc, "import gc\nprint(gc.get_threshold(), gc.get_freeze_count() > 0)")
+        assert status == "ok" and " ".join(out) == f"{GC_THRESHOLD} True"
 
         # an interrupt (SIGINT to the stub's process group) reaches the forked kernel
         msg_id = kc.execute("import time\ntime.sleep(60)", stop_on_error=False)
