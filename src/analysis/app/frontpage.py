@@ -127,7 +127,7 @@ def _plc_verdict(arm) -> Verdict:
     from analysis.plc.generate import generate
     from analysis.plc.memmap import default_map
     from analysis.plc.paper_listings import run_paper_listings
-    from analysis.plc.runner import AwlRunner
+    from analysis.plc.runner import sweep
     from analysis.plc.translate import translate_s7200
     from analysis.plc.verify import compare, sweep_targets, table4_targets
 
@@ -138,7 +138,7 @@ def _plc_verdict(arm) -> Verdict:
     for dialect, lang in (("s7-200", "STL"), ("s7-300", "AWL")):
         text, _ = generate(dialect)
         src = translate_s7200(text).awl if dialect == "s7-200" else text
-        res = AwlRunner(src, default_map(dialect)).solve(xyz, sentinel=-999_999)
+        res = sweep(src, default_map(dialect), xyz, sentinel=-999_999).result
         c = compare(res, targets, arm, "front-up", dialect=dialect, sentinel=-999_999)
         rows.append(
             {

@@ -22,6 +22,7 @@ halves away from zero: a float32 value of exactly k + 0.5 is the only place they
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import os
 import struct
@@ -35,7 +36,7 @@ import numpy.typing as npt
 
 from analysis.plc.memmap import MemoryMap
 
-__all__ = ["MEMO_ENV", "AwlRunner", "RunResult", "Sweep", "run_targets", "sweep"]
+__all__ = ["MEMO_ENV", "AwlRunner", "RunResult", "Sweep", "sweep"]
 
 MEMO_ENV = "ANALYSIS_AWLSIM_MEMO"
 """Environment variable: a directory where :func:`sweep` keeps its results (unset: none)."""
@@ -205,13 +206,18 @@ class Sweep:
     source: str
 
 
-def _digest(source: str, mmap: MemoryMap, t: np.ndarray, sentinel, reals) -> str:
+@functools.cache
+def _harness() -> str:
+    """What else the results depend on: awlsim's version and this module's source."""
     from awlsim.common.version import VERSION_STRING
 
+    return VERSION_STRING + "\0" + Path(__file__).read_text(encoding="utf-8")
+
+
+def _digest(source: str, mmap: MemoryMap, t: np.ndarray, sentinel, reals) -> str:
     h = hashlib.sha256()
     for part in (
-        VERSION_STRING,
-        Path(__file__).read_text(encoding="utf-8"),
+        _harness(),
         source,
         mmap.to_json(),
         repr((t.shape, sentinel, tuple(reals))),
@@ -274,10 +280,3 @@ def sweep(
     if path is not None:
         _write_memo(path, out)
     return out
-
-
-def run_targets(
-    source: str, mmap: MemoryMap, targets: npt.ArrayLike, sentinel: int | None = None
-) -> RunResult:
-    """Load ``source`` once and solve ``targets`` (see :meth:`AwlRunner.solve`)."""
-    return AwlRunner(source, mmap).solve(targets, sentinel=sentinel)
