@@ -61,19 +61,7 @@ _ABSOLUTE = re.compile(r"^(MB|MW|MD)\s*(\d+)$")
 _WIDTH = {"MB": 1, "MW": 2, "MD": 4}
 _CONSTANT = re.compile(r"^[-+]?(\d|L#|DW#16#|W#16#|B#16#|DINT#|REAL#|INT#)", re.IGNORECASE)
 
-# accumulator-only instructions: no memory operand, no jump, no block change
-_ACCU_ONLY = frozenset(
-    {
-        *("+R", "-R", "*R", "/R", "+D", "-D", "*D", "/D", "+I", "-I", "*I", "/I", "MOD"),
-        *("SQRT", "SQR", "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "LN", "EXP", "ABS"),
-        *("NEGR", "NEGD", "NEGI", "INVD", "INVI", "TRUNC", "RND", "RND+", "RND-"),
-        *("DTR", "ITD", "DTB", "BTD", "ITB", "BTI"),
-        *(f"{c}{t}" for c in ("==", "<>", "<", "<=", ">", ">=") for t in "RDI"),
-        *("AD", "OD", "XOD", "AW", "OW", "XOW"),
-    }
-)
-
-# of these, the ones that read ACCU1 only (ACCU2 is neither read nor changed)
+# instructions that read ACCU1 only (ACCU2 is neither read nor changed)
 _UNARY = frozenset(
     {
         *("SQRT", "SQR", "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "LN", "EXP", "ABS"),
@@ -81,6 +69,12 @@ _UNARY = frozenset(
         *("DTR", "ITD", "DTB", "BTD", "ITB", "BTI"),
     }
 )
+# accumulator-only instructions: no memory operand, no jump, no block change
+_ACCU_ONLY = _UNARY | {
+    *("+R", "-R", "*R", "/R", "+D", "-D", "*D", "/D", "+I", "-I", "*I", "/I", "MOD"),
+    *(f"{c}{t}" for c in ("==", "<>", "<", "<=", ">", ">=") for t in "RDI"),
+    *("AD", "OD", "XOD", "AW", "OW", "XOW"),
+}
 
 _ANY = "any"
 
