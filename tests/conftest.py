@@ -9,11 +9,13 @@ import numpy as np
 import pytest
 from hypothesis import HealthCheck, settings
 
+from kernel_forkserver import GC_THRESHOLD, SYMPY_SEED
+
 # The tests allocate millions of short-lived SymPy objects; at Python's default first threshold
 # (700 allocations) the cyclic collector runs thousands of times a test run. Collected 140 times
 # less often (reference counting still frees everything acyclic at once), building the four
-# registers takes 3.2 s instead of 4.1 s. The notebook kernels: tests/kernel_forkserver.py.
-GC_THRESHOLD = (100_000, 50, 100)
+# registers takes 3.2 s instead of 4.1 s. The same threshold (and SymPy's seed) is set for the
+# notebook kernels by tests/kernel_forkserver.py, which defines both.
 gc.set_threshold(*GC_THRESHOLD)
 
 # Derandomized so CI results do not depend on the run; raise the example count locally
@@ -43,7 +45,7 @@ def _sympy_seeded():
     kernels: tests/kernel_forkserver.py)."""
     from sympy.core.random import seed
 
-    seed(20161)
+    seed(SYMPY_SEED)
 
 
 @pytest.fixture(scope="session")

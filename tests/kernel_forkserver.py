@@ -57,9 +57,10 @@ import sys
 
 _HEADER = struct.Struct("!I")
 SYMPY_SEED = 20161
-"""The seed of SymPy's generator in every forked kernel (see the module docstring)."""
+"""The seed of SymPy's generator in every forked kernel (module docstring) and before every
+test (conftest.py)."""
 GC_THRESHOLD = (100_000, 50, 100)
-"""The cyclic collector's thresholds in every forked kernel (as in tests/conftest.py)."""
+"""The cyclic collector's thresholds in every forked kernel and test process (conftest.py)."""
 _FORWARDED = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP, signal.SIGQUIT)
 # read by Python or a preloaded module when it starts or is imported
 # modules that capture where they run when imported: ipykernel/IPython read JPY_PARENT_PID and
