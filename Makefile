@@ -17,7 +17,7 @@ export PYTHONHASHSEED := 0
 # xdist worker and notebook kernel), about 1 s each.
 unexport PYTHONDONTWRITEBYTECODE
 
-.PHONY: all venv test test-fast test-browser report bench lab lint clean
+.PHONY: all venv test test-fast test-browser report bench lab lint clean notebooks
 
 all: test
 
@@ -86,6 +86,11 @@ bench: $(BENCH_STAMP)
 
 lab: $(STAMP)
 	MPLBACKEND=$(NB_BACKEND) $(VENV)/bin/jupyter lab notebooks
+
+# Re-executes notebooks in place (all, or NB="notebooks/03_table4.ipynb ...") and stores their
+# outputs, the reference nbval compares against: commit them with the change that moved them.
+notebooks: $(STAMP)
+	MPLBACKEND=$(NB_BACKEND) $(PY) tests/refresh_notebooks.py $(NB)
 
 lint: $(STAMP)
 	$(VENV)/bin/ruff check src tests benchmarks
