@@ -34,6 +34,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
+from typing import ClassVar
 
 import numpy as np
 import numpy.typing as npt
@@ -41,6 +42,8 @@ import numpy.typing as npt
 from analysis.kinematics import pool
 from analysis.kinematics.arms import closed_form as load_cf
 from analysis.kinematics.dh import chain_frames
+from analysis.kinematics.ops import OPS
+from analysis.kinematics.printing import Printer
 from analysis.kinematics.solution import IKSolutions, as_points, check_joints, solve_body
 from analysis.kinematics.trace import Graph, Node, TraceOps
 
@@ -55,6 +58,7 @@ __all__ = [
     "CHUNK",
     "HAVE_NUMBA",
     "Kernel",
+    "KernelPrinter",
     "allocate",
     "allocate_points",
     "atan2_reference",
@@ -124,31 +128,47 @@ def _trunc(x):
     return np.trunc(x)
 """
 
-_EXPR = {
-    "add": "({0} + {1})",
-    "sub": "({0} - {1})",
-    "mul": "({0} * {1})",
-    "div": "({0} / {1})",
-    "neg": "(-{0})",
-    "sqrt": "math.sqrt({0})",
-    "sin": "math.sin({0})",
-    "cos": "math.cos({0})",
-    "atan": "math.atan({0})",
-    "atan2": "_atan2({0}, {1})",
-    "abs": "abs({0})",
-    "trunc": "_trunc({0})",
-    "sign": "_sign({0})",
-    "lt": "({0} < {1})",
-    "le": "({0} <= {1})",
-    "gt": "({0} > {1})",
-    "ge": "({0} >= {1})",
-    "eq": "({0} == {1})",
-    "and": "({0} & {1})",
-    "or": "({0} | {1})",
-    "not": "({0} ^ True)",
-    "select": "({1} if {0} else {2})",
-    "isfinite": "math.isfinite({0})",
-}
+
+class KernelPrinter(Printer):
+    """The kernel's Python expressions, one per operation of
+    :data:`~analysis.kinematics.ops.OPS` (Numba compiles them)."""
+
+    target = "the compiled kernel"
+    known_functions: ClassVar[dict[str, str]] = {
+        "sqrt": "math.sqrt",
+        "sin": "math.sin",
+        "cos": "math.cos",
+        "atan": "math.atan",
+        "atan2": "_atan2",
+        "abs": "abs",
+        "trunc": "_trunc",
+        "sign": "_sign",
+        "isfinite": "math.isfinite",
+    }
+    infix: ClassVar[dict[str, str]] = {
+        **{op: OPS[op].symbol for op in ("add", "sub", "mul", "div", "lt", "le", "gt", "ge")},
+        "eq": "==",
+        "and": "&",
+        "or": "|",
+    }
+
+    def _print_function(self, op, *args):
+        return f"{self.known_functions[op]}({', '.join(args)})"
+
+    def _print_infix(self, op, a, b):
+        return f"({a} {self.symbol(op)} {b})"
+
+    def _print_neg(self, a):
+        return f"(-{a})"
+
+    def _print_not(self, a):
+        return f"({a} ^ True)"
+
+    def _print_select(self, cond, a, b):
+        return f"({a} if {cond} else {b})"
+
+
+_KERNEL = KernelPrinter()
 
 
 def atan2_reference():
@@ -199,7 +219,7 @@ def kernel_source(
             return f"v{n.index} = a_{name}[i]" if name in arrays else f"v{n.index} = s_{name}"
         name = graph.names.get(n.index)
         comment = f"  # {name}" if name else ""
-        return f"v{n.index} = {_EXPR[n.op].format(*map(ref, n.args))}{comment}"
+        return f"v{n.index} = {_KERNEL.doprint(n.op, *map(ref, n.args))}{comment}"
 
     outs = list(outputs)
     args = ["n", *(f"a_{a}" for a in arrays), *(f"s_{s}" for s in scalars)]

@@ -14,10 +14,17 @@ further). The same body runs with
               PLC program are generated from the recording
 ============  ==============================================================================
 
-Base operations (each namespace implements them): ``+ - * /`` and unary minus on its
-values, ``sqrt sin cos atan2 acos abs trunc sign``, comparisons ``lt le gt ge eq`` that give
-conditions, ``and_ or_ not_`` on conditions, ``select(cond, a, b)`` (a where cond, else b)
-and ``isfinite``. Everything else is *defined once, here*, in terms of those:
+Base operations: the one table :data:`OPS` (one :class:`OpSpec` per operation: its name,
+arity, kind, the namespace method, the numpy and SymPy equivalents, the constant fold). The
+namespaces here and in :mod:`analysis.kinematics.symbolic`, the recorder
+(:mod:`analysis.kinematics.trace`), the compiled kernel's printer
+(:mod:`analysis.kinematics.compiled`) and the PLC printers (:mod:`analysis.plc.emit`,
+:mod:`analysis.plc.st`) all take the vocabulary from it: a new operation is one row here plus
+one method in each printer that can express it (the others refuse it by name, see
+:class:`analysis.kinematics.printing.Printer`). In short: ``+ - * /`` and unary minus on
+values, ``sqrt sin cos atan atan2 acos abs trunc sign rint``, comparisons ``lt le gt ge eq``
+that give conditions, ``and_ or_ not_`` on conditions, ``select(cond, a, b)`` (a where cond,
+else b) and ``isfinite``. Everything else is *defined once, here*, in terms of those:
 :meth:`Ops.wrap` (to (-pi, pi]), :meth:`Ops.clip`, :meth:`Ops.round_half_away` (the S7-200
 ``ROUND``), :meth:`Ops.degrees`, :meth:`Ops.acos_via_atan2`. A namespace may declare one
 of them primitive (the PLC has a native ``ROUND``), never re-implement it with a
@@ -32,12 +39,129 @@ and ``section(title)`` marks a step of the derivation (a PLC network; no-op else
 from __future__ import annotations
 
 import math
+import operator
+from collections.abc import Callable
+from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Dual", "DualOps", "Float32Ops", "NumpyOps", "Ops", "numpy_ops"]
+__all__ = [
+    "OPS",
+    "Dual",
+    "DualOps",
+    "Float32Ops",
+    "NumpyOps",
+    "OpSpec",
+    "Ops",
+    "numpy_ops",
+]
 
 TWO_PI = 2.0 * math.pi
+
+
+@dataclass(frozen=True)
+class OpSpec:
+    """One operation of the vocabulary.
+
+    Attributes
+    ----------
+    name : str
+        The operation's name: a recorded node's ``op`` and a PLC IR instruction's.
+    arity : int
+    kind : {"arith", "function", "compare", "logic", "select", "derived"}
+        ``arith``: a Python operator on values (``+ - * /``, unary ``-``); ``function``:
+        value -> value; ``compare``: values -> condition; ``logic``: conditions ->
+        condition; ``select``: (condition, value, value) -> value; ``derived``: defined
+        once in :class:`Ops` from the others, recorded as one node only where a namespace
+        keeps it primitive (a PLC's native ``ROUND`` and ``ACOS``).
+    method : str
+        The namespace attribute (``and_`` for ``and``: a Python keyword).
+    numpy : str or None
+        The numpy function of :class:`NumpyOps` (None: an operator, or written there).
+    sympy : str or None
+        The SymPy function of :class:`~analysis.kinematics.symbolic.SympyOps` (resolved
+        there: importing SymPy is slow).
+    fold : callable or None
+        Evaluation on Python floats: the recorder folds operations on constants with it
+        (None: never folded); for ``arith`` it is the operator itself (also on arrays,
+        SymPy expressions and recorded nodes).
+    symbol : str
+        Infix symbol (``arith``, ``compare``), for the printers.
+    dunder : str
+        The Python operator method of a binary ``arith`` row (``add`` -> ``__add__`` and
+        ``__radd__``), which recorded values define.
+    rounded_once : bool
+        Not correctly rounded by numpy in single precision: :class:`Float32Ops` computes it
+        in float64 and rounds once (what awlsim and the ST engine do).
+    """
+
+    name: str
+    arity: int
+    kind: str
+    method: str = ""
+    numpy: str | None = None
+    sympy: str | None = None
+    fold: Callable | None = None
+    symbol: str = ""
+    rounded_once: bool = False
+    dunder: str = ""
+
+    def __post_init__(self) -> None:
+        if not self.method:
+            object.__setattr__(self, "method", self.name)
+
+
+def _sign(a: float) -> float:
+    return float((a > 0) - (a < 0))
+
+
+OPS: dict[str, OpSpec] = {
+    s.name: s
+    for s in (
+        OpSpec("add", 2, "arith", fold=operator.add, symbol="+", dunder="add"),
+        OpSpec("sub", 2, "arith", fold=operator.sub, symbol="-", dunder="sub"),
+        OpSpec("mul", 2, "arith", fold=operator.mul, symbol="*", dunder="mul"),
+        OpSpec("div", 2, "arith", fold=operator.truediv, symbol="/", dunder="truediv"),
+        OpSpec("neg", 1, "arith", fold=operator.neg, symbol="-"),
+        OpSpec("sqrt", 1, "function", numpy="sqrt", sympy="sqrt", fold=math.sqrt),
+        OpSpec("sin", 1, "function", numpy="sin", sympy="sin", fold=math.sin, rounded_once=True),
+        OpSpec("cos", 1, "function", numpy="cos", sympy="cos", fold=math.cos, rounded_once=True),
+        OpSpec(
+            "atan", 1, "function", numpy="arctan", sympy="atan", fold=math.atan, rounded_once=True
+        ),
+        OpSpec(
+            "atan2",
+            2,
+            "function",
+            numpy="arctan2",
+            sympy="atan2",
+            fold=math.atan2,
+            rounded_once=True,
+        ),
+        OpSpec(
+            "acos", 1, "derived", numpy="arccos", sympy="acos", fold=math.acos, rounded_once=True
+        ),
+        OpSpec("abs", 1, "function", numpy="abs", sympy="Abs", fold=abs),
+        OpSpec("trunc", 1, "function", numpy="trunc", fold=lambda a: float(math.trunc(a))),
+        OpSpec("sign", 1, "function", numpy="sign", sympy="sign", fold=_sign),
+        OpSpec("rint", 1, "function", numpy="rint"),
+        OpSpec("round", 1, "derived"),
+        OpSpec("lt", 2, "compare", numpy="less", sympy="Lt", symbol="<"),
+        OpSpec("le", 2, "compare", numpy="less_equal", sympy="Le", symbol="<="),
+        OpSpec("gt", 2, "compare", numpy="greater", sympy="Gt", symbol=">"),
+        OpSpec("ge", 2, "compare", numpy="greater_equal", sympy="Ge", symbol=">="),
+        OpSpec("eq", 2, "compare", numpy="equal", sympy="Eq", symbol="=="),
+        OpSpec("and", 2, "logic", method="and_", numpy="logical_and", sympy="And"),
+        OpSpec("or", 2, "logic", method="or_", numpy="logical_or", sympy="Or"),
+        OpSpec("not", 1, "logic", method="not_", numpy="logical_not", sympy="Not"),
+        OpSpec("select", 3, "select"),
+        OpSpec("isfinite", 1, "function", numpy="isfinite"),
+    )
+}
+"""The operations of every namespace, recording and printer (module docstring)."""
+
+CONDITIONS = frozenset(n for n, s in OPS.items() if s.kind in ("compare", "logic"))
+"""Operations whose result is a condition, not a value."""
 
 
 class Ops:
@@ -120,35 +244,22 @@ class Ops:
 
 
 class NumpyOps(Ops):
-    """float64 numpy arrays (broadcasting): the reference evaluation of every closed form."""
+    """float64 numpy arrays (broadcasting): the reference evaluation of every closed form.
+
+    Its operations are the numpy functions of :data:`OPS`."""
 
     dtype = np.float64
 
     def const(self, x):
         return np.asarray(x, dtype=self.dtype)
 
-    sqrt = staticmethod(np.sqrt)
-    sin = staticmethod(np.sin)
-    cos = staticmethod(np.cos)
-    atan = staticmethod(np.arctan)
-    atan2 = staticmethod(np.arctan2)
-    acos = staticmethod(np.arccos)
-    abs = staticmethod(np.abs)
-    rint = staticmethod(np.rint)
-    trunc = staticmethod(np.trunc)
-    sign = staticmethod(np.sign)
-    lt = staticmethod(np.less)
-    le = staticmethod(np.less_equal)
-    gt = staticmethod(np.greater)
-    ge = staticmethod(np.greater_equal)
-    eq = staticmethod(np.equal)
-    and_ = staticmethod(np.logical_and)
-    or_ = staticmethod(np.logical_or)
-    not_ = staticmethod(np.logical_not)
-    isfinite = staticmethod(np.isfinite)
-
     def select(self, cond, a, b):
         return np.where(cond, a, b)
+
+
+for _s in OPS.values():
+    if _s.numpy is not None:
+        setattr(NumpyOps, _s.method, staticmethod(getattr(np, _s.numpy)))
 
 
 numpy_ops = NumpyOps()
@@ -176,20 +287,6 @@ class Float32Ops(NumpyOps):
     def __init__(self, rounding: str = "half-away") -> None:
         super().__init__(rounding)
 
-    @staticmethod
-    def _f32(fn):
-        def wrapped(*args):
-            wide = [np.asarray(a, dtype=np.float64) for a in args]
-            return np.asarray(fn(*wide), dtype=np.float32)
-
-        return staticmethod(wrapped)
-
-    sin = _f32(np.sin)
-    cos = _f32(np.cos)
-    atan = _f32(np.arctan)
-    atan2 = _f32(np.arctan2)
-    acos = _f32(np.arccos)
-
     def sqrt(self, x):
         return np.sqrt(np.asarray(x, dtype=np.float32))
 
@@ -198,6 +295,22 @@ class Float32Ops(NumpyOps):
 
     def degrees(self, x):
         return x * np.float32(180.0 / math.pi)
+
+
+def _f32(fn):
+    """``fn`` computed in float64 and rounded once to float32 (:class:`Float32Ops`)."""
+
+    def wrapped(*args):
+        wide = [np.asarray(a, dtype=np.float64) for a in args]
+        return np.asarray(fn(*wide), dtype=np.float32)
+
+    return staticmethod(wrapped)
+
+
+for _s in OPS.values():
+    if _s.rounded_once:
+        setattr(Float32Ops, _s.method, _f32(getattr(np, _s.numpy)))
+del _s
 
 
 class Dual:

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from analysis.kinematics.ops import Ops
+from analysis.kinematics.ops import OPS, Ops
 
 __all__ = ["SympyOps", "sympy_ops"]
 
@@ -16,6 +16,7 @@ __all__ = ["SympyOps", "sympy_ops"]
 class SympyOps(Ops):
     """SymPy expressions: the closed form as a formula, for the audit and the notebooks.
 
+    Its operations are the SymPy functions of :data:`~analysis.kinematics.ops.OPS`;
     ``wrap`` and ``clip`` are the identity (see the module docstring); ``select`` is a
     ``Piecewise``; conditions are SymPy relationals.
     """
@@ -24,23 +25,6 @@ class SympyOps(Ops):
 
     def const(self, x):
         return sp.sympify(x)
-
-    sqrt = staticmethod(sp.sqrt)
-    sin = staticmethod(sp.sin)
-    cos = staticmethod(sp.cos)
-    atan = staticmethod(sp.atan)
-    atan2 = staticmethod(sp.atan2)
-    acos = staticmethod(sp.acos)
-    abs = staticmethod(sp.Abs)
-    sign = staticmethod(sp.sign)
-    lt = staticmethod(sp.Lt)
-    le = staticmethod(sp.Le)
-    gt = staticmethod(sp.Gt)
-    ge = staticmethod(sp.Ge)
-    eq = staticmethod(sp.Eq)
-    and_ = staticmethod(sp.And)
-    or_ = staticmethod(sp.Or)
-    not_ = staticmethod(sp.Not)
 
     def trunc(self, x):
         return sp.sign(x) * sp.floor(sp.Abs(x))
@@ -60,5 +44,10 @@ class SympyOps(Ops):
     def degrees(self, x):
         return x * 180 / sp.pi
 
+
+for _s in OPS.values():
+    if _s.sympy is not None:
+        setattr(SympyOps, _s.method, staticmethod(getattr(sp, _s.sympy)))
+del _s
 
 sympy_ops = SympyOps()

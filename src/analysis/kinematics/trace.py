@@ -21,37 +21,16 @@ listing should mirror; the recording keeps both.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 
-from analysis.kinematics.ops import Ops
+from analysis.kinematics.ops import OPS, Ops
 
-__all__ = ["PRIMITIVES", "Graph", "Node", "TraceOps", "trace"]
+__all__ = ["PRIMITIVES", "Graph", "Node", "TraceOps", "apply", "trace"]
 
-PRIMITIVES = frozenset(
-    "add sub mul div neg sqrt sin cos atan atan2 acos abs trunc sign "
-    "lt le gt ge eq and or not select isfinite round".split()
-)
-"""Operations a :class:`Node` can hold ("input" and "const" nodes aside)."""
-
-_CMP = {"lt": "<", "le": "<=", "gt": ">", "ge": ">=", "eq": "=="}
-_FOLD: dict[str, Callable] = {
-    "add": lambda a, b: a + b,
-    "sub": lambda a, b: a - b,
-    "mul": lambda a, b: a * b,
-    "div": lambda a, b: a / b,
-    "neg": lambda a: -a,
-    "sqrt": math.sqrt,
-    "sin": math.sin,
-    "cos": math.cos,
-    "atan": math.atan,
-    "atan2": math.atan2,
-    "acos": math.acos,
-    "abs": abs,
-    "trunc": lambda a: float(math.trunc(a)),
-    "sign": lambda a: float((a > 0) - (a < 0)),
-}
+PRIMITIVES = frozenset(OPS)
+"""Operations a :class:`Node` can hold ("input" nodes aside): the table
+:data:`analysis.kinematics.ops.OPS`."""
 
 
 class Node:
@@ -66,31 +45,7 @@ class Node:
         name = self.graph.names.get(self.index)
         return f"<{self.op} #{self.index}{' ' + name if name else ''}>"
 
-    # arithmetic records into the graph
-    def __add__(self, o):
-        return self.graph.op("add", self, o)
-
-    def __radd__(self, o):
-        return self.graph.op("add", o, self)
-
-    def __sub__(self, o):
-        return self.graph.op("sub", self, o)
-
-    def __rsub__(self, o):
-        return self.graph.op("sub", o, self)
-
-    def __mul__(self, o):
-        return self.graph.op("mul", self, o)
-
-    def __rmul__(self, o):
-        return self.graph.op("mul", o, self)
-
-    def __truediv__(self, o):
-        return self.graph.op("div", self, o)
-
-    def __rtruediv__(self, o):
-        return self.graph.op("div", o, self)
-
+    # arithmetic records into the graph (the "arith" rows of OPS: __add__ / __radd__ ...)
     def __neg__(self):
         return self.graph.op("neg", self)
 
@@ -99,6 +54,24 @@ class Node:
             "a traced value has no truth value: write conditions with m.lt/m.gt/... and "
             "m.select, not Python if/and/or"
         )
+
+
+def _binary(op: str):
+    def left(self, o):
+        return self.graph.op(op, self, o)
+
+    def right(self, o):
+        return self.graph.op(op, o, self)
+
+    return left, right
+
+
+for _s in OPS.values():
+    if _s.dunder:
+        _l, _r = _binary(_s.name)
+        setattr(Node, f"__{_s.dunder}__", _l)
+        setattr(Node, f"__r{_s.dunder}__", _r)
+del _s, _l, _r
 
 
 @dataclass
@@ -148,8 +121,9 @@ class Graph:
                 raise ValueError("cannot mix nodes of two recordings")
             if not isinstance(a, (Node, float)):
                 raise TypeError(f"{op}: operand {a!r} is neither a traced value nor a number")
-        if op in _FOLD and all(isinstance(a, float) for a in args):
-            return float(_FOLD[op](*args))
+        fold = OPS[op].fold
+        if fold is not None and all(isinstance(a, float) for a in args):
+            return float(fold(*args))
         simple = _simplify(op, args)
         if simple is not None:
             return simple if not isinstance(simple, tuple) else self.op(*simple)
@@ -205,19 +179,13 @@ class Graph:
 
 
 def apply(m: Ops, op: str, args: list):
-    """Perform one recorded operation with namespace ``m``."""
-    if op == "add":
-        return args[0] + args[1]
-    if op == "sub":
-        return args[0] - args[1]
-    if op == "mul":
-        return args[0] * args[1]
-    if op == "div":
-        return args[0] / args[1]
-    if op == "neg":
-        return -args[0]
-    name = {"and": "and_", "or": "or_", "not": "not_"}.get(op, op)
-    return getattr(m, name)(*args)
+    """Perform one recorded operation with namespace ``m`` (an ``arith`` row of
+    :data:`~analysis.kinematics.ops.OPS` by its Python operator, any other by the
+    namespace's method)."""
+    spec = OPS[op]
+    if spec.kind == "arith":
+        return spec.fold(*args)
+    return getattr(m, spec.method)(*args)
 
 
 def _is(a, value: float) -> bool:
@@ -296,33 +264,6 @@ class TraceOps(Ops):
     def section(self, title: str) -> None:
         self.g.sections.append((len(self.g.nodes), title))
 
-    def _op(name):
-        def method(self, *args):
-            return self.g.op(name, *args)
-
-        method.__name__ = name
-        return method
-
-    sqrt = _op("sqrt")
-    sin = _op("sin")
-    cos = _op("cos")
-    atan = _op("atan")
-    atan2 = _op("atan2")
-    abs = _op("abs")
-    trunc = _op("trunc")
-    sign = _op("sign")
-    lt = _op("lt")
-    le = _op("le")
-    gt = _op("gt")
-    ge = _op("ge")
-    eq = _op("eq")
-    and_ = _op("and")
-    or_ = _op("or")
-    not_ = _op("not")
-    select = _op("select")
-    isfinite = _op("isfinite")
-    del _op
-
     def acos(self, c):
         if "acos" in self.primitives:
             return self.g.op("acos", c)
@@ -332,6 +273,20 @@ class TraceOps(Ops):
         if "round" in self.primitives:
             return self.g.op("round", x)
         return self.round_half_away(x)
+
+
+def _recorder(name: str):
+    def method(self, *args):
+        return self.g.op(name, *args)
+
+    method.__name__ = name
+    return method
+
+
+for _s in OPS.values():  # every operation but the arith (Node operators) and derived ones
+    if _s.kind not in ("arith", "derived"):
+        setattr(TraceOps, _s.method, _recorder(_s.name))
+del _s
 
 
 def trace(fn: Callable, inputs: Iterable[str], primitives: Iterable[str] = ()) -> Graph:

@@ -15,13 +15,24 @@ S7-300/400 (AWL, German mnemonics not used)
 
 from __future__ import annotations
 
+from typing import ClassVar
+
 import numpy as np
 
-from analysis.plc.ir import CMP, Program, Subroutine
+from analysis.kinematics.printing import Printer
+from analysis.plc.ir import CMP, Program, Subroutine, flatten
 from analysis.plc.memmap import MemoryMap, default_map
 from analysis.plc.peephole import optimize_awl
 
-__all__ = ["allocate", "emit_s7200", "emit_s7200_subroutines", "emit_s7300", "fmt_real"]
+__all__ = [
+    "AwlPrinter",
+    "S7200Printer",
+    "allocate",
+    "emit_s7200",
+    "emit_s7200_subroutines",
+    "emit_s7300",
+    "fmt_real",
+]
 
 NAN_MASK = 0x7F800000
 
@@ -66,91 +77,131 @@ class _Ctx:
 
 
 # ---------------------------------------------------------------------- S7-300 / AWL
-_AWL_CMP = {"<": "<R", "<=": "<=R", ">": ">R", ">=": ">=R", "==": "==R", "<>": "<>R"}
-_AWL_ARITH = {"add": "+R", "sub": "-R", "mul": "*R", "div": "/R"}
-_AWL_UNARY = {"sqrt": "SQRT", "sin": "SIN", "cos": "COS", "atan": "ATAN", "acos": "ACOS"}
+class AwlPrinter(Printer):
+    """S7-300/400 AWL: one method per IR instruction (:func:`~.ir.flatten`'s flat form)."""
+
+    target = "the S7-300"
+    control = ("mov", "seti", "jcmp", "jnotfinite", "jmp", "label", "set", "reset", "call")
+    known_functions: ClassVar[dict[str, str]] = {
+        "sqrt": "SQRT",
+        "sin": "SIN",
+        "cos": "COS",
+        "atan": "ATAN",
+        "acos": "ACOS",
+    }
+    infix: ClassVar[dict[str, str]] = {"add": "+R", "sub": "-R", "mul": "*R", "div": "/R"}
+    compares: ClassVar[dict[str, str]] = {
+        "<": "<R",
+        "<=": "<=R",
+        ">": ">R",
+        ">=": ">=R",
+        "==": "==R",
+        "<>": "<>R",
+    }
+
+    def __init__(self, ctx: _Ctx, fc_numbers: dict[str, int], subs: dict[str, Subroutine]):
+        self.ctx, self.fc_numbers, self.subs = ctx, fc_numbers, subs
+        self.out: list[str] = []
+        self.nlab = 0
+
+    def print_code(self, code) -> list[str]:
+        first = True
+        for i in flatten(code):
+            if i.op == "network":
+                if not first:
+                    self.out.append("")
+                self.out += ["NETWORK", f"TITLE = {i.args[0]}"]
+                first = False
+                continue
+            if i.comment:
+                self.out.append(f"      // {i.comment}")
+            self.doprint(i.op, i)
+        return self.out
+
+    # --- helpers ----------------------------------------------------------------------------
+    def o(self, a) -> str:
+        return self.ctx.opnd(a)
+
+    def lab(self, name: str) -> str:
+        if name not in self.ctx.labels:
+            self.nlab += 1
+            self.ctx.labels[name] = f"X{self.nlab:03d}"
+        return self.ctx.labels[name]
+
+    def ins(self, op: str, arg: str = "") -> None:
+        self.out.append(f"      {op:<6}{arg}".rstrip())
+
+    # --- values -----------------------------------------------------------------------------
+    def _print_mov(self, i):
+        self.ins("L", self.o(i.args[0]))
+        self.ins("T", self.o(i.dst))
+
+    def _print_infix(self, op, i):
+        self.ins("L", self.o(i.args[0]))
+        self.ins("L", self.o(i.args[1]))
+        self.ins(self.infix[op])
+        self.ins("T", self.o(i.dst))
+
+    def _print_function(self, op, i):
+        self.ins("L", self.o(i.args[0]))
+        self.ins(self.known_functions[op])
+        self.ins("T", self.o(i.dst))
+
+    def _print_round(self, i):
+        self.ins("L", self.o(i.args[0]))
+        self.ins("RND")
+        self.ins("T", self.o(i.dst))
+
+    def _print_seti(self, i):
+        self.ins("L", f"L#{int(i.args[0])}")
+        self.ins("T", self.o(i.dst))
+
+    # --- control ----------------------------------------------------------------------------
+    def _print_jcmp(self, i):
+        cmp, a, b, target = i.args
+        self.ins("L", self.o(a))
+        self.ins("L", self.o(b))
+        self.ins(self.compares[cmp])
+        self.ins("JC", self.lab(target))
+
+    def _print_jnotfinite(self, i):
+        a, target = i.args
+        self.ins("L", self.o(a))
+        self.ins("L", f"DW#16#{NAN_MASK:08X}")
+        self.ins("AD")
+        self.ins("L", f"DW#16#{NAN_MASK:08X}")
+        self.ins("==D")
+        self.ins("JC", self.lab(target))
+
+    def _print_jmp(self, i):
+        self.ins("JU", self.lab(i.args[0]))
+
+    def _print_label(self, i):
+        self.out.append(f"{self.lab(i.args[0])}: NOP   0")
+
+    def _print_set(self, i):
+        self.ins("SET")
+        self.ins("S", self.o(i.dst))
+
+    def _print_reset(self, i):
+        self.ins("SET")
+        self.ins("R", self.o(i.dst))
+
+    def _print_call(self, i):
+        name, ins_, outs = i.args
+        if set(outs) & {a for a in ins_ if isinstance(a, str)}:
+            # an FC gets references: an output aliasing an input would be overwritten
+            raise ValueError(f"{i}: an output of CALL {name} is also an input")
+        sub = self.subs[name]
+        binds = [f"{p} := {self.o(a)}" for p, a in zip(sub.inputs, ins_, strict=True)]
+        binds += [f"{p} := {self.o(a)}" for p, a in zip(sub.outputs, outs, strict=True)]
+        self.ins("CALL", f"FC {self.fc_numbers[name]} ({', '.join(binds)})")
 
 
 def _awl_body(
     code, ctx: _Ctx, fc_numbers: dict[str, int], sub_params: dict[str, Subroutine]
 ) -> list[str]:
-    out: list[str] = []
-    nlab = 0
-
-    def lab(name: str) -> str:
-        nonlocal nlab
-        if name not in ctx.labels:
-            nlab += 1
-            ctx.labels[name] = f"X{nlab:03d}"
-        return ctx.labels[name]
-
-    def ins(op: str, arg: str = "") -> None:
-        out.append(f"      {op:<6}{arg}".rstrip())
-
-    first = True
-    for i in code:
-        o = ctx.opnd
-        if i.op == "network":
-            if not first:
-                out.append("")
-            out.append("NETWORK")
-            out.append(f"TITLE = {i.args[0]}")
-            first = False
-            continue
-        if i.comment:
-            out.append(f"      // {i.comment}")
-        if i.op == "mov":
-            ins("L", o(i.args[0]))
-            ins("T", o(i.dst))
-        elif i.op in _AWL_ARITH:
-            ins("L", o(i.args[0]))
-            ins("L", o(i.args[1]))
-            ins(_AWL_ARITH[i.op])
-            ins("T", o(i.dst))
-        elif i.op in _AWL_UNARY:
-            ins("L", o(i.args[0]))
-            ins(_AWL_UNARY[i.op])
-            ins("T", o(i.dst))
-        elif i.op == "round":
-            ins("L", o(i.args[0]))
-            ins("RND")
-            ins("T", o(i.dst))
-        elif i.op == "seti":
-            ins("L", f"L#{int(i.args[0])}")
-            ins("T", o(i.dst))
-        elif i.op == "jcmp":
-            cmp, a, b, target = i.args
-            ins("L", o(a))
-            ins("L", o(b))
-            ins(_AWL_CMP[cmp])
-            ins("JC", lab(target))
-        elif i.op == "jnotfinite":
-            a, target = i.args
-            ins("L", o(a))
-            ins("L", f"DW#16#{NAN_MASK:08X}")
-            ins("AD")
-            ins("L", f"DW#16#{NAN_MASK:08X}")
-            ins("==D")
-            ins("JC", lab(target))
-        elif i.op == "jmp":
-            ins("JU", lab(i.args[0]))
-        elif i.op == "label":
-            out.append(f"{lab(i.args[0])}: NOP   0")
-        elif i.op in ("set", "reset"):
-            ins("SET")
-            ins("S" if i.op == "set" else "R", o(i.dst))
-        elif i.op == "call":
-            name, ins_, outs = i.args
-            if set(outs) & {a for a in ins_ if isinstance(a, str)}:
-                # an FC gets references: an output aliasing an input would be overwritten
-                raise ValueError(f"{i}: an output of CALL {name} is also an input")
-            sub = sub_params[name]
-            binds = [f"{p} := {o(a)}" for p, a in zip(sub.inputs, ins_, strict=True)]
-            binds += [f"{p} := {o(a)}" for p, a in zip(sub.outputs, outs, strict=True)]
-            ins("CALL", f"FC {fc_numbers[name]} ({', '.join(binds)})")
-        else:
-            raise ValueError(f"unknown IR op {i.op!r}")
-    return out
+    return AwlPrinter(ctx, fc_numbers, sub_params).print_code(code)
 
 
 def emit_s7300(
@@ -220,11 +271,6 @@ def emit_s7300(
 
 
 # ---------------------------------------------------------------------- S7-200 STL
-_S2_CMP = {"<": "<", "<=": "<=", ">": ">", ">=": ">=", "==": "=", "<>": "<>"}
-_S2_ARITH = {"add": "+R", "sub": "-R", "mul": "*R", "div": "/R"}
-_S2_UNARY = {"sqrt": "SQRT", "sin": "SIN", "cos": "COS"}
-
-
 class _S200Writer:
     """Writes networks; tracks whether power flow is known to be on (after LD SM0.0)."""
 
@@ -255,80 +301,123 @@ class _S200Writer:
         self.power = False
 
 
-def _s200_body(code, ctx: _Ctx, sbr: dict[str, int], w: _S200Writer) -> None:
-    nlab = 0
+class S7200Printer(Printer):
+    """S7-200 STL (Micro/WIN text): one method per IR instruction (the flat form)."""
 
-    def lab(name: str) -> int:
-        nonlocal nlab
-        if name not in ctx.labels:
-            ctx.labels[name] = nlab
-            nlab += 1
-        return ctx.labels[name]
+    target = "the S7-200"
+    control = ("mov", "seti", "jcmp", "jnotfinite", "jmp", "label", "set", "reset", "call")
+    known_functions: ClassVar[dict[str, str]] = {"sqrt": "SQRT", "sin": "SIN", "cos": "COS"}
+    infix: ClassVar[dict[str, str]] = {"add": "+R", "sub": "-R", "mul": "*R", "div": "/R"}
+    compares: ClassVar[dict[str, str]] = {
+        "<": "<",
+        "<=": "<=",
+        ">": ">",
+        ">=": ">=",
+        "==": "=",
+        "<>": "<>",
+    }
 
-    def o(a) -> str:
-        return ctx.opnd(a, "E")
+    def __init__(self, ctx: _Ctx, sbr: dict[str, int], w: _S200Writer):
+        self.ctx, self.sbr, self.w = ctx, sbr, w
+        self.nlab = 0
 
-    for i in code:
-        if i.op == "network":
-            w.network(i.args[0])
-            continue
-        if i.op == "label":
-            if not w.empty:
-                w.network()
-            w.logic("LBL", str(lab(i.args[0])))
-            continue
-        if i.comment:
-            w.lines.append(f"// {i.comment}")
-        if i.op == "mov":
-            w.box("MOVR", f"{o(i.args[0])}, {o(i.dst)}")
-        elif i.op in _S2_ARITH:
-            a, b = i.args
-            op = _S2_ARITH[i.op]
-            if i.dst == a:
-                w.box(op, f"{o(b)}, {o(i.dst)}")
-            elif i.dst == b and i.op in ("add", "mul"):
-                w.box(op, f"{o(a)}, {o(i.dst)}")
-            elif i.dst == b and i.op == "sub" and a == 0.0:
-                w.box("*R", f"-1.0, {o(i.dst)}")
-            elif i.dst == b and i.op == "sub":
-                w.box("-R", f"{o(a)}, {o(i.dst)}")
-                w.box("*R", f"-1.0, {o(i.dst)}")
-            elif i.dst == b:
-                raise ValueError(f"{i}: d = a / d has no in-place S7-200 form; use a temporary")
-            else:
-                w.box("MOVR", f"{o(a)}, {o(i.dst)}")
-                w.box(op, f"{o(b)}, {o(i.dst)}")
-        elif i.op in _S2_UNARY:
-            w.box(_S2_UNARY[i.op], f"{o(i.args[0])}, {o(i.dst)}")
-        elif i.op in ("atan", "acos"):
-            raise ValueError(
-                "the S7-200 has no ATAN/ACOS instruction: build the program with trig='subroutine'"
-            )
-        elif i.op == "round":
-            w.box("ROUND", f"{o(i.args[0])}, {o(i.dst)}")
-        elif i.op == "seti":
-            w.box("MOVD", f"{int(i.args[0])}, {o(i.dst)}")
-        elif i.op == "jcmp":
-            cmp, a, b, target = i.args
-            if cmp not in CMP:
-                raise ValueError(f"unknown compare {cmp!r}")
-            w.logic(f"LDR{_S2_CMP[cmp]}", f"{o(a)}, {o(b)}")
-            w.ins("JMP", str(lab(target)))
-        elif i.op == "jnotfinite":
-            a, target = i.args
-            w.box("MOVD", f"{o(a)}, AC0")
-            w.box("ANDD", f"16#{NAN_MASK:08X}, AC0")
-            w.logic("LDD=", f"AC0, 16#{NAN_MASK:08X}")
-            w.ins("JMP", str(lab(target)))
-        elif i.op == "jmp":
-            w.box("JMP", str(lab(i.args[0])))
-        elif i.op in ("set", "reset"):
-            w.box("S" if i.op == "set" else "R", f"{o(i.dst)}, 1")
-        elif i.op == "call":
-            name, ins_, outs = i.args
-            w.box("CALL", ", ".join([f"SBR{sbr[name]}", *(o(a) for a in (*ins_, *outs))]))
+    def print_code(self, code) -> None:
+        w = self.w
+        for i in flatten(code):
+            if i.op == "network":
+                w.network(i.args[0])
+                continue
+            if i.op == "label":
+                if not w.empty:
+                    w.network()
+                w.logic("LBL", str(self.lab(i.args[0])))
+                continue
+            if i.comment:
+                w.lines.append(f"// {i.comment}")
+            self.doprint(i.op, i)
+
+    # --- helpers ----------------------------------------------------------------------------
+    def lab(self, name: str) -> int:
+        if name not in self.ctx.labels:
+            self.ctx.labels[name] = self.nlab
+            self.nlab += 1
+        return self.ctx.labels[name]
+
+    def o(self, a) -> str:
+        return self.ctx.opnd(a, "E")
+
+    # --- values -----------------------------------------------------------------------------
+    def _print_mov(self, i):
+        self.w.box("MOVR", f"{self.o(i.args[0])}, {self.o(i.dst)}")
+
+    def _print_infix(self, op, i):
+        """``d := a op b`` with the in-place two-operand instructions (module docstring)."""
+        a, b = i.args
+        w, o, mnem = self.w, self.o, self.infix[op]
+        if i.dst == a:
+            w.box(mnem, f"{o(b)}, {o(i.dst)}")
+        elif i.dst == b and op in ("add", "mul"):
+            w.box(mnem, f"{o(a)}, {o(i.dst)}")
+        elif i.dst == b and op == "sub" and a == 0.0:
+            w.box("*R", f"-1.0, {o(i.dst)}")
+        elif i.dst == b and op == "sub":
+            w.box("-R", f"{o(a)}, {o(i.dst)}")
+            w.box("*R", f"-1.0, {o(i.dst)}")
+        elif i.dst == b:
+            raise ValueError(f"{i}: d = a / d has no in-place S7-200 form; use a temporary")
         else:
-            raise ValueError(f"unknown IR op {i.op!r}")
+            w.box("MOVR", f"{o(a)}, {o(i.dst)}")
+            w.box(mnem, f"{o(b)}, {o(i.dst)}")
+
+    def _print_function(self, op, i):
+        self.w.box(self.known_functions[op], f"{self.o(i.args[0])}, {self.o(i.dst)}")
+
+    def _print_atan(self, i):
+        raise ValueError(
+            "the S7-200 has no ATAN/ACOS instruction: build the program with trig='subroutine'"
+        )
+
+    _print_acos = _print_atan
+
+    def _print_round(self, i):
+        self.w.box("ROUND", f"{self.o(i.args[0])}, {self.o(i.dst)}")
+
+    def _print_seti(self, i):
+        self.w.box("MOVD", f"{int(i.args[0])}, {self.o(i.dst)}")
+
+    # --- control ----------------------------------------------------------------------------
+    def _print_jcmp(self, i):
+        cmp, a, b, target = i.args
+        if cmp not in CMP:
+            raise ValueError(f"unknown compare {cmp!r}")
+        self.w.logic(f"LDR{self.compares[cmp]}", f"{self.o(a)}, {self.o(b)}")
+        self.w.ins("JMP", str(self.lab(target)))
+
+    def _print_jnotfinite(self, i):
+        a, target = i.args
+        w = self.w
+        w.box("MOVD", f"{self.o(a)}, AC0")
+        w.box("ANDD", f"16#{NAN_MASK:08X}, AC0")
+        w.logic("LDD=", f"AC0, 16#{NAN_MASK:08X}")
+        w.ins("JMP", str(self.lab(target)))
+
+    def _print_jmp(self, i):
+        self.w.box("JMP", str(self.lab(i.args[0])))
+
+    def _print_set(self, i):
+        self.w.box("S", f"{self.o(i.dst)}, 1")
+
+    def _print_reset(self, i):
+        self.w.box("R", f"{self.o(i.dst)}, 1")
+
+    def _print_call(self, i):
+        name, ins_, outs = i.args
+        args = [f"SBR{self.sbr[name]}", *(self.o(a) for a in (*ins_, *outs))]
+        self.w.box("CALL", ", ".join(args))
+
+
+def _s200_body(code, ctx: _Ctx, sbr: dict[str, int], w: _S200Writer) -> None:
+    S7200Printer(ctx, sbr, w).print_code(code)
 
 
 def emit_s7200(

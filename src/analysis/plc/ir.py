@@ -9,14 +9,28 @@ from :func:`analysis.plc.approx.atan2_poly`, the S7-200 has no inverse trigonome
 S7-300's native ATAN (quadrants by :func:`analysis.plc.approx.atan2_from_atan`) and ACOS.
 Both emitters (:mod:`.emit`) print this IR. No formula of an arm is written here.
 
-Instruction set (``Instr.op``)
-------------------------------
-``mov d a`` | ``add/sub/mul/div d a b`` (d := a op b) | ``sqrt/sin/cos/atan/acos d a`` |
-``round d a`` (REAL -> DINT, the dialect's ROUND/RND) | ``seti d k`` (DINT constant) |
-``jcmp cmp a b L`` (jump to L if a cmp b; cmp in < <= > >= == <>) | ``jnotfinite a L``
-(jump if a is inf/NaN: exponent bits all ones, no REAL compare of a NaN, which stops an
-S7-200) | ``jmp L`` | ``label L`` | ``set/reset bit`` | ``call name (ins) (outs)`` |
-``network title`` (a network boundary: the S7-200 listing mirrors the paper's figures).
+Instructions (``Instr.op``), two levels
+--------------------------------------
+The lowering writes *structured* code, which every printer reads:
+
+- a value operation of the one table :data:`analysis.kinematics.ops.OPS`, ``op d a [b]``
+  (``add sub mul div neg sqrt sin cos atan acos abs round``; ``round`` is REAL -> DINT, the
+  dialect's ROUND/RND); a printer refuses an operation its target cannot express;
+- ``select d cond a b`` (d := a if cond else b; ``cond`` a :class:`Cond` tree of compares,
+  ``and``/``or``/``not``, never a NaN: see below);
+- ``refuse cond k`` (the target is refused with status k if cond holds: reach flag off,
+  c1..cn unchanged), ``notfinite a k`` (refused with status k if a is inf/NaN: the
+  exponent bits all ones, no REAL compare of a NaN, which stops an S7-200),
+  ``accept (k1, k2, ...)`` (the end of the program: status 0, reach flag on; the refusal
+  codes it may have given);
+- ``call name (ins) (outs)``, ``network title`` (a network boundary: the S7-200 listing
+  mirrors the paper's figures).
+
+The S7 listings have only jumps: :func:`flatten` turns ``select``, ``abs``, ``refuse``,
+``notfinite`` and ``accept`` into ``mov d a``, ``seti d k`` (DINT constant),
+``jcmp cmp a b L`` (jump to L if a cmp b; cmp in < <= > >= == <>), ``jnotfinite a L``,
+``jmp L``, ``label L`` and ``set``/``reset bit``. IEC 61131-3 ST (:mod:`.st`) has no jumps
+and prints the structured form.
 
 Operands are variable names (str) or REAL constants (float). Program I/O names are the
 closed form's inputs (``px py pz``), ``c1..cn``, ``reachable`` and ``status``; work
@@ -30,6 +44,7 @@ import math
 from dataclasses import dataclass, field
 
 from analysis.kinematics.arms import closed_form
+from analysis.kinematics.ops import CONDITIONS, OPS
 from analysis.kinematics.status import Status
 from analysis.kinematics.trace import Graph, Node, TraceOps
 from analysis.plc.approx import ATAN_DEGREE, atan2_from_atan, atan2_poly
@@ -39,6 +54,8 @@ __all__ = [
     "CMP",
     "PLC_MARGIN_MM",
     "PLC_MARGIN_RAD",
+    "TRIG",
+    "Cond",
     "Instr",
     "Lowering",
     "Program",
@@ -46,14 +63,36 @@ __all__ = [
     "acos_subroutine",
     "atan2_subroutine",
     "build_program",
+    "flatten",
 ]
 
 CMP = ("<", "<=", ">", ">=", "==", "<>")
-ARITH = ("add", "sub", "mul", "div")
-UNARY = ("mov", "sqrt", "sin", "cos", "atan", "acos", "round")
-_CMP_OF = {"lt": "<", "le": "<=", "gt": ">", "ge": ">=", "eq": "=="}
+_CMP_OF = {op: OPS[op].symbol for op in OPS if OPS[op].kind == "compare"}
 _NOT = {"<": ">=", "<=": ">", ">": "<=", ">=": "<", "==": "<>", "<>": "=="}
-_CONDITIONS = {"lt", "le", "gt", "ge", "eq", "and", "or", "not"}
+TRIG = ("subroutine", "native", "function")
+"""How a program gets ATAN2 and ACOS: ``subroutine``, both generated from ``+ - * /`` and
+compares (:func:`analysis.plc.approx.atan2_poly`; the S7-200 has no inverse trigonometry);
+``native``, the ATAN and ACOS instructions, ATAN2's quadrants inline
+(:func:`analysis.plc.approx.atan2_from_atan`; S7-300); ``function``, ACOS native and ATAN2 a
+generated function of the same quadrant logic on ATAN (IEC 61131-3 ST and SCL: the standard
+library has ATAN but no ATAN2). ``native`` and ``function`` compute the same REAL values."""
+
+
+@dataclass(frozen=True)
+class Cond:
+    """A condition: a compare (``op`` in lt le gt ge eq, ``args`` two operands) or a logic
+    operation (``and``, ``or``: two conditions; ``not``: one)."""
+
+    op: str
+    args: tuple
+
+    def operands(self):
+        """Variable names and constants the condition reads, in order."""
+        for a in self.args:
+            if isinstance(a, Cond):
+                yield from a.operands()
+            else:
+                yield a
 
 
 @dataclass(frozen=True)
@@ -98,7 +137,7 @@ class Program:
 
 
 def _names(i: Instr):
-    """Variable names an instruction reads or writes."""
+    """Variable names an instruction (structured or flat) reads or writes."""
     if i.dst is not None:
         yield i.dst
     if i.op == "call":
@@ -106,9 +145,15 @@ def _names(i: Instr):
         yield from i.args[2]
     elif i.op == "jcmp":
         yield from (a for a in i.args[1:3] if isinstance(a, str))
-    elif i.op == "jnotfinite":
+    elif i.op in ("jnotfinite", "notfinite"):
         yield i.args[0]
-    elif i.op in ARITH or i.op in UNARY:
+    elif i.op in ("select", "refuse"):
+        for a in i.args:
+            if isinstance(a, Cond):
+                yield from (b for b in a.operands() if isinstance(b, str))
+            elif isinstance(a, str):
+                yield a
+    elif i.op == "mov" or i.op in OPS:
         yield from (a for a in i.args if isinstance(a, str))
 
 
@@ -125,9 +170,9 @@ class Lowering:
     keep_names : bool
         Give ``let``-named nodes their own work variable (readable main program); else
         every intermediate is a pooled temporary (subroutine locals).
-    refusals : dict of int to str
-        Condition node index -> label to jump to when it is true, emitted as soon as the
-        condition is computed.
+    refusals : dict of int to int
+        Condition node index -> the status code of the refusal when it is true, tested as
+        soon as the condition is computed.
     """
 
     def __init__(self, graph, fixed, trig, *, keep_names, refusals=None, prefix="tmp"):
@@ -139,15 +184,10 @@ class Lowering:
         self.free: list[str] = []
         self.temps: list[str] = []
         self.named: list[str] = []
-        self._labels = 0
         self.live = graph.live()
         self.last_use = self._liveness()
 
     # --- bookkeeping ------------------------------------------------------------------------
-    def label(self) -> str:
-        self._labels += 1
-        return f"@{self._labels}"
-
     def emit(self, op, dst=None, *args, comment=""):
         self.code.append(Instr(op, dst, tuple(args), comment))
 
@@ -156,7 +196,7 @@ class Lowering:
         where the condition is used (selects, refusal jumps), not where it was recorded."""
         use_pos: dict[int, int] = {}
         for n in reversed(self.live):
-            if n.op in _CONDITIONS:
+            if n.op in CONDITIONS:
                 pos = self.refusals and n.index in self.refusals and n.index
                 pos = max(pos or 0, use_pos.get(n.index, n.index))
             else:
@@ -196,7 +236,7 @@ class Lowering:
             self._release_node(a, pos)
 
     def _release_node(self, a: Node, pos: int) -> None:
-        if a.op in _CONDITIONS:
+        if a.op in CONDITIONS:
             for b in a.args:
                 if isinstance(b, Node):
                     self._release_node(b, pos)
@@ -206,67 +246,36 @@ class Lowering:
             self.free.append(name)
 
     # --- conditions ---------------------------------------------------------------------------
-    def jump_if(self, cond, target: str, value: bool) -> None:
-        """Jump to ``target`` if ``cond`` is ``value`` (short-circuit and/or/not)."""
-        op = cond.op
-        if op in _CMP_OF:
-            cmp = _CMP_OF[op] if value else _NOT[_CMP_OF[op]]
-            self.emit("jcmp", None, cmp, self.opnd(cond.args[0]), self.opnd(cond.args[1]), target)
-        elif op == "not":
-            self.jump_if(cond.args[0], target, not value)
-        elif (op == "or") == value:  # or -> true, and -> false: either operand decides
-            self.jump_if(cond.args[0], target, value)
-            self.jump_if(cond.args[1], target, value)
-        else:  # or -> false, and -> true: both operands must agree
-            skip = self.label()
-            self.jump_if(cond.args[0], skip, not value)
-            self.jump_if(cond.args[1], target, value)
-            self.emit("label", None, skip)
-        if op not in _CONDITIONS:
-            raise ValueError(f"{cond!r} is not a condition")
+    def cond(self, c: Node) -> Cond:
+        """The :class:`Cond` tree of a recorded condition."""
+        if c.op in _CMP_OF:
+            return Cond(c.op, (self.opnd(c.args[0]), self.opnd(c.args[1])))
+        if OPS.get(c.op) is None or OPS[c.op].kind != "logic":
+            raise ValueError(f"{c!r} is not a condition")
+        return Cond(c.op, tuple(self.cond(a) for a in c.args))
 
     # --- values -------------------------------------------------------------------------------
     def node(self, n: Node) -> None:
+        """One recorded operation: a table operation as the same IR instruction (the printers
+        decide whether their target can express it), ``select`` with its condition tree,
+        ATAN2/ACOS as calls where the program's ``trig`` says so."""
         op, args = n.op, n.args
         if op == "input":
             self.var[n.index] = self.fixed[n.index]
             return
-        if op in _CONDITIONS:
+        if op in CONDITIONS:
             return
         d = self._alloc(n)
-        a = [None if isinstance(x, Node) and x.op in _CONDITIONS else self.opnd(x) for x in args]
-        if op in ARITH:
-            self.emit(op, d, a[0], a[1])
-        elif op == "neg":
-            self.emit("sub", d, 0.0, a[0])
-        elif op in ("sqrt", "sin", "cos", "atan"):
-            self.emit(op, d, a[0])
-        elif op == "round":
-            self.emit("round", d, a[0])
-        elif op == "abs":
-            skip = self.label()
-            self.emit("mov", d, a[0])
-            self.emit("jcmp", None, ">=", a[0], 0.0, skip)
-            self.emit("sub", d, 0.0, a[0])
-            self.emit("label", None, skip)
-        elif op == "select":
-            skip = self.label()
-            self.emit("mov", d, a[2])
-            self.jump_if(args[0], skip, False)
-            self.emit("mov", d, a[1])
-            self.emit("label", None, skip)
+        if op == "select":
+            self.emit("select", d, self.cond(args[0]), self.opnd(args[1]), self.opnd(args[2]))
+        elif op == "atan2" and self.trig in ("subroutine", "function"):
+            self.emit("call", None, "ATAN2", (self.opnd(args[0]), self.opnd(args[1])), (d,))
         elif op == "atan2":
-            if self.trig == "subroutine":
-                self.emit("call", None, "ATAN2", (a[0], a[1]), (d,))
-            else:
-                raise ValueError("native atan2 is lowered by recording atan2_from_atan")
-        elif op == "acos":
-            if self.trig == "subroutine":
-                self.emit("call", None, "ACOS", (a[0],), (d,))
-            else:
-                self.emit("acos", d, a[0])
+            raise ValueError("native atan2 is lowered by recording atan2_from_atan")
+        elif op == "acos" and self.trig == "subroutine":
+            self.emit("call", None, "ACOS", (self.opnd(args[0]),), (d,))
         else:
-            raise ValueError(f"cannot lower {op!r} to PLC instructions")
+            self.emit(op, d, *(self.opnd(a) for a in args))
 
     def run(self) -> list[Instr]:
         """Lower every live node in order, with sections and refusal jumps in place."""
@@ -278,7 +287,7 @@ class Lowering:
                 k += 1
             self.node(n)
             if n.index in self.refusals:
-                self.jump_if(n, self.refusals[n.index], True)
+                self.emit("refuse", None, self.cond(n), self.refusals[n.index])
             self._release(n.index, n)
         return self.code
 
@@ -286,6 +295,13 @@ class Lowering:
 # ---------------------------------------------------------------------------------------------
 # subroutines
 # ---------------------------------------------------------------------------------------------
+SUBROUTINE_TEMP = "TMP"
+"""Prefix of a generated subroutine's temporaries (``TMP1``, ``TMP2``, ...). Not ``T1``:
+STEP 7-Micro/WIN refuses symbol names that are addresses (``T1`` is a timer) or mnemonics
+(``R`` is Reset), /work/shared/stl_reference.md, "Reserved names"; so the subroutines'
+parameters are ``Y``, ``X``, ``COSINE`` and ``ANGLE``."""
+
+
 def _subroutine(name, number, inputs, output, fn, trig, title) -> Subroutine:
     g = Graph()
     m = TraceOps(g)
@@ -294,36 +310,51 @@ def _subroutine(name, number, inputs, output, fn, trig, title) -> Subroutine:
     fixed = {n.index: k for k, n in zip(inputs, ins, strict=True)}
     result = g.outputs[output]
     fixed[result.index] = output
-    low = Lowering(g, fixed, trig, keep_names=False, prefix="T")
+    low = Lowering(g, fixed, trig, keep_names=False, prefix=SUBROUTINE_TEMP)
     body = [Instr("network", None, (title,)), *low.run()]
     return Subroutine(name, number, tuple(inputs), (output,), tuple(low.temps), tuple(body), title)
 
 
 def atan2_subroutine(number: int = 1, degree: int = ATAN_DEGREE) -> Subroutine:
-    """ATAN2(Y, X) -> R [rad], recorded from :func:`analysis.plc.approx.atan2_poly`."""
+    """ATAN2(Y, X) -> ANGLE [rad], recorded from :func:`analysis.plc.approx.atan2_poly`."""
     return _subroutine(
         "ATAN2",
         number,
         ("Y", "X"),
-        "R",
+        "ANGLE",
         lambda m, y, x: atan2_poly(m, y, x, degree),
         "subroutine",
         f"ATAN2(Y, X) [rad], argument reduction + odd polynomial of degree {degree}",
     )
 
 
+def atan2_function(number: int = 1) -> Subroutine:
+    """ATAN2(Y, X) -> ANGLE [rad] on the native ATAN, recorded from
+    :func:`analysis.plc.approx.atan2_from_atan` (trig ``function``: IEC 61131-3 and SCL
+    have ATAN, no ATAN2)."""
+    return _subroutine(
+        "ATAN2",
+        number,
+        ("Y", "X"),
+        "ANGLE",
+        atan2_from_atan,
+        "native",
+        "ATAN2(Y, X) [rad]: ATAN(Y / X) and the quadrant (no ATAN2 in the standard library)",
+    )
+
+
 def acos_subroutine(number: int = 2, atan2_name: str = "ATAN2") -> Subroutine:
-    """ACOS(C) -> R [rad] = ATAN2(sqrt((1 - C)(1 + C)), C) (``Ops.acos_via_atan2``)."""
+    """ACOS(COSINE) -> ANGLE [rad] = ATAN2(sqrt((1 - c)(1 + c)), c) (``Ops.acos_via_atan2``)."""
     if atan2_name != "ATAN2":
         raise ValueError("the generated ACOS calls the generated ATAN2")
     return _subroutine(
         "ACOS",
         number,
-        ("C",),
-        "R",
+        ("COSINE",),
+        "ANGLE",
         lambda m, c: m.acos_via_atan2(c),
         "subroutine",
-        "ACOS(C) [rad] via ATAN2(sqrt((1-C)(1+C)), C)",
+        "ACOS(COSINE) [rad] via ATAN2(sqrt((1-COSINE)(1+COSINE)), COSINE)",
     )
 
 
@@ -331,7 +362,8 @@ def acos_subroutine(number: int = 2, atan2_name: str = "ATAN2") -> Subroutine:
 # the program
 # ---------------------------------------------------------------------------------------------
 class _PlcTrace(TraceOps):
-    """The recorder for a PLC: ROUND/ACOS primitive; atan2 recorded from ATAN on the S7-300."""
+    """The recorder for a PLC: ROUND/ACOS primitive; atan2 recorded from ATAN with trig
+    ``native`` (S7-300), kept as a node (a call) otherwise."""
 
     def __init__(self, graph: Graph, trig: str) -> None:
         super().__init__(graph, primitives=("acos", "round"))
@@ -343,31 +375,91 @@ class _PlcTrace(TraceOps):
         return super().atan2(y, x)
 
 
-def _lower(
-    g: Graph, fixed: dict[int, str], trig: str, inputs, refusals, labels: dict
-) -> tuple[Instr, ...]:
-    """The program's code: the inputs' finiteness test (Figure 3's VD0/VD4/VD8), the graph
-    lowered, then status 0 and the reach flag, or a refusal's status code."""
-    low = Lowering(
-        g, fixed, trig, keep_names=True, refusals={c.index: labels[s] for s, c in refusals}
-    )
+def _lower(g: Graph, fixed: dict[int, str], trig: str, inputs, refusals) -> tuple[Instr, ...]:
+    """The program's structured code: the inputs' finiteness test (Figure 3's VD0/VD4/VD8),
+    the graph lowered with its refusals, then ``accept`` (status 0 and the reach flag)."""
+    codes = {int(code) for code, _ in refusals}
+    low = Lowering(g, fixed, trig, keep_names=True, refusals={c.index: int(s) for s, c in refusals})
     low.emit("network", None, "inputs (Fig. 3) finite? (bit test: no REAL compare sees a NaN)")
-    invalid = "@refuse6"
     for v in inputs:
-        low.emit("jnotfinite", None, v, invalid)
+        low.emit("notfinite", None, v, int(Status.INVALID))
     low.run()
-    end = low.label()
-    low.emit("seti", "status", 0)
-    low.emit("set", "reachable")
-    low.emit("jmp", None, end)
-    low.emit("network", None, "refused: status code, reach flag off, c1..cn unchanged, no motion")
-    for code in sorted({*labels, Status.INVALID}):
-        low.emit("label", None, f"@refuse{int(code)}")
-        low.emit("seti", "status", int(code), comment=Status(code).text)
-        low.emit("reset", "reachable")
-        low.emit("jmp", None, end)
-    low.emit("label", None, end)
+    low.emit("accept", None, tuple(sorted({*codes, int(Status.INVALID)})))
     return tuple(low.code)
+
+
+def flatten(code) -> tuple[Instr, ...]:
+    """Structured code with jumps only (module docstring), for the S7 listings.
+
+    ``select d c a b``: ``mov d b``, jump past ``mov d a`` unless c; ``abs d a``: ``mov d a``
+    and ``d := 0 - a`` unless a >= 0; ``refuse c k``: jump to k's refusal if c;
+    ``notfinite a k``: ``jnotfinite a``; ``accept``: status 0, reach flag on, jump to the
+    end, then one refusal block per code (status k, reach flag off)."""
+    out: list[Instr] = []
+    count = 0
+
+    def label() -> str:
+        nonlocal count
+        count += 1
+        return f"@{count}"
+
+    def jump_if(c: Cond, target: str, value: bool) -> None:
+        """Jump to ``target`` if ``c`` is ``value`` (short-circuit and/or/not)."""
+        if c.op in _CMP_OF:
+            cmp = _CMP_OF[c.op] if value else _NOT[_CMP_OF[c.op]]
+            out.append(Instr("jcmp", None, (cmp, c.args[0], c.args[1], target)))
+        elif c.op == "not":
+            jump_if(c.args[0], target, not value)
+        elif (c.op == "or") == value:  # or -> true, and -> false: either operand decides
+            jump_if(c.args[0], target, value)
+            jump_if(c.args[1], target, value)
+        else:  # or -> false, and -> true: both operands must agree
+            skip = label()
+            jump_if(c.args[0], skip, not value)
+            jump_if(c.args[1], target, value)
+            out.append(Instr("label", None, (skip,)))
+
+    for i in code:
+        if i.op == "select":
+            cond, a, b = i.args
+            skip = label()
+            out.append(Instr("mov", i.dst, (b,)))
+            jump_if(cond, skip, False)
+            out.append(Instr("mov", i.dst, (a,)))
+            out.append(Instr("label", None, (skip,)))
+        elif i.op == "abs":
+            skip = label()
+            out.append(Instr("mov", i.dst, i.args))
+            out.append(Instr("jcmp", None, (">=", i.args[0], 0.0, skip)))
+            out.append(Instr("sub", i.dst, (0.0, i.args[0])))
+            out.append(Instr("label", None, (skip,)))
+        elif i.op == "neg":
+            out.append(Instr("sub", i.dst, (0.0, i.args[0]), i.comment))
+        elif i.op == "refuse":
+            jump_if(i.args[0], f"@refuse{int(i.args[1])}", True)
+        elif i.op == "notfinite":
+            out.append(Instr("jnotfinite", None, (i.args[0], f"@refuse{int(i.args[1])}")))
+        elif i.op == "accept":
+            end = label()
+            out.append(Instr("seti", "status", (0,)))
+            out.append(Instr("set", "reachable"))
+            out.append(Instr("jmp", None, (end,)))
+            out.append(
+                Instr(
+                    "network",
+                    None,
+                    ("refused: status code, reach flag off, c1..cn unchanged, no motion",),
+                )
+            )
+            for k in i.args[0]:
+                out.append(Instr("label", None, (f"@refuse{k}",)))
+                out.append(Instr("seti", "status", (k,), Status(k).text))
+                out.append(Instr("reset", "reachable"))
+                out.append(Instr("jmp", None, (end,)))
+            out.append(Instr("label", None, (end,)))
+        else:
+            out.append(i)
+    return tuple(out)
 
 
 def _work_names(code: tuple[Instr, ...], io: set[str]) -> list[str]:
@@ -396,9 +488,11 @@ def _notes(params, branch: str, trig: str, labels: dict) -> tuple[str, ...]:
         + "/".join(f"{v:g}" for v in ppr)
         + " pulses/rev"
         + (" (assumed)" if ppr_assumed else ""),
-        "ATAN2/ACOS: generated subroutines"
-        if trig == "subroutine"
-        else "ATAN/ACOS: native instructions",
+        {
+            "subroutine": "ATAN2/ACOS: generated subroutines",
+            "native": "ATAN/ACOS: native instructions",
+            "function": "ATAN2: generated function on the native ATAN; ACOS native",
+        }[trig],
         "status: 0 ok, 1 out of reach, 2 inside reach, 3 base axis, 4 joint limits, 6 not finite"
         + "".join(
             f", {int(c)} {Status(c).text}"
@@ -444,8 +538,8 @@ def build_program(
     """
     cf = closed_form(params.description.closed_form)
     branch = branch or cf.BRANCHES[0]
-    if trig not in ("subroutine", "native"):
-        raise ValueError(f"trig = {trig!r}: expected 'subroutine' or 'native'")
+    if trig not in TRIG:
+        raise ValueError(f"trig = {trig!r}: expected one of {', '.join(TRIG)}")
     if theta1_on_axis is not None and not math.isfinite(theta1_on_axis):
         raise ValueError(f"theta1_on_axis = {theta1_on_axis!r} rad is not finite")
     g = Graph()
@@ -459,16 +553,21 @@ def build_program(
     if order != sorted(order):
         raise ValueError(f"{cf.__name__}: refusals must be computed in priority order")
     g.outputs = {**outs, **{f"refuse{k}": c for k, c in enumerate(conds)}}
-    labels = {code: f"@refuse{int(code)}" for code, _ in refusals}
+    labels = {code for code, _ in refusals}
     fixed = {n.index: name for name, n in zip(cf.INPUTS, p, strict=True)}
     for name, v in outs.items():
         if not isinstance(v, Node) or v.op != "round":
             raise ValueError(f"{name}: pulse counts must end in the ROUND instruction")
         fixed[v.index] = name
-    code = _lower(g, fixed, trig, cf.INPUTS, refusals, labels)
+    code = _lower(g, fixed, trig, cf.INPUTS, refusals)
     io = {*cf.INPUTS, *outs, "reachable", "status"}
-    work = _work_names(code, io)
-    subs = (atan2_subroutine(1), acos_subroutine(2)) if trig == "subroutine" else ()
+    work = _work_names(flatten(code), io)
+    if trig == "subroutine":
+        subs = (atan2_subroutine(1), acos_subroutine(2))
+    elif trig == "function":
+        subs = (atan2_function(1),)
+    else:
+        subs = ()
     notes = _notes(params, branch, trig, labels)
     return Program(
         code,
