@@ -17,7 +17,7 @@ export PYTHONHASHSEED := 0
 # xdist worker and notebook kernel), about 1 s each.
 unexport PYTHONDONTWRITEBYTECODE
 
-.PHONY: all venv test test-fast test-browser report bench lab lint clean notebooks
+.PHONY: all venv test test-fast test-browser report bench lab lint clean notebooks st-engine
 
 all: test
 
@@ -52,7 +52,28 @@ $(STAMP): requirements.lock pyproject.toml
 # program on the same targets share one awlsim run; emptied first, so it lasts one `make test`.
 AWLSIM_MEMO := $(CURDIR)/build/awlsim-memo
 
-test: $(STAMP)
+# The IEC 61131-3 ST engine (analysis.plc.st_engine): the ST compiler and VM in pyplcopen's
+# pinned source distribution (tools/st-engine/requirements.txt, hash-checked by pip), built once
+# with Debian's g++ against tools/st-engine/st_run.cpp into the venv (about a minute). Rebuilt only
+# when the pin or the driver changes; the binary reports the key of both (st_run --key). No
+# download or compilation at test time.
+ST_ENGINE := $(VENV)/bin/analysis-st-run
+ST_SOURCES := tools/st-engine/requirements.txt tools/st-engine/st_run.cpp
+
+st-engine: $(ST_ENGINE)
+
+$(ST_ENGINE): $(STAMP) $(ST_SOURCES)
+	@command -v g++ >/dev/null || { echo "need g++ to build the ST engine (Debian: apt-get install g++)"; exit 2; }
+	rm -rf build/st-engine && mkdir -p build/st-engine
+	$(PY) -m pip download --quiet --no-deps --no-binary :all: --require-hashes \
+	  -r tools/st-engine/requirements.txt -d build/st-engine
+	tar -xzf build/st-engine/pyplcopen-0.21.0.tar.gz -C build/st-engine pyplcopen-0.21.0/core pyplcopen-0.21.0/LICENSE
+	g++ -std=c++17 -O2 -ffp-contract=off -fno-fast-math \
+	  -DST_RUN_KEY='"'$$(cat $(ST_SOURCES) | sha256sum | cut -c1-16)'"' \
+	  -Ibuild/st-engine/pyplcopen-0.21.0/core tools/st-engine/st_run.cpp -o $@.tmp
+	mv $@.tmp $@
+
+test: $(STAMP) $(ST_ENGINE)
 	rm -rf $(AWLSIM_MEMO)
 	ANALYSIS_AWLSIM_MEMO=$(AWLSIM_MEMO) MPLBACKEND=Agg $(PY) -m pytest -n 2 --dist loadscope --no-loadscope-reorder \
 	  -p tests.nbval_kernel --nbval-kernel-preload $(NB_PRELOAD) --nbval-kernel-env MPLBACKEND=$(NB_BACKEND) \
@@ -62,7 +83,7 @@ test: $(STAMP)
 
 # The developer loop (about 22 s): the unit tests without those marked slow (the awlsim sweeps,
 # the subprocess sessions, the site build; tests/conftest.py), stopping at the first failure.
-test-fast: $(STAMP)
+test-fast: $(STAMP) $(ST_ENGINE)
 	MPLBACKEND=Agg $(PY) -m pytest -n 2 --dist worksteal -x -m "not slow" tests --ignore=tests/browser
 
 # The browser tests against build/report as `make report` left it (no rebuild).
@@ -81,7 +102,7 @@ $(BENCH_STAMP): $(STAMP) requirements-bench.lock
 	$(PY) -m pip install --quiet --no-deps -r requirements-bench.lock
 	@touch $(BENCH_STAMP)
 
-bench: $(BENCH_STAMP)
+bench: $(BENCH_STAMP) $(ST_ENGINE)
 	$(PY) benchmarks/run.py --out build/bench.json
 
 lab: $(STAMP)

@@ -133,22 +133,30 @@ def atan2_from_atan(m, y, x):
 class PlcFloat32Ops(Float32Ops):
     """The REAL arithmetic of a generated program, instruction for instruction.
 
-    ``dialect="s7-200"``: ROUND halves away from zero; ``"s7-300"``: RND halves to even.
+    ``dialect="s7-200"``: ROUND halves away from zero; ``"s7-300"``: RND halves to even;
+    ``"st"``/``"scl"`` (IEC 61131-3 ST, Siemens SCL: :mod:`analysis.plc.st`): halves away
+    from zero, the tie fixed after ``REAL_TO_DINT``.
     ``trig="subroutine"`` (the default on the S7-200, the only choice there): ATAN2 and ACOS
     are the generated subroutines (:func:`atan2_poly`, ``acos_via_atan2``); ``"native"``
     (the S7-300 default): ATAN with quadrant selects (:func:`atan2_from_atan`) and ACOS, which
-    awlsim evaluates in double precision and stores as float32.
+    awlsim evaluates in double precision and stores as float32; ``"function"`` (the ST and
+    SCL default): the same values, ATAN2 a generated function on ATAN.
     """
 
     def __init__(
         self, dialect: str = "s7-200", trig: str | None = None, degree: int = ATAN_DEGREE
     ) -> None:
-        if dialect not in ("s7-200", "s7-300"):
-            raise ValueError(f"dialect {dialect!r}: expected 's7-200' or 's7-300'")
-        trig = trig or ("subroutine" if dialect == "s7-200" else "native")
-        if trig not in ("subroutine", "native") or (dialect, trig) == ("s7-200", "native"):
+        if dialect not in ("s7-200", "s7-300", "st", "scl"):
+            raise ValueError(f"dialect {dialect!r}: expected 's7-200', 's7-300', 'st' or 'scl'")
+        default = {"s7-200": "subroutine", "s7-300": "native"}.get(dialect, "function")
+        trig = trig or default
+        if trig not in ("subroutine", "native", "function") or (dialect, trig) in (
+            ("s7-200", "native"),
+            ("s7-200", "function"),
+            ("s7-300", "function"),
+        ):
             raise ValueError(f"trig {trig!r} is not available on the {dialect}")
-        super().__init__("half-away" if dialect == "s7-200" else "half-even")
+        super().__init__("half-even" if dialect == "s7-300" else "half-away")
         self.dialect, self.trig, self.degree = dialect, trig, degree
 
     def atan2(self, y, x):

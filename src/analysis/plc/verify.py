@@ -410,7 +410,7 @@ def compare(
     Python solving as the program does (band 1).
     """
     branch = branch or arm.branches[0]
-    rounding = "half-away" if dialect == "s7-200" else "half-even"
+    rounding = "half-even" if dialect == "s7-300" else "half-away"
     cols = input_columns(arm)
     xyz = targets[cols].to_numpy(dtype=float)
     ref, ok, _, exact = reference_pulses(arm, xyz, branch, rounding, theta1_on_axis=theta1_on_axis)

@@ -1,0 +1,442 @@
+"""IEC 61131-3 Structured Text and Siemens SCL printers of the PLC IR (:mod:`.ir`).
+
+The same program as the S7 listings (:mod:`.emit`), printed from the *structured* IR (ST has
+no jumps): one ``FUNCTION_BLOCK`` per arm whose interface is the program's: ``VAR_INPUT``
+the closed form's inputs (REAL, mm or rad), ``VAR_OUTPUT`` the pulse counts ``c1..cn``
+(DINT), ``reachable`` (BOOL) and ``status`` (DINT, :class:`~analysis.kinematics.status.
+Status` codes); the work values are its static ``VAR``.
+
+:class:`StPrinter` (``--dialect st``; CODESYS 3.5, TwinCAT 3, OpenPLC)
+    IEC 61131-3 (3rd edition) text: typed literals (``REAL#...``: an untyped real literal
+    is LREAL in IEC and in the ST engine the tests use, which would change the arithmetic),
+    its own ATAN2 (``IK_ATAN2``, a ``FUNCTION``: the IEC standard library has ATAN, no
+    ATAN2; built on ATAN and the quadrant selects of :func:`analysis.plc.approx.
+    atan2_from_atan`, or with ``trig="subroutine"`` the S7-200's polynomial ATAN2/ACOS,
+    bit for bit), ``IF``/``ELSE`` for the selects, ``RETURN`` after a refusal (status set,
+    ``reachable := FALSE``, ``c1..cn`` left as they were). Statements are three-address
+    assignments in the order of the closed form's recording, so every REAL operation rounds
+    to binary32 where the S7 programs' do.
+:class:`SclPrinter` (``--dialect scl``; TIA Portal, S7-1200/1500)
+    A thin dialect of the ST text: an external source (``.scl``, "Generate blocks from
+    source") with ``FUNCTION_BLOCK "IK_..."`` and ``{ S7_Optimized_Access := 'TRUE' }``,
+    ``VERSION : 0.1``, ``BEGIN``, ``#`` before every local name, quoted block names, named
+    parameters in calls, the function value assigned to ``#IK_ATAN2``, and the instance
+    data block ``DATA_BLOCK "IK_..._DB"`` (optimized, ``NON_RETAIN``) after the FB.
+    REAL (binary32) is chosen, not LREAL: it is the arithmetic the S7 programs, the float32
+    model and the ST engine run, so the pulses are the ones the tests prove; LREAL exists on
+    S7-1200 (firmware 2.0 and later) and S7-1500, only in optimized blocks.
+
+Conditions never compare a NaN: the inputs are tested first with the quiet IEEE test
+``x <> x`` (true only for NaN) and then ``ABS(x) > REAL#3.40282347E+38`` (inf), as
+separate statements because IEC ``OR`` need not short-circuit; after that the closed forms
+refuse before any value can overflow (the "huge" targets of the sweeps).
+
+Pulse rounding: ``REAL_TO_DINT`` rounds to the nearest integer, but the tie rule is the
+vendor's (IEC leaves it open; the ST engine rounds ties to even, CODESYS documents
+``REAL_TO_INT(-1.5) = -2``). The block fixes the tie explicitly, so the count is the
+S7-200 ``ROUND`` of eqs. 20-22 (halves away from zero) on every target: after
+``c := REAL_TO_DINT(x)``, ``x - DINT_TO_REAL(c)`` is exact (|x| < 2^23) and is +-0.5 only on
+a tie, which is then moved away from zero.
+
+Why by hand: no Python library prints IEC 61131-3 ST or SCL from a program graph (blark,
+PyPI, only parses TwinCAT ST); the printers follow :class:`analysis.kinematics.printing.
+Printer` (a method per operation). Executed in ``make test`` on the ST engine of pyplcopen's
+source distribution (:mod:`.st_engine`); SCL is held by golden files and by translating it
+back to the ST text (:func:`scl_to_st`), which the engine compiles.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import ClassVar
+
+from analysis.kinematics.printing import Printer
+from analysis.kinematics.status import Status
+from analysis.plc.emit import fmt_real
+from analysis.plc.ir import Cond, Instr, Program, Subroutine
+
+__all__ = [
+    "ST_DIALECTS",
+    "SclPrinter",
+    "StPrinter",
+    "block_name",
+    "emit_scl",
+    "emit_st",
+    "scl_to_st",
+]
+
+ST_DIALECTS = ("st", "scl")
+
+REAL_MAX = "3.40282347E+38"
+"""The largest finite REAL (binary32), printed."""
+
+# words a variable may not be called in IEC 61131-3 ST or SCL (keywords, type names and
+# literal prefixes that collide with the closed forms' short names); such a name gets "v_"
+_RESERVED = frozenset(
+    """ABS ACOS AND ANY ARRAY AT ATAN BOOL BY BYTE CASE CONSTANT COS D DATE DINT DO DT DWORD
+    ELSE ELSIF END_CASE END_FOR END_FUNCTION END_FUNCTION_BLOCK END_IF END_PROGRAM
+    END_REPEAT END_STRUCT END_TYPE END_VAR END_WHILE EXIT EXP FALSE FOR FUNCTION
+    FUNCTION_BLOCK IF INT L LD LINT LN LOG LREAL LT LTOD LWORD MOD NOT OF ON OR PROGRAM REAL
+    REPEAT RETAIN RETURN S SIN SINT SQRT STRING STRUCT T TAN THEN TIME TO TOD TRUE TYPE UDINT
+    UINT ULINT UNTIL USINT VAR VAR_INPUT VAR_IN_OUT VAR_OUTPUT VAR_TEMP VOID WHILE WORD
+    XOR""".split()
+)
+
+
+def block_name(program: Program, default_branch: str | None = None) -> str:
+    """``IK_<ARM>`` for the arm's default branch, ``IK_<ARM>_<BRANCH>`` for another."""
+    name = "IK_" + re.sub(r"\W", "_", program.arm).upper()
+    if default_branch is not None and program.branch != default_branch:
+        name += "_" + re.sub(r"\W", "_", program.branch).upper()
+    return name
+
+
+class StPrinter(Printer):
+    """IEC 61131-3 ST of a :class:`~.ir.Program` (module docstring): one method per IR
+    instruction of the structured form, each returning statement lines."""
+
+    target = "IEC 61131-3 ST"
+    dialect = "st"
+    control = ("select", "refuse", "notfinite", "accept", "call", "network", "mov")
+    known_functions: ClassVar[dict[str, str]] = {
+        "sqrt": "SQRT",
+        "sin": "SIN",
+        "cos": "COS",
+        "atan": "ATAN",
+        "acos": "ACOS",
+        "abs": "ABS",
+    }
+    infix: ClassVar[dict[str, str]] = {"add": "+", "sub": "-", "mul": "*", "div": "/"}
+    compares: ClassVar[dict[str, str]] = {"lt": "<", "le": "<=", "gt": ">", "ge": ">=", "eq": "="}
+    indent = "    "
+
+    def __init__(self, function_names: dict[str, str] | None = None) -> None:
+        self.function_names = dict(function_names or {})
+        self.names: dict[str, str] = {}
+
+    # --- names and operands -------------------------------------------------------------------
+    def ident(self, name: str) -> str:
+        """The declared name of a variable (reserved words get ``v_``)."""
+        return self.names.get(name, name)
+
+    def declare(self, names) -> None:
+        """Register the variables of one POU: reserved words renamed, no two names equal but
+        for case (ST is case-insensitive)."""
+        self.names = {}
+        seen: set[str] = set()
+        for n in names:
+            out = f"v_{n}" if n.upper() in _RESERVED else n
+            while out.upper() in seen:
+                out = f"v_{out}"
+            seen.add(out.upper())
+            self.names[n] = out
+
+    def var(self, name: str) -> str:
+        """A use of variable ``name`` in a statement."""
+        return self.ident(name)
+
+    def lit(self, v: float) -> str:
+        return f"REAL#{fmt_real(v, 'E')}"
+
+    def o(self, a) -> str:
+        return self.lit(a) if isinstance(a, float) else self.var(a)
+
+    def cond(self, c: Cond) -> str:
+        """A condition: compares parenthesised (ST's NOT binds tighter than a compare)."""
+        if c.op in self.compares:
+            return f"({self.o(c.args[0])} {self.compares[c.op]} {self.o(c.args[1])})"
+        if c.op == "not":
+            return f"NOT {self.cond(c.args[0])}"
+        word = {"and": "AND", "or": "OR"}[c.op]
+        return f"({self.cond(c.args[0])} {word} {self.cond(c.args[1])})"
+
+    def call(self, name: str, sub: Subroutine, args) -> str:
+        binds = ", ".join(f"{p} := {self.o(a)}" for p, a in zip(sub.inputs, args, strict=True))
+        return f"{self.function_names[name]}({binds})"
+
+    def comment(self, text: str) -> str:
+        """A comment line (ST: ``(* *)``; the text never holds ``*)``)."""
+        return f"(* {text.replace('*)', '* )')} *)"
+
+    def assign(self, dst: str, expr: str) -> str:
+        return f"{self.var(dst)} := {expr};"
+
+    # --- values -------------------------------------------------------------------------------
+    def _print_infix(self, op: str, i: Instr) -> list[str]:
+        a, b = i.args
+        return [self.assign(i.dst, f"{self.o(a)} {self.infix[op]} {self.o(b)}")]
+
+    def _print_function(self, op: str, i: Instr) -> list[str]:
+        return [self.assign(i.dst, f"{self.known_functions[op]}({self.o(i.args[0])})")]
+
+    def _print_neg(self, i: Instr) -> list[str]:
+        return [self.assign(i.dst, f"-{self.o(i.args[0])}")]
+
+    def _print_mov(self, i: Instr) -> list[str]:
+        return [self.assign(i.dst, self.o(i.args[0]))]
+
+    def _print_round(self, i: Instr) -> list[str]:
+        """Eqs. 20-22: the nearest whole pulse, halves away from zero (module docstring)."""
+        x, c = self.o(i.args[0]), self.var(i.dst)
+        t = self.indent
+        return [
+            f"{c} := REAL_TO_DINT({x}); {self.comment('nearest; a tie moves away from zero:')}",
+            f"IF ({x} - DINT_TO_REAL({c}) = {self.lit(0.5)}) AND ({x} > {self.lit(0.0)}) THEN",
+            f"{t}{c} := {c} + 1;",
+            f"ELSIF ({x} - DINT_TO_REAL({c}) = {self.lit(-0.5)}) AND ({x} < {self.lit(0.0)}) THEN",
+            f"{t}{c} := {c} - 1;",
+            "END_IF;",
+        ]
+
+    def _print_select(self, i: Instr) -> list[str]:
+        cond, a, b = i.args
+        t = self.indent
+        return [
+            f"IF {self.cond(cond)} THEN",
+            f"{t}{self.assign(i.dst, self.o(a))}",
+            "ELSE",
+            f"{t}{self.assign(i.dst, self.o(b))}",
+            "END_IF;",
+        ]
+
+    def _print_call(self, i: Instr) -> list[str]:
+        name, ins, outs = i.args
+        return [self.assign(outs[0], self.call(name, self.subs[name], ins))]
+
+    # --- refusals -----------------------------------------------------------------------------
+    def refusal(self, code: int) -> list[str]:
+        t = self.indent
+        return [
+            f"{t}{self.comment(f'refused: {Status(code).text}; c1..cn keep their values')}",
+            f"{t}{self.assign('status', str(code))}",
+            f"{t}{self.assign('reachable', 'FALSE')}",
+            f"{t}RETURN;",
+        ]
+
+    def _print_refuse(self, i: Instr) -> list[str]:
+        cond, code = i.args
+        return [f"IF {self.cond(cond)} THEN", *self.refusal(int(code)), "END_IF;"]
+
+    def _print_notfinite(self, i: Instr) -> list[str]:
+        a, code = self.o(i.args[0]), int(i.args[1])
+        return [
+            self.comment("NaN: the quiet IEEE test; then +-inf"),
+            f"IF {a} <> {a} THEN",
+            *self.refusal(code),
+            "END_IF;",
+            f"IF ABS({a}) > REAL#{REAL_MAX} THEN",
+            *self.refusal(code),
+            "END_IF;",
+        ]
+
+    def _print_accept(self, i: Instr) -> list[str]:
+        return [self.assign("status", "0"), self.assign("reachable", "TRUE")]
+
+    # --- blocks -------------------------------------------------------------------------------
+    def body(self, code) -> list[str]:
+        out: list[str] = []
+        for i in code:
+            if i.op == "network":
+                title = i.args[0].replace(
+                    "(bit test: no REAL compare sees a NaN)", "(x <> x: NaN; ABS(x) > max: inf)"
+                )
+                out += ["", self.comment(title)]
+                continue
+            if i.comment:
+                out.append(self.comment(i.comment))
+            out += self.doprint(i.op, i)
+        return out
+
+    def var_section(self, kind: str, decls) -> list[str]:
+        """``kind`` ... ``END_VAR`` with one declaration per line; the comments of the
+        declarations go in one comment line before the section, never between two
+        declarations: the ST engine (pyplcopen 0.21.0) fails to resolve an interface
+        variable that a comment precedes (``sema_unknown_identifier`` at line 0)."""
+        notes = "; ".join(f"{self.ident(n)}: {c}" for n, _, c in decls if c)
+        lines = [f"{self.indent}{self.ident(n)} : {t};" for n, t, _ in decls]
+        return [*([self.comment(notes)] if notes else []), kind, *lines, "END_VAR"] if lines else []
+
+    def function(self, sub: Subroutine) -> list[str]:
+        """A generated subroutine as a FUNCTION returning its one output (REAL)."""
+        fname = self.function_names[sub.name]
+        self.declare([*sub.inputs, *sub.outputs, *sub.temps])
+        out = self.function_header(fname, sub.title)
+        out += self.var_section(self.kw_input, [(n, self.real, "") for n in sub.inputs])
+        temps = [(n, self.real, "") for n in (*sub.outputs, *sub.temps)]
+        out += self.var_section(self.kw_temp, temps)
+        out += self.begin()
+        out += [self.indent + line if line else "" for line in self.body(sub.body)]
+        out.append(self.indent + self.return_value(fname, sub.outputs[0]))
+        out += [self.end_function, ""]
+        return out
+
+    def function_block(self, program: Program, fb: str, units) -> list[str]:
+        codes = sorted({int(i.args[1]) for i in program.body if i.op in ("refuse", "notfinite")})
+        status = ", ".join(f"{k} {Status(k).text}" for k in [0, *codes])
+        io_in = [(n, self.real, u) for n, u in zip(program.inputs, units, strict=True)]
+        io_out = [(c, self.dint, "pulses (eqs. 20-22)") for c in program.outputs]
+        io_out += [
+            ("reachable", self.bool_, "TRUE: solved, c1..cn are its pulses"),
+            ("status", self.dint, status),
+        ]
+        self.declare([*program.inputs, *program.outputs, "reachable", "status", *program.work])
+        out = self.fb_header(fb, program.title)
+        out += self.var_section("VAR_INPUT", io_in)
+        out += self.var_section("VAR_OUTPUT", io_out)
+        out += self.var_section(self.kw_static, [(n, self.real, "") for n in program.work])
+        out += self.begin()
+        out += [self.indent + line if line else "" for line in self.body(program.body)]
+        out += [self.end_fb, ""]
+        return out
+
+    # dialect words (SCL overrides)
+    real, dint, bool_ = "REAL", "DINT", "BOOL"
+    kw_input, kw_temp, kw_static = "VAR_INPUT", "VAR", "VAR"
+    end_function, end_fb = "END_FUNCTION", "END_FUNCTION_BLOCK"
+
+    def function_header(self, name: str, title: str) -> list[str]:
+        return [f"(* {title} *)", f"FUNCTION {name} : {self.real}"]
+
+    def fb_header(self, name: str, title: str) -> list[str]:
+        return [f"(* {title} *)", f"FUNCTION_BLOCK {name}"]
+
+    def begin(self) -> list[str]:
+        return []
+
+    def return_value(self, fname: str, result: str) -> str:
+        return f"{fname} := {self.var(result)};"
+
+    def header(self, program: Program, fb: str, note: str) -> list[str]:
+        lines = [program.title, *program.notes, note]
+        return ["(*", *(f"   {n}" for n in lines), "*)", ""]
+
+    def doprint_program(self, program: Program, *, units, default_branch=None) -> str:
+        """The whole source: the header comment, the functions, the function block."""
+        fb = block_name(program, default_branch)
+        self.subs = {s.name: s for s in program.subroutines}
+        self.function_names = {s.name: f"IK_{s.name}" for s in program.subroutines}
+        note = (
+            f"generated by analysis.plc (python -m analysis stl --dialect {self.dialect}); "
+            "REAL = IEEE binary32 throughout"
+        )
+        out = self.header(program, fb, note)
+        for s in program.subroutines:
+            out += self.function(s)
+        out += self.function_block(program, fb, units)
+        out += self.trailer(fb)
+        return "\n".join(out).rstrip("\n") + "\n"
+
+    def trailer(self, fb: str) -> list[str]:
+        return []
+
+
+class SclPrinter(StPrinter):
+    """Siemens SCL for TIA Portal (S7-1200/1500): the ST text in SCL's dialect (module
+    docstring)."""
+
+    target = "Siemens SCL"
+    dialect = "scl"
+    real, dint, bool_ = "Real", "DInt", "Bool"
+    kw_temp, kw_static = "VAR_TEMP", "VAR"
+
+    def var(self, name: str) -> str:
+        return f"#{self.ident(name)}"
+
+    def call(self, name: str, sub: Subroutine, args) -> str:
+        return '"' + super().call(name, sub, args).replace("(", '"(', 1)
+
+    def function_header(self, name: str, title: str) -> list[str]:
+        return [
+            f'FUNCTION "{name}" : {self.real}',
+            f"TITLE = {title}",
+            "{ S7_Optimized_Access := 'TRUE' }",
+            "VERSION : 0.1",
+        ]
+
+    def fb_header(self, name: str, title: str) -> list[str]:
+        return [
+            f'FUNCTION_BLOCK "{name}"',
+            f"TITLE = {title}",
+            "{ S7_Optimized_Access := 'TRUE' }",
+            "VERSION : 0.1",
+        ]
+
+    def begin(self) -> list[str]:
+        return ["BEGIN"]
+
+    def return_value(self, fname: str, result: str) -> str:
+        return f"#{fname} := {self.var(result)};"
+
+    def header(self, program: Program, fb: str, note: str) -> list[str]:
+        lines = [
+            program.title,
+            *program.notes,
+            note,
+            "TIA Portal: add as external source, then Generate blocks from source; "
+            f'the instance DB "{fb}_DB" follows the FB. REAL (32 bit) chosen, not LREAL: '
+            "the arithmetic proven against awlsim, the float32 model and the ST engine",
+        ]
+        return [*(f"// {n}" for n in lines), ""]
+
+    def trailer(self, fb: str) -> list[str]:
+        return [
+            f'DATA_BLOCK "{fb}_DB"',
+            "{ S7_Optimized_Access := 'TRUE' }",
+            "VERSION : 0.1",
+            "NON_RETAIN",
+            f'"{fb}"',
+            "BEGIN",
+            "END_DATA_BLOCK",
+            "",
+        ]
+
+
+def _units(program: Program, units) -> tuple[str, ...]:
+    units = tuple(units) if units is not None else ("",) * len(program.inputs)
+    if len(units) != len(program.inputs):
+        raise ValueError(f"{len(units)} units for the {len(program.inputs)} inputs")
+    return units
+
+
+def emit_st(program: Program, *, units=None, default_branch: str | None = None) -> str:
+    """IEC 61131-3 ST of ``program``: the functions and ``FUNCTION_BLOCK IK_<ARM>``.
+
+    ``units`` names each input's unit (comments); ``default_branch``: the arm's first
+    branch, whose block is ``IK_<ARM>`` (others ``IK_<ARM>_<BRANCH>``)."""
+    return StPrinter().doprint_program(
+        program, units=_units(program, units), default_branch=default_branch
+    )
+
+
+def emit_scl(program: Program, *, units=None, default_branch: str | None = None) -> str:
+    """Siemens SCL external source of ``program``: the functions, the FB and its instance DB."""
+    return SclPrinter().doprint_program(
+        program, units=_units(program, units), default_branch=default_branch
+    )
+
+
+def scl_to_st(text: str) -> str:
+    """The ST text an SCL source of :func:`emit_scl` was printed from: SCL's dialect words
+    undone line by line (``#``, quotes, block attributes, ``BEGIN``, the instance DB, the
+    type spellings, ``//`` comments). A test holds this equal to :func:`emit_st`'s text
+    but for the header, and the ST engine compiles it: the SCL printer adds nothing else."""
+    lines = text.split("\n")
+    if "DATA_BLOCK" in text:
+        lines = lines[: next(k for k, ln in enumerate(lines) if ln.startswith("DATA_BLOCK"))]
+    out = []
+    for ln in lines:
+        s = ln
+        if s.startswith("//") or s.strip() in ("BEGIN", "VERSION : 0.1") or "S7_Optimized" in s:
+            continue
+        if s.startswith("TITLE = "):
+            out.insert(len(out) - 1, f"(* {s[len('TITLE = ') :]} *)")
+            continue
+        s = re.sub(r'"(IK_\w+)"', r"\1", s)
+        s = re.sub(r"(?<!\w)#(\w+)", r"\1", s)
+        s = s.replace("VAR_TEMP", "VAR")
+        s = re.sub(r": Real;", ": REAL;", s)
+        s = re.sub(r": DInt;", ": DINT;", s)
+        s = re.sub(r": Bool;", ": BOOL;", s)
+        s = re.sub(r"^(FUNCTION \w+) : Real$", r"\1 : REAL", s)
+        out.append(s)
+    return "\n".join(out).strip("\n") + "\n"
