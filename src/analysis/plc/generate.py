@@ -32,7 +32,8 @@ def generate(
 
     Parameters
     ----------
-    dialect : {"s7-200", "s7-300"}
+    dialect : {"s7-200", "s7-300", "st", "scl", "plcopen-xml"}
+        The last three: :func:`analysis.plc.st_generate.generate_st`.
     branch : str, optional
         Default: the arm's first (the paper's) branch.
     trig : {"native", "subroutine"}, optional
@@ -49,8 +50,16 @@ def generate(
         S7-300: the AWL after :func:`~.peephole.optimize_awl` (fewer loads and stores, the
         same results). The S7-200 text is never rewritten.
     """
+    from analysis.plc.st_generate import ST_FAMILY, generate_st
+
+    if dialect in ST_FAMILY:  # IEC 61131-3 ST, SCL, PLCopen XML: no addresses, no motion
+        if mmap is not None:
+            raise ValueError(f"a memory layout names addresses; {dialect} has none")
+        return generate_st(dialect, branch, trig, params, theta1_on_axis)
     if dialect not in DIALECTS:
-        raise ValueError(f"dialect {dialect!r} is not one of {', '.join(DIALECTS)}")
+        raise ValueError(
+            f"dialect {dialect!r} is not one of {', '.join((*DIALECTS, *ST_FAMILY))}"
+        )
     if params is None:
         from analysis.kinematics.params import paper_params
 
