@@ -407,21 +407,29 @@ def _add_stl(sub) -> None:
     """``stl``: the PLC program and its memory map."""
     p = sub.add_parser(
         "stl",
-        help="generate the PLC program (S7-200 STL or S7-300 AWL) and its memory map",
+        help="generate the PLC program (S7-200 STL, S7-300 AWL, ST, SCL, PLCopen XML) and its map",
         description="Generate the corrected IK program for a Siemens PLC, from the arm's "
         "closed form (the paper's Figures 3-6 as they should be), and MAP.json naming every "
         "input and output address.",
         epilog="examples:\n  python -m analysis stl --dialect s7-200 -o ik.awl --map ik_map.json\n"
-        "  python -m analysis stl --dialect s7-300 --arm palletizer -o pal.awl --map pal.json",
+        "  python -m analysis stl --dialect s7-300 --arm palletizer -o pal.awl --map pal.json\n"
+        "  python -m analysis stl --dialect st --arm gr1 -o gr1.st --map gr1.json",
         formatter_class=_Help,
     )
-    p.add_argument("--dialect", required=True, choices=("s7-200", "s7-300"))
+    p.add_argument(
+        "--dialect",
+        required=True,
+        choices=("s7-200", "s7-300", "st", "scl", "plcopen-xml"),
+        help="S7-200 STL, S7-300 AWL, IEC 61131-3 ST (CODESYS, TwinCAT, OpenPLC), Siemens SCL "
+        "(TIA Portal, S7-1200/1500), or PLCopen XML of the ST block",
+    )
     p.add_argument("--branch", help="IK branch (default: the arm's first, the paper's)")
     p.add_argument(
         "--trig",
-        choices=("native", "subroutine"),
+        choices=("native", "subroutine", "function"),
         help="S7-300: native ATAN/ACOS (default) or the generated subroutines; "
-        "S7-200: subroutine only",
+        "S7-200: subroutine only; ST/SCL: function (default: ATAN2 a generated function on "
+        "ATAN), native or subroutine",
     )
     p.add_argument("--layout", type=Path, help="memory map (MAP.json format) to use")
     p.add_argument("--no-motion", action="store_true", help="S7-200: omit the PTO motion networks")
