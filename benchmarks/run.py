@@ -201,6 +201,9 @@ def main(argv=None) -> int:
         cold[key] = args.n / statistics.median(times)
     cli = cli_seconds()
     vec = packed_instructions(kern)
+    from plc_scan import plc_scan_times  # benchmarks/ is the script's folder
+
+    plc_scan = plc_scan_times()
     load_after = os.getloadavg()
 
     def ratio(a, b):
@@ -235,6 +238,7 @@ def main(argv=None) -> int:
         },
         "targets": {k: _verdict(k, v, lim) for k, (v, lim) in targets.items()},
         "cli_seconds_median_of_5": cli,
+        "plc_scan_us": plc_scan,
         "vectorization": vec,
         "machine": {
             "cpu_count": os.cpu_count(),
@@ -256,6 +260,9 @@ def main(argv=None) -> int:
     for k, t in doc["targets"].items():
         v = t["value"]
         print(f"{'met ' if t['met'] else 'MISS'} {k}: {v if v is None else round(v, 3)}")
+    for k, v in plc_scan.items():
+        print(f"PLC scan {k:<10} awlsim {v['awlsim_us_per_scan']:9.1f} us, ST engine "
+              f"{v['st_engine_us_per_scan']:7.2f} us ({v['awlsim / st_engine (scan)']:.0f}x)")
     print(f"load {load_before[0]:.2f} -> {load_after[0]:.2f}; wrote {path}")
     _plot(doc, path.with_suffix(".svg"))
     return 0
