@@ -78,8 +78,19 @@ def _run(kc, code: str, timeout: float = 30) -> tuple[str, list[str]]:
             out.append(msg["content"]["text"])
         if msg["msg_type"] == "status" and msg["content"]["execution_state"] == "idle":
             break
-    reply = kc.get_shell_msg(timeout=timeout)
+    reply = _reply(kc, msg_id, timeout)
     return reply["content"]["status"], "".join(out).split()
+
+
+def _reply(kc, msg_id: str, timeout: float) -> dict:
+    """The shell reply to ``msg_id``, skipping replies to earlier requests: under load
+    ``wait_for_ready`` sends more than one kernel_info_request and reads one reply, so the
+    others are still queued (seen: each later reply read one request behind)."""
+    deadline = time.monotonic() + timeout
+    while True:
+        reply = kc.get_shell_msg(timeout=max(deadline - time.monotonic(), 0.1))
+        if reply["parent_header"].get("msg_id") == msg_id:
+            return reply
 
 
 def test_forked_kernel_runs_is_interrupted_and_dies_with_its_stub(tmp_path, server):
@@ -107,8 +118,7 @@ def test_forked_kernel_runs_is_interrupted_and_dies_with_its_stub(tmp_path, serv
         # no reply; seen under load). A second is long enough for the cell to be sleeping.
         time.sleep(1.0)
         km.interrupt_kernel()
-        reply = kc.get_shell_msg(timeout=20)
-        assert reply["parent_header"]["msg_id"] == msg_id
+        reply = _reply(kc, msg_id, timeout=20)
         assert reply["content"]["status"] == "error"
         assert reply["content"]["ename"] == "KeyboardInterrupt"
         assert _run(kc, "print(6 * 7)") == ("ok", ["42"])  # still alive after it
