@@ -53,11 +53,7 @@ def fmt_real(v: float, exp_char: str = "e") -> str:
 
 def allocate(program: Program, mmap: MemoryMap) -> dict[str, int]:
     """Byte offset of every work variable (4 bytes each from ``mmap.work_base``)."""
-    end = mmap.work_base + 4 * len(program.work) - 1
-    if end > 2047:
-        raise ValueError(
-            f"work area {mmap.work_base}..{end} ends beyond byte 2047; lower work_base"
-        )
+    mmap.check_end(mmap.work_base + 4 * len(program.work) - 1, "the work area")
     return {name: mmap.work_base + 4 * i for i, name in enumerate(program.work)}
 
 
