@@ -37,12 +37,16 @@ def test_emitted_text_matches_golden(dialect):
 def test_golden_s7200_has_paper_structure():
     text = (GOLDEN / "plc_s7-200_front-up.awl").read_bytes().decode()
     assert "\r\n" in text  # Micro/WIN text: CRLF
+    # the start-up writes nothing into the HMI's inputs (issue 22): no Figure 3 network
+    assert "VD0" in text and not any(
+        ln.split()[-1] in ("VD0", "VD4", "VD8") for ln in text.splitlines() if ln.startswith("MOV")
+    )
+    paper = generate("s7-200", startup_target="paper")[0]
+    assert "LD     SM0.1\r\nMOVR   100.0, VD0\r\nMOVR   100.0, VD4\r\nMOVR   600.0, VD8" in paper
     for needle in (
         "ORGANIZATION_BLOCK MAIN:OB1",
         "SUBROUTINE_BLOCK ATAN2:SBR1",
         "SUBROUTINE_BLOCK ACOS:SBR2",
-        "MOVR   100.0, VD0",
-        "MOVR   600.0, VD8",
         "ROUND  ",
         "MOVB   16#85, SMB67",
         "PLS    1",

@@ -8,6 +8,8 @@ ROUND (halves away from zero) for the S7-200 translation.
 
 from __future__ import annotations
 
+import json
+
 import numpy as np
 import pytest
 
@@ -124,9 +126,28 @@ def test_table4_and_branches(variant, branch):
         assert not res.reachable[7]  # Table 4 row 8 (200, 500, 600): 无解
 
 
-def test_first_scan_writes_figure3_target_as_reals():
-    src, mmap, _ = _source("s7-200-translated")
-    r = AwlRunner(src, mmap)  # runs the first scan
+@pytest.mark.parametrize("dialect", ["s7-200", "s7-300"])
+def test_first_scan_keeps_the_hmi_inputs(dialect):
+    """The generated start-up writes nothing into the inputs (issue 22: the example target
+    overwrote the HMI's at every power-up); Figure 3's example only when asked for, as REALs
+    (S7-200 SM0.1 network, S7-300 OB100)."""
+    text, mjson = generate(dialect)
+    assert "not written" in json.loads(mjson)["startup"]["inputs"]
+    src = translate_s7200(text).awl if dialect == "s7-200" else text
+    r = AwlRunner(src, default_map(dialect), first_scan=False)
+    for b, v in zip((0, 4, 8), (200.0, 300.0, 600.0), strict=True):
+        r.write_real(b, v)  # what the HMI holds at power-up (retained memory)
+    r.cycle()  # the first scan
+    assert [r.read_real(b) for b in (0, 4, 8)] == [200.0, 300.0, 600.0]
+    assert [r.read_dint(b) for b in (100, 104, 108)] == [
+        626,
+        264,
+        -1013,
+    ]  # Table 4 row 6 (python -m analysis ik 200 300 600)
+    text, mjson = generate(dialect, startup_target="paper")
+    assert "overwritten" in json.loads(mjson)["startup"]["inputs"]
+    src = translate_s7200(text).awl if dialect == "s7-200" else text
+    r = AwlRunner(src, default_map(dialect))  # runs the first scan
     assert [r.read_real(b) for b in (0, 4, 8)] == [100.0, 100.0, 600.0]
     assert [r.read_dint(b) for b in (100, 104, 108)] == [500, 113, -1724]
 
@@ -134,6 +155,7 @@ def test_first_scan_writes_figure3_target_as_reals():
 def test_motion_sequence_on_two_pto_channels():
     text, _ = generate("s7-200")
     r = AwlRunner(translate_s7200(text).awl, default_map("s7-200"))
+    r.solve([[100.0, 100.0, 600.0]])  # the HMI's target (Table 4 row 1)
     for ch in (0, 1):
         r.write_bit(SM_BASE + 66 + 10 * ch, 7, True)  # both PTO idle
 

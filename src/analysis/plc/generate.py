@@ -3,19 +3,81 @@
 :func:`generate` builds the program of an arm's closed form (:func:`analysis.plc.ir.
 build_program`), allocates its variables (:mod:`.memmap`) and prints it (:mod:`.emit`). For
 the paper's arm on the S7-200 it adds the motion networks that turn the counts into stepper
-moves on the CPU 224's two PTO channels (:mod:`.motion`, Table 2's I/O).
+moves on the CPU 224's two PTO channels (:mod:`.motion`, Table 2's I/O). The MAP.json it
+returns (:meth:`~.memmap.MemoryMap.document`) names every signal with its unit, every status
+code the program writes, every memory range the program text uses and what the first scan
+does; every address is checked against the target CPU's memory (ValueError naming the CPU
+and the limit).
+
+Start-up. By default the program writes nothing into its inputs: an HMI's target survives a
+power cycle (if the CPU retains that memory) and is never replaced by an example. The
+paper's Figure 3 writes its example target (100, 100, 600) mm on the first scan; pass
+``startup_target="paper"`` (the closed form's ``STARTUP_TARGET``, Figure 3 for the grabber)
+or three numbers to generate that network, and MAP.json says so.
 """
 
 from __future__ import annotations
 
+import json
+
 from analysis.kinematics.arm import Params
 from analysis.kinematics.arms import closed_form
 from analysis.plc.emit import allocate, emit_s7200, emit_s7300
-from analysis.plc.ir import build_program
+from analysis.plc.ir import Program, build_program
 from analysis.plc.memmap import DIALECTS, MemoryMap, default_map
-from analysis.plc.motion import motion_networks
+from analysis.plc.motion import MOTION_STARTUP, motion_networks, motion_uses
 
-__all__ = ["generate"]
+__all__ = ["generate", "input_units", "status_codes"]
+
+PAPER_STARTUP = (100.0, 100.0, 600.0)
+"""Figure 3's example target [mm] (the default ``STARTUP_TARGET`` of a point arm)."""
+
+
+def input_units(params: Params) -> dict[str, str]:
+    """Input name -> unit of the arm's closed form (``INPUT_UNITS``; lengths in mm when the
+    closed form names none)."""
+    cf = closed_form(params.description.closed_form)
+    units = getattr(cf, "INPUT_UNITS", ("mm",) * len(cf.INPUTS))
+    return dict(zip(cf.INPUTS, units, strict=True))
+
+
+def status_codes(program: Program) -> list[int]:
+    """The status codes ``program`` writes (its ``seti status k`` instructions)."""
+    return sorted({int(i.args[0]) for i in program.body if i.op == "seti" and i.dst == "status"})
+
+
+def _startup_values(params: Params, startup_target):
+    if startup_target is None:
+        return None
+    if isinstance(startup_target, str):
+        if startup_target != "paper":
+            raise ValueError(f"startup_target {startup_target!r}: expected 'paper' or numbers")
+        cf = closed_form(params.description.closed_form)
+        return getattr(cf, "STARTUP_TARGET", PAPER_STARTUP)
+    return tuple(float(v) for v in startup_target)
+
+
+def _startup_doc(dialect, prog, start, units, with_motion) -> dict[str, str]:
+    doc = {}
+    if start is None:
+        doc["inputs"] = (
+            "not written: the program computes from whatever the inputs hold (an HMI's value "
+            "survives a restart only where the CPU retains that memory)"
+        )
+    else:
+        where = "the first scan (SM0.1)" if dialect == "s7-200" else "OB100 (start-up)"
+        vals = ", ".join(f"{k} = {v:g} {units[k]}" for k, v in zip(prog.inputs, start, strict=True))
+        doc["inputs"] = (
+            f"written on {where} with the example target {vals} (the paper's Figure 3): a "
+            "value the HMI wrote before the restart is overwritten"
+        )
+    doc["outputs"] = (
+        "c1..cn keep their value until the first scan that solves a target; status and the "
+        "reach flag are written on every scan"
+    )
+    if with_motion:
+        doc["motion"] = MOTION_STARTUP
+    return doc
 
 
 def generate(
@@ -27,6 +89,8 @@ def generate(
     motion: bool = True,
     theta1_on_axis: float | None = None,
     optimize: bool = True,
+    startup_target=None,
+    cpu: str | None = None,
 ) -> tuple[str, str]:
     """Program text and MAP.json text for one dialect.
 
@@ -49,6 +113,12 @@ def generate(
     optimize : bool
         S7-300: the AWL after :func:`~.peephole.optimize_awl` (fewer loads and stores, the
         same results). The S7-200 text is never rewritten.
+    startup_target : None, "paper" or numbers
+        What the first scan writes into the inputs: nothing (default), the closed form's
+        example (``"paper"``: Figure 3's (100, 100, 600) mm for the grabber), or these
+        values (in the inputs' units).
+    cpu : str, optional
+        Target CPU (:data:`~.memmap.CPUS`; default the map's, else CPU 224 / CPU 315-2 DP).
     """
     from analysis.plc.st_generate import ST_FAMILY, generate_st
 
@@ -69,15 +139,41 @@ def generate(
         raise ValueError("--trig native is not possible on the S7-200 (no ATAN/ACOS instruction)")
     prog = build_program(params, branch, trig, theta1_on_axis=theta1_on_axis)
     mmap = (mmap or default_map(dialect, prog.inputs, len(prog.outputs))).with_dialect(dialect)
-    # the first-scan example target: the paper's Figure 3 (100, 100, 600) mm unless the
-    # closed form names its own (STARTUP_TARGET; None: write nothing)
-    cf = closed_form(params.description.closed_form)
-    start = getattr(cf, "STARTUP_TARGET", (100.0, 100.0, 600.0))
+    if cpu is not None:
+        mmap = mmap.with_cpu(cpu)
+    start = _startup_values(params, startup_target)
+    units = input_units(params)
+    if start is not None and len(start) != len(prog.inputs):
+        raise ValueError(
+            f"startup_target has {len(start)} values; the program has {len(prog.inputs)} "
+            f"inputs ({', '.join(prog.inputs)})"
+        )
+    work = allocate(prog, mmap)
+    mmap.check_end(max(work.values(), default=mmap.work_base) + 3, "the work area")
+    with_motion = dialect == "s7-200" and motion and params.arm == "grabber"
     if dialect == "s7-300":
         text = emit_s7300(prog, mmap, startup_target=start, optimize=optimize)
     else:
-        with_motion = motion and params.arm == "grabber"
         text = emit_s7200(
             prog, mmap, startup_target=start, motion=motion_networks(mmap) if with_motion else None
         )
-    return text, mmap.to_json(allocate(prog, mmap))
+    uses = {"AC0": "finiteness test of the inputs (exponent bits, no REAL compare)"}
+    if with_motion:
+        uses.update(motion_uses())
+    joints = params.description.joints
+    outputs = {
+        f"c{j + 1}": {"joint": joints[j].name, "pulses_per_rev": params.pulses_per_rev[j]}
+        for j in range(len(prog.outputs))
+    }
+    doc = mmap.document(
+        text,
+        units=units,
+        outputs=outputs,
+        status_codes=status_codes(prog),
+        work=work,
+        uses=uses,
+        startup=_startup_doc(dialect, prog, start, units, with_motion),
+        arm=params.arm,
+        branch=prog.branch,
+    )
+    return text, json.dumps(doc, indent=2, ensure_ascii=False) + "\n"
