@@ -25,6 +25,7 @@ from __future__ import annotations
 import functools
 import hashlib
 import os
+import re
 import struct
 import tempfile
 import zipfile
@@ -37,6 +38,18 @@ import numpy.typing as npt
 from analysis.plc.memmap import MemoryMap
 
 __all__ = ["MEMO_ENV", "AwlRunner", "RunResult", "Sweep", "sweep"]
+
+_STOP = re.compile(r"^// analysis\.plc\.translate: .*STOP bit M (\d+)\.(\d)", re.MULTILINE)
+_M_OPERAND = re.compile(r"\bM([BWD]?)\s*(\d+)")
+
+
+def m_bytes_used(source: str) -> int:
+    """One past the highest M byte an AWL source addresses."""
+    top = 0
+    for m in _M_OPERAND.finditer(source):
+        top = max(top, int(m.group(2)) + {"": 1, "B": 1, "W": 2, "D": 4}[m.group(1)])
+    return top
+
 
 MEMO_ENV = "ANALYSIS_AWLSIM_MEMO"
 """Environment variable: a directory where :func:`sweep` keeps its results (unset: none)."""
@@ -104,6 +117,11 @@ class AwlRunner:
         self.sim = AwlSim()
         cpu = self.sim.getCPU()
         cpu.getConf().setConfiguredMnemonics(S7CPUConfig.MNEMONICS_EN)
+        # M area: awlsim's 2048 bytes, or what the program addresses (a translated S7-200
+        # program keeps all of its V memory in M, its other areas above)
+        cpu.getSpecs().setNrFlags(max(2048, m_bytes_used(source)))
+        m = _STOP.search(source)
+        self._stop = (int(m.group(1)), int(m.group(2))) if m else None
         parser = AwlParser()
         parser.parseSource(AwlSource.fromBytes(name, source.encode("utf-8")))
         self.sim.reset()
@@ -142,9 +160,7 @@ class AwlRunner:
     @property
     def stopped(self) -> bool:
         """True once translated S7-200 code hit a NaN in a REAL compare (CPU STOP)."""
-        from analysis.plc.translate import STOP_BIT
-
-        return self.read_bit(*STOP_BIT)
+        return self._stop is not None and self.read_bit(*self._stop)
 
     # --- one target per cycle -------------------------------------------------------------
     def solve(

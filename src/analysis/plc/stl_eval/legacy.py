@@ -1,31 +1,26 @@
-"""Static reading and a byte-accurate float32 evaluation of S7-200 STL (the paper's Figures 3-6).
+"""The paper's listings (Figures 3-6) as the audit reads them: parse, def-use, overlaps, run.
 
-An audit aid, not a PLC simulator (awlsim runs whole programs, :mod:`analysis.plc.runner`):
-it parses the listings of :data:`analysis.papers.grabber.FIGURE_STL`, finds operands that are
-not S7-200 addresses, traces which V-memory bytes each instruction reads and writes
-(def-use), finds operands that share bytes (:func:`overlaps`), and evaluates the
-straight-line arithmetic with S7-200 semantics on a byte image of V memory: ``op IN1, OUT``
-works in place (``OUT := OUT op IN1``), MOVD copies 32 bits, MOVR copies a REAL, SIN/COS take
-radians, ROUND rounds halves away from zero, REAL is IEEE-754 single precision, big-endian
-(S7-200 System Manual, REAL format). VD12 is bytes 12-15, so VD104 and VD106 share bytes
-106-107 and a write to one changes the other, as on the PLC. Power flow
-(LD/LPS/LRD/LPP/AENO) is taken as always on. ``CALL ARCTAN`` / ``CALL ARCCOS`` follow
-Siemens' "Arcusfunctions" library (results in radians). The REAL arithmetic is
-:class:`~analysis.kinematics.ops.Float32Ops`, the project's one float32 model.
-
-Why hand-written: awlsim executes AWL, not Micro/WIN STL with the paper's typos (``VDD0``),
-and the audit needs to run single instructions and fragments thousands of times.
+:func:`parse_stl` reads a bare listing of :data:`analysis.papers.grabber.FIGURE_STL` (and
+fragments of it, ``;``-separated in the audit) into :class:`Instr`, keeping the paper's
+typos readable (``CALLARCTAN,``, ``ROUNDVD122``) and a ``// ?`` uncertainty mark. The static
+helpers find operands that are not S7-200 addresses (:func:`invalid_operands`), the V bytes
+each instruction reads and writes (:func:`defs_uses`) and operands that share bytes
+(:func:`overlaps`: VD104 and VD106 share bytes 106-107). :func:`evaluate` runs a listing
+on the S7-200 evaluator (:class:`~analysis.plc.stl_eval.machine.S7200`) as one network
+that begins with power flow on (the figures begin with ``LD 上电置1``, read as SM0.0),
+with ``CALL ARCTAN`` / ``CALL ARCCOS`` as Siemens' "Arcusfunctions" library subroutines
+(results in radians) and the whole V memory of a CPU 226 (VB0-VB10239): power flow, ENO and
+AENO, SM1.1/SM1.3 and "the output is not altered" all as on the CPU.
 """
 
 from __future__ import annotations
 
+import math
 import re
 import struct
 from dataclasses import dataclass
 
 import numpy as np
-
-from analysis.kinematics.ops import Float32Ops
 
 __all__ = [
     "Instr",
@@ -46,7 +41,6 @@ _ADDR = re.compile(r"^V([BWD])(\d+)$")
 _WIDTH = {"B": 1, "W": 2, "D": 4}
 V_BYTES = 10240
 """V memory of the CPU 224 (VB0-VB10239 in the later firmware; 8192 in the first)."""
-_F32 = Float32Ops("half-away")
 _CONST_REAL = re.compile(r"^[+-]?\d+\.\d*(E[+-]?\d+)?$", re.IGNORECASE)
 _CONST_INT = re.compile(r"^[+-]?\d+$")
 _LOGIC = {"LD", "LPS", "LRD", "LPP", "AENO"}
@@ -184,77 +178,76 @@ def evaluate(
     aliases: dict[str, str] | None = None,
     ftz: bool = False,
 ) -> VMemory:
-    """Run straight-line STL on a byte image of V memory; returns the new image.
+    """Run a listing on the S7-200 evaluator; returns the new V-memory image.
 
     Parameters
     ----------
     instrs : list of Instr
-        From :func:`parse_stl`.
+        From :func:`parse_stl`: one network, run once with power flow on at its start.
     memory : VMemory, optional
         The initial image (zeros if omitted; see :func:`real_memory`).
     aliases : dict, optional
         Operand substitutions, e.g. ``{"VDD0": "VD12"}`` to try a reading of Figure 6.
     ftz : bool
         Flush denormal REAL operands and results to zero (a CPU without gradual underflow;
-        IEEE arithmetic, as awlsim's, keeps them). A ROUND of NaN or inf leaves its output
-        unchanged (the S7-200 sets SM1.1 and writes nothing).
+        IEEE arithmetic, as awlsim's, keeps them). Moves copy bits either way.
 
-    Raises ``ValueError`` naming the instruction for unknown mnemonics or operands.
+    Raises ``ValueError`` naming the line and the instruction for unknown mnemonics or
+    operands (``VDD0``), and for a NaN reaching a REAL compare (the CPU would stop).
     """
+    from analysis.plc.stl_eval.machine import S7200, load_program
+
     mem = memory.copy() if memory is not None else VMemory()
     aliases = aliases or {}
-    m = _F32
+    last = max((i.line for i in instrs), default=0)
+    lines = [""] * last
+    for ins in instrs:
+        args = [aliases.get(a, a) for a in ins.args]
+        if ins.op.startswith("CALL "):
+            text = f"CALL {ins.op[5:]}" + "".join(f", {a}" for a in args)
+        else:
+            text = f"{ins.op} {', '.join(args)}".strip()
+        lines[ins.line - 1] = text  # on its own line number: errors name the listing's line
+    prog = load_program(
+        "\n".join(lines),
+        symbols=PAPER_SYMBOLS,
+        libraries=arcus_library(ftz),
+        cpu="CPU 226",
+        source="listing",
+    )
+    cpu = S7200(prog, ftz=ftz, fragment=True)
+    cpu.mem["V"][:] = mem.data
+    cpu.scan()
+    if cpu.fault is not None:
+        raise ValueError(str(cpu.fault))
+    return VMemory(bytes(cpu.mem["V"]))
 
-    def name(a: str) -> str:
-        return aliases.get(a, a)
 
-    tiny = np.finfo(np.float32).tiny
+PAPER_SYMBOLS = {"上电置1": "SM0.0"}
+"""The paper's contact symbol "power-on set to 1", read as SM0.0 (always on)."""
 
-    def flush(x):
-        return np.float32(0.0) if ftz and 0 < abs(x) < tiny else np.float32(x)
 
-    def val(a: str) -> np.float32:
-        a = name(a)
-        if _CONST_REAL.match(a):
-            return np.float32(float(a))
-        if _ADDR.match(a):
-            return flush(mem.real(a))
-        raise ValueError(f"operand {a!r} is not a VD address or REAL constant")
+def arcus_library(ftz: bool = False) -> dict:
+    """ARCTAN(X) and ARCCOS(X) [rad] as library subroutines (Siemens FAQ 19308841,
+    "Arcusfunctions"), computed in float64 and rounded to REAL (the library's own
+    algorithm is not published); ``ftz`` flushes a denormal argument to zero first."""
+    from analysis.plc.stl_eval.machine import Library
 
-    def store(a: str, x) -> None:
-        a = name(a)
-        if not _ADDR.match(a):
-            raise ValueError(f"cannot write to operand {a!r}")
-        mem.set_real(a, flush(x))
+    def arg(x: float) -> float:
+        return 0.0 if ftz and x != 0.0 and abs(x) < 1.1754943508222875e-38 else x
 
-    with np.errstate(all="ignore"):
-        for ins in instrs:
-            op, args = ins.op, ins.args
-            if op in _LOGIC:
-                continue
-            if op == "MOVD":  # bit copy, no conversion
-                src = name(args[0])
-                bits = int(src) & 0xFFFFFFFF if _CONST_INT.match(src) else mem.bits(src)
-                mem.set_bits(name(args[1]), bits)
-            elif op == "MOVR":
-                store(args[1], val(args[0]))
-            elif op in ("+R", "-R", "*R", "/R"):
-                a, b = val(args[1]), val(args[0])  # OUT := OUT op IN1
-                r = {"+R": a + b, "-R": a - b, "*R": b * a, "/R": a / b}[op]
-                store(args[1], r)
-            elif op in ("SIN", "COS"):
-                store(args[1], (m.sin if op == "SIN" else m.cos)(val(args[0])))
-            elif op == "CALL ARCTAN":
-                store(args[-1], m.atan(val(args[0])))
-            elif op == "CALL ARCCOS":
-                store(args[-1], m.acos(val(args[0])))
-            elif op == "ROUND":  # REAL -> DINT, halves away from zero
-                x = m.round_half_away(val(args[0]))
-                if np.isfinite(x):
-                    mem.set_bits(name(args[1]), int(x) & 0xFFFFFFFF)
-            else:
-                raise ValueError(f"line {ins.line}: unsupported instruction {op!r}")
-    return mem
+    def atan(x):
+        return math.atan(arg(x)) if math.isfinite(x) else math.nan
+
+    def acos(x):
+        x = arg(x)
+        return math.acos(x) if -1.0 <= x <= 1.0 else math.nan
+
+    src = "Siemens FAQ 19308841 (Arcusfunctions library, radians)"
+    return {
+        "ARCTAN": Library(("X",), ("R",), atan, src),
+        "ARCCOS": Library(("X",), ("R",), acos, src),
+    }
 
 
 def real_memory(**values: float) -> VMemory:
