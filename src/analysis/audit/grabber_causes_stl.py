@@ -73,9 +73,9 @@ def _executed_fig34() -> Cause:
         "c1 = " + ", ".join(str(v) for v, r in zip(good, runs["reachable"], strict=True) if r),
         "Run byte-accurately (IEEE single precision with denormals, as awlsim does): MOVD 100 "
         "stores 1.4e-43, so Py/Px is 1 (row 1) and c1 = ROUND(atan(1) [rad] / 360 * 4000) = 9. "
-        "With flush-to-zero arithmetic the denormal inputs are 0 and Py/Px = 0/0 = NaN; "
-        "ROUND of NaN writes nothing (SM1.1), so VD16 keeps the NaN moved into it, whose bits "
-        "read as a DINT are c1 = "
+        "With flush-to-zero arithmetic the denormal inputs read as 0: /R of 0 by 0 is a "
+        "division by zero, which sets SM1.3 and leaves VD12 (S7-200 System Manual, math "
+        "instructions), ARCTAN of the flushed VD12 is 0, and c1 = "
         + ", ".join(sorted({str(v) for v in ftz}))
         + " for every row. Which one a real S7-200 gives is not settled by its manuals "
         "(denormals are outside the documented REAL range; CPU handling unconfirmed).",
