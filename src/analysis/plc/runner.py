@@ -37,7 +37,7 @@ import numpy.typing as npt
 
 from analysis.plc.memmap import MemoryMap
 
-__all__ = ["MEMO_ENV", "AwlRunner", "RunResult", "Sweep", "sweep"]
+__all__ = ["MEMO_ENV", "AwlRunner", "RunResult", "S7200Runner", "Sweep", "sweep"]
 
 _STOP = re.compile(r"^// analysis\.plc\.translate: .*STOP bit M (\d+)\.(\d)", re.MULTILINE)
 _M_OPERAND = re.compile(r"\bM([BWD]?)\s*(\d+)")
@@ -50,6 +50,9 @@ def m_bytes_used(source: str) -> int:
         top = max(top, int(m.group(2)) + {"": 1, "B": 1, "W": 2, "D": 4}[m.group(1)])
     return top
 
+
+_FORMAT = {"BYTE": "B", "INT": "h", "WORD": "H", "DINT": "i", "DWORD": "I", "REAL": "f"}
+_WIDTH_LETTER = {"BYTE": "B", "INT": "W", "WORD": "W", "DINT": "D", "DWORD": "D", "REAL": "D"}
 
 MEMO_ENV = "ANALYSIS_AWLSIM_MEMO"
 """Environment variable: a directory where :func:`sweep` keeps its results (unset: none)."""
@@ -157,6 +160,39 @@ class AwlRunner:
     def cycle(self) -> None:
         self.sim.runCycle()
 
+    # --- typed access by address (the stl-run command) -----------------------------------
+    def _area(self, addr: str, typ: str):
+        m = re.fullmatch(r"(M|I|Q)([BWD]?)(\d+)(?:\.([0-7]))?", addr.strip().upper())
+        if (
+            not m
+            or (typ == "BOOL") != (m.group(4) is not None)
+            or (typ != "BOOL" and m.group(2) != _WIDTH_LETTER[typ])
+        ):
+            raise ValueError(f"{addr!r} is not an S7-300 {typ} address (M, I or Q)")
+        cpu = self.sim.getCPU()
+        mem = {"M": self.mem, "I": cpu.inputs.getDataBytes(), "Q": cpu.outputs.getDataBytes()}
+        buf = mem[m.group(1)]
+        off = int(m.group(3))
+        size = 1 if typ in ("BOOL", "BYTE") else 2 if typ in ("INT", "WORD") else 4
+        if off + size > len(buf):
+            raise ValueError(f"{addr} is beyond the {m.group(1)} area ({len(buf)} bytes)")
+        return buf, off, int(m.group(4)) if m.group(4) is not None else None
+
+    def read(self, typ: str, addr: str):
+        """The value at an M, I or Q address as BOOL, BYTE, INT, WORD, DINT, DWORD or REAL."""
+        buf, off, bit = self._area(addr, typ)
+        if typ == "BOOL":
+            return bool(buf[off] >> bit & 1)
+        return struct.unpack_from(">" + _FORMAT[typ], bytes(buf[off : off + 4]), 0)[0]
+
+    def write(self, typ: str, addr: str, value) -> None:
+        buf, off, bit = self._area(addr, typ)
+        if typ == "BOOL":
+            buf[off] = buf[off] | (1 << bit) if value else buf[off] & ~(1 << bit) & 0xFF
+            return
+        data = struct.pack(">" + _FORMAT[typ], value)
+        buf[off : off + len(data)] = data
+
     @property
     def stopped(self) -> bool:
         """True once translated S7-200 code hit a NaN in a REAL compare (CPU STOP)."""
@@ -200,6 +236,57 @@ class AwlRunner:
             if sbyte is not None:
                 status[n] = self.read_dint(sbyte)
             extra[n] = [self.read_real(b) for b in reals]
+        return RunResult(pulses, ok, extra if reals else None, status)
+
+
+class S7200Runner:
+    """The S7-200 program text on the project's S7-200 evaluator
+    (:class:`analysis.plc.stl_eval.S7200`), with :meth:`solve` as :class:`AwlRunner`'s: one
+    scan per target, the same :class:`RunResult`. No translation and no awlsim: the
+    independent second execution of the generated S7-200 text."""
+
+    def __init__(self, text: str, mmap: MemoryMap, *, first_scan: bool = True) -> None:
+        from analysis.plc.stl_eval import S7200, load_program
+
+        if mmap.dialect != "s7-200":
+            raise ValueError(f"S7200Runner runs S7-200 programs, not {mmap.dialect}")
+        self.mmap = mmap
+        self.cpu = S7200(load_program(text, cpu=mmap.cpu))
+        if first_scan:
+            self.cpu.scan()
+
+    @property
+    def stopped(self) -> bool:
+        return self.cpu.stopped
+
+    def solve(
+        self, targets: npt.ArrayLike, sentinel: int | None = None, reals: tuple[int, ...] = ()
+    ) -> RunResult:
+        """One scan per target (see :meth:`AwlRunner.solve`)."""
+        v = self.cpu.mem["V"]
+        ins = list(self.mmap.inputs.values())
+        t = np.asarray(targets, dtype=float).reshape(-1, len(ins))
+        names = sorted((k for k in self.mmap.outputs if k[0] == "c"), key=lambda k: int(k[1:]))
+        outs = [self.mmap.outputs[k] for k in names]
+        rbyte, rbit = self.mmap.outputs["reachable"]
+        sbyte = self.mmap.outputs.get("status")
+        pulses = np.zeros((len(t), len(outs)), dtype=np.int64)
+        ok = np.zeros(len(t), dtype=bool)
+        status = np.full(len(t), -1, dtype=np.int64)
+        extra = np.full((len(t), len(reals)), np.nan)
+        f32, i32 = struct.Struct(">f"), struct.Struct(">i")
+        for n, p in enumerate(t):
+            for b, x in zip(ins, p, strict=True):
+                f32.pack_into(v, b, float(x))
+            if sentinel is not None:
+                for b in outs:
+                    i32.pack_into(v, b, sentinel)
+            self.cpu.scan()
+            pulses[n] = [i32.unpack_from(v, b)[0] for b in outs]
+            ok[n] = bool(v[rbyte] >> rbit & 1)
+            if sbyte is not None:
+                status[n] = i32.unpack_from(v, sbyte)[0]
+            extra[n] = [f32.unpack_from(v, b)[0] for b in reals]
         return RunResult(pulses, ok, extra if reals else None, status)
 
 

@@ -493,12 +493,15 @@ class _Emitter:
                 if real:  # +-0.0 by its bits (awlsim's ==R also calls a denormal zero)
                     self.i("L", "DW#16#7FFFFFFF")
                     self.i("AD")
-                    self.i("L", "L#0")
-                    self.i("==D")
+                    self.i("JZ", fail({3: True}))
+                    # an infinite or NaN divisor is an illegal input (awlsim: x/inf = 0)
+                    self.i("L", "DW#16#7F800000")
+                    self.i(">=D")
+                    self.i("JC", fail(overflow))
                 else:
                     self.i("L", "L#0" if wide else "0")
                     self.i("==D" if wide else "==I")
-                self.i("JC", fail({3: True}))
+                    self.i("JC", fail({3: True}))
             self.i("L", dst)
             self.i("L", src)
             self.i(_MATH[op])
@@ -567,13 +570,13 @@ class _Emitter:
             self.pop()
         elif op == "LDS":
             n = o[0].value
-            src = self.stack[n - 1]
-            self.i("A", src)
+            known = self.always_stack[n - 1]  # level n's "known on" flag, before the push
+            self.i("A", self.stack[n - 1])
             self.i("=", self.bit(self.lay.cmp_scratch))
             self.push()
             self.i("A", self.bit(self.lay.cmp_scratch))
             self.i("=", self.tos)
-            self.always = self.always_stack[n - 1]
+            self.always = known
         elif op == "NOP":
             pass
         elif builder == "coil":
@@ -616,9 +619,17 @@ class _Emitter:
             src, dst = self.opnd(o[0], "D"), self.opnd(o[1], "D")
 
             def body(fail):
+                err = fail({1: True, 0: False, 2: False})
+                if op == "EXP":  # EXP(-inf) = 0 without OV on awlsim: an illegal input here
+                    self.i("L", src)
+                    self.i("L", "DW#16#7F800000")
+                    self.i("AD")
+                    self.i("L", "DW#16#7F800000")
+                    self.i("==D")
+                    self.i("JC", err)
                 self.i("L", src)
                 self.i(_FUNC[op])
-                self.i("JO", fail({1: True, 0: False, 2: False}))
+                self.i("JO", err)
                 self.i("T", dst)
                 self.math_status(True, dst, True)
 
@@ -659,6 +670,7 @@ class _Emitter:
                 err = fail({1: True})  # not a valid REAL, or beyond DINT (S2M p.115)
                 if op == "TRUNC":
                     self.i("L", src)
+                    self.clear_ov()
                     self.i("TRUNC")
                     self.i("JO", err)
                     self.i("T", dst)
@@ -713,13 +725,20 @@ class _Emitter:
         else:
             raise ValueError(f"{op} is not translated")
 
+    def clear_ov(self) -> None:
+        """OV := 0, ACCU1 unchanged (awlsim's TRUNC sets OV on an error but never clears
+        it): ACCU1 + 0 as a DINT, which cannot overflow."""
+        self.i("L", "L#0")
+        self.i("+D")
+
     def round(self, src: str, dst: str, err: str) -> None:
         """S7-200 ROUND: TRUNC, then +-1 if |fraction| >= 0.5 (halves away from zero)."""
         r = self.lay.round_scratch
         d, t, f = f"MD {r}", f"MD {r + 4}", f"MD {r + 8}"
         l1, l2 = self.label(), self.label()
+        self.i("L", src)
+        self.clear_ov()
         for ins in (
-            ("L", src),
             ("TRUNC",),
             ("JO", err),
             ("T", d),

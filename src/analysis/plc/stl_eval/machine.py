@@ -237,7 +237,11 @@ class _Resolver:
             if t == "x":
                 raise ValueError(f"{a}: a pointer addresses bytes, words or double words")
             ptr = self.operand(a[1:], "d")
-            if ptr.kind not in ("mem", "ac") or ptr.width != "D" or ptr.area not in ("V", "L", ""):
+            if (
+                ptr.kind not in ("mem", "ac")
+                or ptr.width != "D"
+                or ptr.area not in ("V", "L", "AC")
+            ):
                 raise ValueError(f"{a}: a pointer is *VDn, *ACn or *LDn")
             return _Opnd("ptr", width=_WIDTH_OF[t], ptr=ptr, text=a)
         m = re.fullmatch(r"AC([0-3])", au)
@@ -764,7 +768,7 @@ class S7200:
         self.scans = 0
         self.fault: Fault | None = None
         self.stopped_by: str | None = None
-        self.events = {"denormal": 0}
+        self.events = {"denormal": 0, "overflow": 0}
         self.pto = [_Pto(), _Pto()]
         self._edges: dict[int, int] = {}
         self._first = True
@@ -1313,17 +1317,18 @@ class S7200:
                 cpu._overflow(muldiv)
                 return
             r = a + b if op == "+R" else a - b if op == "-R" else a * b if op == "*R" else a / b
-            cpu._store_real(s_out, r, muldiv)
+            cpu._store_real(s_out, r, muldiv, arith=True)
 
         return self._box(body, st, pou)
 
-    def _store_real(self, s, r: float, clear_div: bool = False) -> None:
+    def _store_real(self, s, r: float, clear_div: bool = False, arith: bool = False) -> None:
         try:
             r32 = _F32.unpack(_F32.pack(r))[0]
         except OverflowError:
-            self._overflow(clear_div)
-            return
+            r32 = math.inf
         if not math.isfinite(r32):
+            if arith:  # finite operands of + - * /, a result beyond the REAL range
+                self.events["overflow"] += 1
             self._overflow(clear_div)
             return
         if r32 != 0.0 and abs(r32) < _TINY:
@@ -1635,7 +1640,6 @@ class S7200:
                     break
                 depth -= 1
         cpu = self
-        loops = cpu._for
 
         def f():
             if not cpu.s & 1:
@@ -1646,7 +1650,7 @@ class S7200:
             cpu.eno = 1
             if init > final:
                 return end + 1
-            loops.append((idx, g_idx, s_idx, g_final))
+            cpu._for.append((idx, g_idx, s_idx, g_final))
             return None
 
         return f

@@ -1,0 +1,350 @@
+"""``python -m analysis stl-run``: run a PLC program offline, from a shell.
+
+::
+
+    python -m analysis stl-run ik.awl --dialect s7-200 --set VD0=100.0 --set VD4=100.0 \\
+        --set VD8=600.0 --read VD100:DINT --read V112.0:BOOL --json
+    {"values": {"VD100": 500, "V112.0": true}}
+
+``--dialect s7-200`` runs STEP 7-Micro/WIN STL (the text form, or a bare listing) on the
+project's S7-200 evaluator (:class:`analysis.plc.stl_eval.S7200`); ``--dialect s7-300`` runs
+AWL on awlsim (:class:`analysis.plc.runner.AwlRunner`). The ``--set`` values are written
+before the first scan (what an HMI wrote before the CPU went to RUN), then ``--scans N``
+scans run (default 1: the first scan, SM0.1 / OB100 included), then the ``--read``
+addresses are read. Types: BOOL, BYTE, INT, DINT, REAL (and WORD, DWORD).
+
+A value's type follows the address and the value: ``V116.0=1`` is a BOOL, ``VB120=3`` a
+BYTE, ``VW0=-5`` an INT, ``VD0=100.0`` a REAL, ``VD0=100`` a DINT, or as given with a
+suffix (``VD0=100:REAL``). On the S7-200 an integer written to a double word the program
+reads only as a REAL is refused (it would store the integer's bit pattern: the paper's
+``MOVD 100, VD0``, 1.4E-43 as a REAL); ``VD0=100:DINT`` writes those bits on purpose.
+``nan``, ``inf`` and ``-inf`` are accepted for REALs (to test a program's guards); JSON
+prints them as the strings "NaN", "Infinity", "-Infinity".
+
+Exit status 0, or 2 with one line on stderr (``--json``: ``{"error": ...}`` on stdout) for
+a program the CPU would not run (the line, block, network and statement), a bad address or
+value, or a CPU that went to STOP (a NaN in a REAL compare: where).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import re
+import sys
+from pathlib import Path
+
+__all__ = ["add_stl_run", "parse_read", "parse_set", "run"]
+
+TYPES = ("BOOL", "BYTE", "INT", "WORD", "DINT", "DWORD", "REAL")
+_S7200_AREAS = "SM|V|M|I|Q|S"
+_S7300_AREAS = "M|I|Q"
+_LIMITS = {
+    "BYTE": (0, 255),
+    "INT": (-32768, 32767),
+    "WORD": (0, 65535),
+    "DINT": (-(2**31), 2**31 - 1),
+    "DWORD": (0, 2**32 - 1),
+}
+FLT_MAX = 3.4028234663852886e38
+
+
+def _address_kind(addr: str, dialect: str) -> str:
+    """The width an address names: X (bit), B, W, D or AC (an accumulator)."""
+    areas = _S7200_AREAS if dialect == "s7-200" else _S7300_AREAS
+    a = addr.upper()
+    if dialect == "s7-200" and re.fullmatch(r"AC[0-3]", a):
+        return "AC"
+    if re.fullmatch(rf"({areas})\d+\.[0-7]", a):
+        return "X"
+    m = re.fullmatch(rf"({areas})([BWD])\d+", a)
+    if m:
+        return m.group(2)
+    example = "VD0, VW2, VB4, V112.0, AC1" if dialect == "s7-200" else "MD0, MW2, MB4, M112.0"
+    raise ValueError(f"{addr!r} is not an {dialect} address (e.g. {example})")
+
+
+_TYPES_OF = {
+    "X": ("BOOL",),
+    "B": ("BYTE",),
+    "W": ("INT", "WORD"),
+    "D": ("DINT", "DWORD", "REAL"),
+    "AC": ("BYTE", "INT", "WORD", "DINT", "DWORD", "REAL"),
+}
+
+
+def parse_read(text: str, dialect: str) -> tuple[str, str]:
+    """``"VD100:DINT"`` -> ("VD100", "DINT"); ValueError naming the problem."""
+    addr, sep, typ = text.partition(":")
+    if not sep or not typ:
+        raise ValueError(f"--read {text!r}: expected ADDRESS:TYPE (e.g. VD100:DINT, V112.0:BOOL)")
+    typ = typ.strip().upper()
+    if typ not in TYPES:
+        raise ValueError(f"--read {text!r}: type {typ} is not one of {', '.join(TYPES)}")
+    kind = _address_kind(addr.strip(), dialect)
+    if typ not in _TYPES_OF[kind]:
+        raise ValueError(
+            f"--read {text!r}: a {_WORD[kind]} holds {' or '.join(_TYPES_OF[kind])}, not {typ}"
+        )
+    return addr.strip().upper(), typ
+
+
+_WORD = {"X": "bit", "B": "byte", "W": "word", "D": "double word", "AC": "accumulator"}
+
+
+def parse_set(text: str, dialect: str) -> tuple[str, str, object, bool]:
+    """``"VD0=100.0"`` -> (address, type, value, explicit type?); ValueError naming the
+    value and the limit."""
+    addr, sep, value = text.partition("=")
+    if not sep or not addr.strip() or not value.strip():
+        raise ValueError(f"--set {text!r}: expected ADDRESS=VALUE (e.g. VD0=100.0)")
+    addr, value = addr.strip().upper(), value.strip()
+    kind = _address_kind(addr, dialect)
+    typ = None
+    m = re.fullmatch(r"(.*?):([A-Za-z]+)", value)
+    if m:
+        value, typ = m.group(1).strip(), m.group(2).upper()
+        if typ not in TYPES:
+            raise ValueError(f"--set {text!r}: type {typ} is not one of {', '.join(TYPES)}")
+        if typ not in _TYPES_OF[kind]:
+            raise ValueError(
+                f"--set {text!r}: a {_WORD[kind]} holds {' or '.join(_TYPES_OF[kind])}, not {typ}"
+            )
+    explicit = typ is not None
+    is_int = re.fullmatch(r"[+-]?\d+", value) is not None
+    if typ is None:
+        if kind == "X":
+            typ = "BOOL"
+        elif kind == "B":
+            typ = "BYTE"
+        elif kind == "W":
+            typ = "INT"
+        else:
+            typ = "DINT" if is_int else "REAL"
+    if typ == "BOOL":
+        v = {"0": False, "1": True, "false": False, "true": True}.get(value.lower())
+        if v is None:
+            raise ValueError(f"--set {text!r}: a BOOL is 0, 1, true or false")
+        return addr, typ, v, explicit
+    if typ == "REAL":
+        try:
+            x = float(value)
+        except ValueError:
+            raise ValueError(f"--set {text!r}: {value!r} is not a number") from None
+        if math.isfinite(x) and abs(x) > FLT_MAX:
+            raise ValueError(
+                f"--set {text!r}: {value} is beyond the REAL range (|x| <= 3.402823E+38)"
+            )
+        if math.isnan(x) and value.lower().lstrip("+-") != "nan":
+            raise ValueError(f"--set {text!r}: {value!r} is not a number")
+        return addr, typ, x, explicit
+    if not is_int:
+        raise ValueError(f"--set {text!r}: a {typ} is a whole number, not {value!r}")
+    v = int(value)
+    lo, hi = _LIMITS[typ]
+    if not lo <= v <= hi:
+        raise ValueError(f"--set {text!r}: {v} is outside the {typ} range {lo}..{hi}")
+    return addr, typ, v, explicit
+
+
+def _json_value(v):
+    if isinstance(v, float) and not math.isfinite(v):
+        return "NaN" if math.isnan(v) else ("Infinity" if v > 0 else "-Infinity")
+    return v
+
+
+def _show(v) -> str:
+    if isinstance(v, bool):
+        return "1" if v else "0"
+    if isinstance(v, float):
+        return repr(v) if math.isfinite(v) else str(v)
+    return str(v)
+
+
+class _Refused(ValueError):
+    """The CPU went to STOP: what was read before is reported too."""
+
+    def __init__(self, message: str, values: dict) -> None:
+        super().__init__(message)
+        self.values = values
+
+
+def _read_as_real(loaded, addr: str) -> bool:
+    """Whether the S7-200 program reads the double word ``addr`` as a REAL anywhere (an
+    integer written there is then most likely a mistake: its bits are not its value)."""
+    m = re.fullmatch(rf"({_S7200_AREAS})D(\d+)", addr)
+    if not m:
+        return False
+    area, off = m.group(1), int(m.group(2))
+    for pou in loaded.pous.values():
+        for _, classes, opnds, builder in pou.code:
+            if builder == "call":
+                _, _, params, ops = opnds
+                pairs = [
+                    ("r" if p[2] == "REAL" else "d", o) for p, o in zip(params, ops, strict=True)
+                ]
+            else:
+                pairs = list(zip(classes, opnds, strict=False))
+            for cls, o in pairs:
+                if getattr(o, "kind", None) == "mem" and o.area == area and o.off == off:
+                    if cls[0] == "r" and not cls.endswith(">"):
+                        return True
+    return False
+
+
+def run(
+    program: str,
+    dialect: str,
+    sets: list[str],
+    reads: list[str],
+    scans: int = 1,
+    cpu: str | None = None,
+    source: str = "program",
+) -> dict:
+    """Run ``program`` (text) and return ``{"values": {address: value}}``.
+
+    Raises ValueError (one line) for anything a user got wrong, and :class:`_Refused` when
+    the CPU went to STOP.
+    """
+    if scans < 1:
+        raise ValueError(f"--scans {scans}: at least one scan")
+    if scans > 1_000_000:
+        raise ValueError(f"--scans {scans}: at most 1,000,000 scans")
+    if cpu is not None and not cpu.upper().startswith("CPU"):
+        cpu = f"CPU {cpu}"  # --cpu 224 means the CPU 224
+    cpu = cpu.upper().replace("CPU", "CPU", 1) if cpu else None
+    writes = [parse_set(s, dialect) for s in sets]
+    wanted = [parse_read(r, dialect) for r in reads]
+    if not wanted:
+        raise ValueError("nothing to read: give at least one --read ADDRESS:TYPE")
+    if dialect == "s7-200":
+        from analysis.plc.memmap import CPUS
+        from analysis.plc.stl_eval import S7200, load_program
+        from analysis.plc.stl_eval.legacy import PAPER_SYMBOLS
+
+        if cpu is not None and (cpu not in CPUS or CPUS[cpu].dialect != "s7-200"):
+            known = ", ".join(k for k, c in CPUS.items() if c.dialect == "s7-200")
+            raise ValueError(f"--cpu {cpu!r} is not an S7-200 CPU ({known})")
+        loaded = load_program(program, symbols=PAPER_SYMBOLS, cpu=cpu, source=source)
+        plc = S7200(loaded)
+        for addr, typ, v, explicit in writes:
+            if typ == "DINT" and not explicit and _read_as_real(loaded, addr):
+                raise ValueError(
+                    f"--set {addr}={v}: the program reads {addr} as a REAL; write {v}.0 (an "
+                    f"integer would store its bit pattern, {v} -> a REAL of about "
+                    f"{_bits_as_real(v):.3g}), or {addr}={v}:DINT to store those bits"
+                )
+            plc.write(typ, addr, v)
+        plc.scan(scans)
+        values = {a: plc.read(t, a) for a, t in wanted}
+        if plc.fault is not None:
+            raise _Refused(f"the CPU went to STOP: {plc.fault}", values)
+        if plc.stopped_by:
+            raise _Refused(f"the CPU went to STOP: {plc.stopped_by}", values)
+        return {"values": values}
+    if cpu is not None:
+        raise ValueError("--cpu applies to --dialect s7-200 (awlsim's M area is 2048 bytes)")
+    from analysis.plc.memmap import default_map
+    from analysis.plc.runner import AwlRunner
+
+    r = AwlRunner(program, default_map("s7-300"), name=source, first_scan=False)
+    for addr, typ, v, _ in writes:
+        r.write(typ, addr, v)
+    for _ in range(scans):
+        r.cycle()
+    return {"values": {a: r.read(t, a) for a, t in wanted}}
+
+
+def _bits_as_real(v: int) -> float:
+    import struct
+
+    return struct.unpack(">f", struct.pack(">I", v & 0xFFFFFFFF))[0]
+
+
+def _cmd_stl_run(args: argparse.Namespace) -> int:
+    if str(args.program) == "-":
+        text, source = sys.stdin.read(), "<stdin>"
+    else:
+        path = Path(args.program)
+        try:
+            raw = path.read_bytes()
+        except OSError as exc:
+            raise ValueError(f"cannot read {path}: {exc.strerror}") from None
+        try:
+            text = raw.decode("utf-8")
+        except UnicodeDecodeError:
+            text = raw.decode("cp1252", errors="strict") if _cp1252(raw) else None
+            if text is None:
+                raise ValueError(f"{path}: neither UTF-8 nor ANSI (cp1252) text") from None
+        source = path.name
+    try:
+        out = run(text, args.dialect, args.set or [], args.read or [], args.scans, args.cpu, source)
+    except _Refused as exc:
+        if args.json:
+            print(
+                json.dumps(
+                    {
+                        "error": " ".join(str(exc).split()),
+                        "values": {k: _json_value(v) for k, v in exc.values.items()},
+                    }
+                )
+            )
+            return 2
+        raise
+    except Exception as exc:
+        if type(exc).__module__.startswith("awlsim"):  # awlsim's own parse/run errors
+            raise ValueError(f"awlsim: {exc}") from None
+        raise
+    if args.json:
+        print(json.dumps({"values": {k: _json_value(v) for k, v in out["values"].items()}}))
+    else:
+        for a, t in (parse_read(r, args.dialect) for r in args.read):
+            print(f"{a} = {_show(out['values'][a])} ({t})")
+    return 0
+
+
+def _cp1252(raw: bytes) -> bool:
+    try:
+        raw.decode("cp1252")
+    except UnicodeDecodeError:
+        return False
+    return True
+
+
+def add_stl_run(sub, parser_class=None, formatter_class=None) -> None:
+    """Register ``stl-run`` on the subparsers ``sub`` (called by :mod:`analysis.app.cli`)."""
+    p = sub.add_parser(
+        "stl-run",
+        help="run a PLC program offline (S7-200 STL on the evaluator, S7-300 AWL on awlsim)",
+        description="Run a PLC program file: write --set values, run --scans scans, print "
+        "the --read values. S7-200 STL (STEP 7-Micro/WIN text form) runs on the project's "
+        "S7-200 evaluator, S7-300 AWL on awlsim.",
+        epilog="examples:\n"
+        "  python -m analysis stl --dialect s7-200 -o ik.awl --map ik.json\n"
+        "  python -m analysis stl-run ik.awl --dialect s7-200 --set VD0=100.0 --set VD4=100.0"
+        " --set VD8=600.0 --read VD100:DINT --read V112.0:BOOL --json\n"
+        "  python -m analysis stl-run pal.awl --dialect s7-300 --set MD0=250.0 --set MD4=0.0"
+        " --set MD8=100.0 --read MD100:DINT",
+        **({"formatter_class": formatter_class} if formatter_class else {}),
+    )
+    p.add_argument("program", help="program file (- reads standard input)")
+    p.add_argument("--dialect", required=True, choices=("s7-200", "s7-300"))
+    p.add_argument(
+        "--set",
+        action="append",
+        metavar="ADDR=VALUE",
+        help="write before the first scan "
+        "(e.g. VD0=100.0, V20.0=1, VW4=-5, VD8=7:DINT); repeatable",
+    )
+    p.add_argument(
+        "--read",
+        action="append",
+        metavar="ADDR:TYPE",
+        help="read after the last scan "
+        "(TYPE: BOOL, BYTE, INT, DINT, REAL, WORD, DWORD); repeatable",
+    )
+    p.add_argument("--scans", type=int, default=1, help="scans to run (default 1)")
+    p.add_argument("--cpu", help="S7-200 CPU (CPU 221, 222, 224, 224XP, 226; default CPU 224)")
+    p.add_argument("--json", action="store_true", help='print {"values": {...}}')
+    p.set_defaults(func=_cmd_stl_run)
