@@ -28,6 +28,7 @@ EPILOG = """examples:
   python -m analysis fk 45 10.21 -155.13              joint angles (deg) -> point (mm)
   python -m analysis ik --input targets.csv --output solved.csv --branch all
   python -m analysis stl --dialect s7-200 -o ik.awl --map ik_map.json
+  python -m analysis stl-run ik.awl --dialect s7-200 --set VD0=100.0 --read VD100:DINT
   python -m analysis ik 250 0 100 --arm palletizer     another arm (see: arms)
   python -m analysis errata --check                    are the registers current?
   python -m analysis report --out build/report
@@ -492,6 +493,7 @@ def _add_report(sub) -> None:
 
 def build_parser() -> argparse.ArgumentParser:
     """The one parser of the command line."""
+    from analysis.app.cli_plc import add_stl_run
     parser = _Parser(
         prog=PROG,
         description="Audit of published robot-kinematics papers: kinematics, errata, PLC code.",
@@ -503,6 +505,7 @@ def build_parser() -> argparse.ArgumentParser:
     _add_fk(sub)
     _add_ik(sub)
     _add_stl(sub)
+    add_stl_run(sub, formatter_class=_Help)  # analysis.app.cli_plc (issue 22)
     _add_errata(sub)
     _add_arms(sub)
     _add_report(sub)
