@@ -248,6 +248,15 @@ def _run_both(body, image):
         [0] * 4,
     )
 )  # LDS copies a level that is off: the box after it is skipped
+@example(
+    (
+        ["LD SM0.0", "+R 0.0, VD20", "ROUND VD0, VD32", "LD SM1.0", "= V60.0"],
+        [-3.0e9] + [0.0] * 7,
+        [0] * 4,
+        [0] * 4,
+        [0] * 4,
+    )
+)  # ROUND's error: SM1.1 only
 def test_random_programs_leave_the_same_memory(prog):
     body, reals, dints, ints, rest = prog
     cpu, ours, theirs = _run_both(body, _image(reals, dints, ints, rest))

@@ -287,6 +287,11 @@ class MemoryMap:
             raise ValueError(
                 f"work_base {self.work_base} must be a multiple of 4 above the I/O area"
             )
+        if self.work_base > top:
+            raise ValueError(
+                f"work_base {self.work_base} is beyond the {self.cpu}'s {self.area} memory "
+                f"({self.area}B0-{self.area}B{top})"
+            )
 
     @property
     def target(self) -> Cpu:
@@ -464,8 +469,18 @@ class MemoryMap:
             free = (b for b in range(0, 2048, 4) if not set(range(b, b + 4)) & taken)
             outputs["status"] = next(free)
             top = max(top, outputs["status"])
-        # work area: from byte 200, or above the I/O area if that reaches further
-        work_base = d.get("work_base", max(200, (top // 4 + 1) * 4))
+        # work area: where the map's "work" variables begin (if above the I/O area: a map
+        # whose I/O was edited gets a new one), else from byte 200 or above the I/O area
+        work_base = max(200, (top // 4 + 1) * 4)
+        work = d.get("work")
+        if isinstance(work, dict) and work:
+            try:
+                first = min(parse_address(a, dialect, cpu)[1] for a in work.values())
+            except (ValueError, TypeError, AttributeError):
+                first = None
+            if first is not None and first > top + 3:
+                work_base = first
+        work_base = d.get("work_base", work_base)
         if isinstance(work_base, bool) or not isinstance(work_base, int):
             raise ValueError(f"work_base {work_base!r} must be a whole number of bytes")
         return cls(dialect, {k: b for k, (_, b, _) in ins.items()}, outputs, work_base, cpu)

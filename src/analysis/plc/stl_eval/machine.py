@@ -367,7 +367,8 @@ def _ins(names, classes, builder, source):
 _ins("LD A O LDN AN ON LDI AI OI LDNI ANI ONI", ("x",), "contact", _SRC_BIT)
 _ins("= =I", ("x>",), "coil", _SRC_BIT)
 _ins("S R SI RI", ("x>", "b"), "setreset", _SRC_BIT + "; S/R bit, N: N bits from bit")
-_ins("NOT ALD OLD LPS LRD LPP AENO NOP", (), "stack", _SRC_BIT + "; SMART 7.1 (AENO)")
+_ins("NOT ALD OLD LPS LRD LPP AENO", (), "stack", _SRC_BIT + "; SMART 7.1 (AENO)")
+_ins("NOP", ("n",), "stack", "S2M No Operation (NOP N, N = 0..255)")
 _ins("LDS", ("n",), "stack", "manualshelf p.370 (Load Stack)")
 _ins("EU ED", (), "edge", "MWH s7-23wkr.htm; SMART p.157 (no edge on the first scan)")
 for _t, _cls in (("B", "b"), ("W", "i"), ("D", "l"), ("R", "r")):
@@ -608,7 +609,13 @@ class Loaded:
                         v = int(a)
                     except ValueError:
                         raise err(f"operand {a!r} must be a whole number") from None
-                    lim = {"LDS": (1, 8), "PLS": (0, 1), "JMP": (0, 255), "LBL": (0, 255)}[op]
+                    lim = {
+                        "LDS": (1, 8),
+                        "PLS": (0, 1),
+                        "JMP": (0, 255),
+                        "LBL": (0, 255),
+                        "NOP": (0, 255),
+                    }[op]
                     if not lim[0] <= v <= lim[1]:
                         raise err(f"{op} {a}: the operand is {lim[0]}..{lim[1]}")
                     opnds.append(_Opnd("num", value=v, text=a))
@@ -1016,6 +1023,12 @@ class S7200:
     def _overflow(self, clear_div: bool = True) -> None:
         sm = self.mem["SM"]
         sm[1] = (sm[1] & ~(0x0F if clear_div else 0x07)) | 0x02
+        self.eno = 0
+
+    def _sm11(self) -> None:
+        """An error of an instruction that affects SM1.1 only (ROUND, TRUNC, DTI, ITB: S2M
+        p.115 lists no other SM bit): SM1.1 on, ENO = 0, the other bits as they were."""
+        self.mem["SM"][1] |= 0x02
         self.eno = 0
 
     def _divzero(self) -> None:
@@ -1544,7 +1557,7 @@ class S7200:
             if ftz:
                 x = _flush(x)
             if not math.isfinite(x):
-                cpu._overflow(False)  # not a valid REAL: SM1.1, output not affected
+                cpu._sm11()  # not a valid REAL: SM1.1, output not affected
                 return
             if trunc:
                 r = int(x)
@@ -1552,7 +1565,7 @@ class S7200:
                 r = math.floor(abs(x) + 0.5)
                 r = -r if x < 0 else r
             if not -(2**31) <= r <= 2**31 - 1:
-                cpu._overflow(False)
+                cpu._sm11()
                 return
             s(r)
             sm = cpu.mem["SM"]
@@ -1573,10 +1586,10 @@ class S7200:
             if op == "DTR":
                 s(float(v))  # rounded to the nearest REAL
             elif op == "DTI" and not -32768 <= v <= 32767:
-                cpu._overflow(False)
+                cpu._sm11()
                 return
             elif op == "ITB" and not 0 <= v <= 255:
-                cpu._overflow(False)
+                cpu._sm11()
                 return
             else:
                 s(v)
