@@ -1344,11 +1344,10 @@ class S7200:
                 self.events["overflow"] += 1
             self._overflow(clear_div)
             return
-        if r32 != 0.0 and abs(r32) < _TINY:
+        if r != 0.0 and abs(r) < _TINY:  # below the REAL range: denormal or 0 (IEEE)
+            self.events["denormal"] += 1
             if self.ftz:
                 r32 = 0.0
-            else:
-                self.events["denormal"] += 1
         s(r32)
         sm = self.mem["SM"]
         keep = 0x00 if clear_div else 0x08
