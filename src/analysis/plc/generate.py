@@ -34,16 +34,25 @@ PAPER_STARTUP = (100.0, 100.0, 600.0)
 
 
 def input_units(params: Params) -> dict[str, str]:
-    """Input name -> unit of the arm's closed form (``INPUT_UNITS``; lengths in mm when the
-    closed form names none)."""
-    cf = closed_form(params.description.closed_form)
-    units = getattr(cf, "INPUT_UNITS", ("mm",) * len(cf.INPUTS))
-    return dict(zip(cf.INPUTS, units, strict=True))
+    """Input name -> unit (:attr:`analysis.kinematics.arm.Arm.input_units`)."""
+    from analysis.kinematics.arm import Arm
+
+    arm = Arm(params)
+    return dict(zip(arm.inputs, arm.input_units, strict=True))
 
 
 def status_codes(program: Program) -> list[int]:
-    """The status codes ``program`` writes (its ``seti status k`` instructions)."""
-    return sorted({int(i.args[0]) for i in program.body if i.op == "seti" and i.dst == "status"})
+    """The status codes ``program`` writes: 0, and every refusal's (``accept``'s list in the
+    structured IR, ``seti status k`` once flattened)."""
+    codes = {0}
+    for i in program.body:
+        if i.op == "accept":
+            codes |= {int(k) for k in i.args[0]}
+        elif i.op in ("refuse", "notfinite"):
+            codes.add(int(i.args[1]))
+        elif i.op == "seti" and i.dst == "status":
+            codes.add(int(i.args[0]))
+    return sorted(codes)
 
 
 def _startup_values(params: Params, startup_target):
@@ -127,9 +136,7 @@ def generate(
             raise ValueError(f"a memory layout names addresses; {dialect} has none")
         return generate_st(dialect, branch, trig, params, theta1_on_axis)
     if dialect not in DIALECTS:
-        raise ValueError(
-            f"dialect {dialect!r} is not one of {', '.join((*DIALECTS, *ST_FAMILY))}"
-        )
+        raise ValueError(f"dialect {dialect!r} is not one of {', '.join((*DIALECTS, *ST_FAMILY))}")
     if params is None:
         from analysis.kinematics.params import paper_params
 
