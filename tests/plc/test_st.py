@@ -24,8 +24,10 @@ def test_emitted_text_matches_golden(dialect):
     assert text == (GOLDEN / f"plc_{dialect}_front-up.{SUFFIX[dialect]}").read_text("utf-8")
     m = json.loads(mjson)
     assert m["block"] == "IK_GRABBER" and list(m["inputs"]) == ["px", "py", "pz"]
-    assert m["status"] == {"0": "ok", "1": "out-of-reach", "2": "inside-reach",
-                           "3": "base-axis", "6": "invalid"}  # fmt: skip
+    assert {k: v["name"] for k, v in m["status_codes"].items()} == {
+        "0": "ok", "1": "out-of-reach", "2": "inside-reach", "3": "base-axis", "6": "invalid"
+    }  # fmt: skip
+    assert m["inputs"]["px"] == "IK_GRABBER.px" and m["signals"]["px"]["unit"] == "mm"
 
 
 @pytest.mark.parametrize("arm", ["grabber", "palletizer", "gr1"])

@@ -14,7 +14,6 @@ import dataclasses
 import json
 from xml.sax.saxutils import escape, quoteattr
 
-from analysis.kinematics.status import Status
 from analysis.plc.ir import Program, build_program
 from analysis.plc.st import block_name, emit_scl, emit_st
 
@@ -28,28 +27,43 @@ _XHTML = "http://www.w3.org/1999/xhtml"
 
 
 def interface_map(program: Program, fb: str, dialect: str, units, trig: str) -> dict:
-    """The interface map: the block, its inputs with units, outputs, status codes with their
-    meaning, and what the block does before its first call."""
-    codes = sorted({int(i.args[1]) for i in program.body if i.op in ("refuse", "notfinite")})
-    return {
-        "dialect": dialect,
-        "block": fb,
-        "instance_db": f"{fb}_DB" if dialect == "scl" else None,
-        "inputs": {
-            n: {"type": "REAL", "unit": u} for n, u in zip(program.inputs, units, strict=True)
+    """The interface map (MAP.json schema of :func:`analysis.plc.memmap.map_document`, the
+    interface variables ``FB.name`` in place of addresses): the inputs with their units, the
+    outputs, every status code with its meaning, what the block does before its first call;
+    and the block, its instance DB (SCL), its functions, the trigonometry and REAL."""
+    from analysis.plc.generate import status_codes
+    from analysis.plc.memmap import map_document
+
+    doc = map_document(
+        dialect,
+        inputs={n: f"{fb}.{n}" for n in program.inputs},
+        outputs={n: f"{fb}.{n}" for n in (*program.outputs, "reachable", "status")},
+        units=dict(zip(program.inputs, units, strict=True)),
+        status_codes=status_codes(program),
+        startup={
+            "inputs": "the caller passes them on every call; the block keeps no inputs",
+            "outputs": "0 / FALSE until the first call; a refused call leaves c1..cn as they were",
         },
-        "outputs": {
-            **{c: {"type": "DINT", "unit": "pulses"} for c in program.outputs},
-            "reachable": {"type": "BOOL"},
-            "status": {"type": "DINT", "unit": "code"},
+        target_cpu={
+            "name": "S7-1200/S7-1500 (TIA Portal, SCL source)"
+            if dialect == "scl"
+            else "IEC 61131-3 runtime (CODESYS, TwinCAT, OpenPLC)",
+            "limits": {},
+            "source": "no fixed addresses: the block's interface",
         },
-        "status": {str(k): Status(k).text for k in [0, *codes]},
-        "functions": [f"IK_{s.name}" for s in program.subroutines],
-        "trig": trig,
-        "real": "REAL (IEEE binary32); pulses rounded half away from zero (eqs. 20-22)",
-        "startup": "no start-up code: outputs are 0 / FALSE until the first call; every call "
-        "computes from the inputs it is given; a refused call leaves c1..cn as they were",
-    }
+        arm=program.arm,
+        branch=program.branch,
+    )
+    doc.update(
+        {
+            "block": fb,
+            "instance_db": f"{fb}_DB" if dialect == "scl" else None,
+            "functions": [f"IK_{s.name}" for s in program.subroutines],
+            "trig": trig,
+            "real": "REAL (IEEE binary32); pulses rounded half away from zero (eqs. 20-22)",
+        }
+    )
+    return doc
 
 
 def plcopen_xml(st_text: str, program: Program, fb: str, units) -> str:
