@@ -257,8 +257,15 @@ def _run_both(body, image):
         [0] * 4,
     )
 )  # ROUND's error: SM1.1 only
-@example((["LD SM0.0", "EXP VD12, VD0", "LD SM1.0", "= V60.0"], [0.0, 0.0, 0.0, -104.0] +
-          [0.0] * 4, [0] * 4, [0] * 4, [0] * 4))  # e^-104 is below the REAL range: discarded
+@example(
+    (
+        ["LD SM0.0", "EXP VD12, VD0", "LD SM1.0", "= V60.0"],
+        [0.0, 0.0, 0.0, -104.0] + [0.0] * 4,
+        [0] * 4,
+        [0] * 4,
+        [0] * 4,
+    )
+)  # e^-104 is below the REAL range: discarded
 def test_random_programs_leave_the_same_memory(prog):
     body, reals, dints, ints, rest = prog
     cpu, ours, theirs = _run_both(body, _image(reals, dints, ints, rest))
