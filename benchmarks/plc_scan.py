@@ -4,7 +4,9 @@ every arm, in the same process and on the same targets (issue 22 item 7).
 
 awlsim: wall time of ``AwlRunner.solve`` (one OB1 cycle per target, Python) per target. ST
 engine: the driver's own time inside ``Instance::scan`` per target (``scan_ns``), and the
-wall time of the whole call (process start, compile, I/O) per target.
+wall time of the whole call (process start, compile, I/O) per target. S7-200: the
+generator's S7-200 text on the project's S7-200 evaluator (``S7200Runner.solve``) beside the
+same text translated to AWL on awlsim (``AwlRunner.solve``), wall time per target.
 """
 
 from __future__ import annotations
@@ -21,8 +23,9 @@ def plc_scan_times(n: int = 300) -> dict:
     from analysis.plc.ir import build_program
     from analysis.plc.memmap import MemoryMap
     from analysis.plc.pose_targets import pose_sweep_targets
-    from analysis.plc.runner import AwlRunner
+    from analysis.plc.runner import AwlRunner, S7200Runner
     from analysis.plc.st import block_name, emit_st
+    from analysis.plc.translate import translate_s7200
     from analysis.plc.verify import input_columns, sweep_targets
 
     sweeps = {"grabber": sweep_targets, "palletizer": pr.sweep_targets, "gr1": pose_sweep_targets}
@@ -42,8 +45,21 @@ def plc_scan_times(n: int = 300) -> dict:
                                  len(prog.outputs), xyz)  # fmt: skip
         wall = (time.perf_counter() - t0) / len(xyz)
         scan = run.scan_ns * 1e-9 / len(xyz)
+        s7200, map200 = generate("s7-200", params=arm.params, motion=False)
+        mmap200 = MemoryMap.from_dict(json.loads(map200))
+        ev = S7200Runner(s7200, mmap200)
+        t0 = time.perf_counter()
+        ev.solve(xyz)
+        evaluator = (time.perf_counter() - t0) / len(xyz)
+        tr = AwlRunner(translate_s7200(s7200).awl, mmap200)
+        t0 = time.perf_counter()
+        tr.solve(xyz)
+        translated = (time.perf_counter() - t0) / len(xyz)
         out[name] = {
             "targets": len(xyz),
+            "s7200_evaluator_us_per_scan": evaluator * 1e6,
+            "awlsim_s7200_translated_us_per_scan": translated * 1e6,
+            "awlsim_s7200 / evaluator": translated / evaluator,
             "awlsim_us_per_scan": awl * 1e6,
             "st_engine_us_per_scan": scan * 1e6,
             "st_engine_wall_us_per_target": wall * 1e6,

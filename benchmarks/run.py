@@ -263,6 +263,9 @@ def main(argv=None) -> int:
     for k, v in plc_scan.items():
         print(f"PLC scan {k:<10} awlsim {v['awlsim_us_per_scan']:9.1f} us, ST engine "
               f"{v['st_engine_us_per_scan']:7.2f} us ({v['awlsim / st_engine (scan)']:.0f}x)")
+        print(f"S7-200   {k:<10} awlsim {v['awlsim_s7200_translated_us_per_scan']:9.1f} us "
+              f"(translated), evaluator {v['s7200_evaluator_us_per_scan']:7.1f} us "
+              f"({v['awlsim_s7200 / evaluator']:.1f}x)")
     print(f"load {load_before[0]:.2f} -> {load_after[0]:.2f}; wrote {path}")
     _plot(doc, path.with_suffix(".svg"))
     return 0
