@@ -8,7 +8,7 @@ SM1 bits when the program reads them, must be the same byte for byte. Operands i
 infinities, zero divisors and values that overflow INT and DINT, so the error rules (output
 unchanged, SM1.1/SM1.3, ENO) are compared too.
 
-Outside the subset, by construction (``/work/shared/stl_reference.md`` 2.2): a REAL result
+Outside the subset, by construction (awlsim 0.77.1, observed): a REAL result
 beyond +-3.4E38 from finite operands (awlsim saturates without OV, the CPU sets SM1.1), a
 denormal REAL (awlsim stores 0, the CPU's handling is unknown) and SIN/COS/TAN (awlsim
 snaps results within 1e-7 of -1, 0, 1). The evaluator counts the first two, and an example

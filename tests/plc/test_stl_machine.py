@@ -580,7 +580,7 @@ END_SUBROUTINE_BLOCK
 
 
 def test_the_reference_example_of_the_text_form_runs():
-    """The Micro/WIN text form of /work/shared/stl_reference.md section 1.7: OB1 calling a
+    """The Micro/WIN text form of the team's STL reference notes (section 1.7): OB1 calling a
     subroutine named IK_J1 with REAL IN and OUT parameters."""
     text = """ORGANIZATION_BLOCK MAIN:OB1
 TITLE=IK demo

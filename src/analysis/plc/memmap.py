@@ -46,8 +46,8 @@ CPU memory sizes (:data:`CPUS`), with their sources:
 * S7-200: V memory VB0-VB2047 on the CPU 221/222, VB0-VB8191 on the CPU 224, VB0-VB10239
   on the CPU 224XP/226; M0.0-M31.7, SM0.0-SM549.7 (CPU 224 and up; SMB0-SMB179 on the 221,
   SMB0-SMB299 on the 222), LB0-LB63 per program level, AC0-AC3, I0.0-I15.7, Q0.0-Q15.7,
-  S0.0-S31.7 (S7-200 System Manual, Table 6-1 "Memory ranges", via the summary in
-  ``/work/shared/stl_reference.md`` section 1.5: secondary).
+  S0.0-S31.7 (S7-200 System Manual, Table 6-1 "Memory ranges", from a secondary summary in
+  the team's STL reference notes).
 * S7-300: bit memory (M) 128 bytes on the CPU 312, 256 on the CPU 314, 2048 on the CPU
   315-2 DP, 4096 on the CPU 317-2 DP (1024, 2048, 16384 and 32768 "flags"; a distributor's
   summary of the S7-300 CPU data sheets, hopluc.com.vn "SIMATIC S7-300": secondary, check
@@ -116,10 +116,7 @@ class Cpu:
         return out
 
 
-_S7200_SRC = (
-    "S7-200 System Manual, Table 6-1 (memory ranges), as summarised in "
-    "/work/shared/stl_reference.md section 1.5 (secondary)"
-)
+_S7200_SRC = "S7-200 System Manual, Table 6-1 (memory ranges), from a secondary summary"
 _S7300_SRC = (
     "S7-300 CPU data sheets (CPU 31xC and CPU 31x, Technical Data), as summarised by "
     "hopluc.com.vn 'SIMATIC S7-300' (secondary: check the CPU manual)"

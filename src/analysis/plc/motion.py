@@ -29,7 +29,7 @@ tested in the scan that started its train (whether SM66.7 drops within the PLS s
 not documented in the sources we have). A zero move loads no pulses (the PTO needs a
 count >= 1). Single-segment PTO, control byte 16#85 (enable, PTO, single segment,
 microseconds, update count and cycle time), cycle time 500 us (1 kHz) by default
-(``/work/shared/stl_reference.md`` section 1.6).
+(STEP 7-Micro/WIN help, PTO, s7-24yeq.htm).
 
 Start-up (:data:`MOTION_STARTUP`): the first scan (SM0.1) resets Q0.0-Q0.7, loads the PTO
 control bytes and cycle times and sets the positions to 0: the arm must stand at its zero

@@ -58,7 +58,7 @@ addresses and pointers, direct L addresses (use the ``#names``), FOR/NEXT, STOP,
 SWAP, MUL/DIV, shifts and rotates, INVx, INCB/DECB, BTI/ITB, SM0.2 and SM0.4-SM0.7 (clocks).
 
 Known differences from the S7-200 that the translation cannot remove (awlsim's REAL unit,
-``/work/shared/stl_reference.md`` section 2.2): a REAL overflow of finite operands saturates
+observed on awlsim 0.77.1): a REAL overflow of finite operands saturates
 to +-3.4028235E+38 without OV, so the store happens (the CPU sets SM1.1 and keeps OUT); a
 denormal result is stored as 0 with OV, so the store is skipped (the CPU's handling is
 unknown; the evaluator keeps IEEE's denormal); SIN/COS/TAN within 1e-7 of -1, 0 or 1 are

@@ -1,7 +1,11 @@
 """An S7-200 CPU that runs STEP 7-Micro/WIN STL programs, scan by scan.
 
 What it models (each instruction's source is in :data:`INSTRUCTIONS`, listed by
-:func:`instruction_table`; the abbreviations are those of ``/work/shared/stl_reference.md``):
+:func:`instruction_table`). Sources: [S2M] the S7-200 Programmable Controller System Manual
+(manualslib.com/manual/801761, its page numbers); [manualshelf] its older edition
+C79000-G7076-C233-01 (manualshelf.com, page-NNN); [MWH] the STEP 7-Micro/WIN 32 help (its
+file names); [SMART] the S7-200 SMART System Manual V2.3; "~" marks a rule assumed or taken
+from a secondary source, not read in a manual page:
 
 Memory
     V, M, SM, I, Q, S, L (64 bytes per call level), AC0-AC3, sized by the target CPU
@@ -48,7 +52,7 @@ Motion
     ``PLS 0|1`` starts a single-segment pulse train of SMD72/SMD82 pulses when the control
     byte SMB67/SMB77 enables it and clears the idle bit SM66.7/SM76.7; :meth:`S7200.pto_done`
     (or ``pto_scans``) finishes it. With the enable bit cleared, PLS aborts the train
-    [MWH s7-24yeq.htm; stl_reference 1.6]. The pulses themselves are not simulated.
+    [MWH s7-24yeq.htm]. The pulses themselves are not simulated.
 
 Why hand-written (design.md asks for an established library where one fits): awlsim runs
 S7-300/400 AWL, a different machine (RLO and accumulators instead of a logic stack and
@@ -348,12 +352,12 @@ _EXAMPLE = {
 
 # ------------------------------------------------------------------------------------------
 # the instruction table: mnemonic -> (operand classes, builder name, semantics source)
-_SRC_BIT = "S2M ch.6 Bit logic; manualshelf p.370 (logic stack)"
+_SRC_BIT = "S2M p.83 (contacts, coils, logic stack); manualshelf p.370"
 _SRC_MATH_R = "S2M p.154 (Add/Subtract/Multiply/Divide, SM bits and ENO); MWH s7-29x9r.htm"
 _SRC_MATH_I = "S2M p.154; MWH s7-28hir.htm (INT), s7-29u0i.htm (DINT): overflow -> not written"
 _SRC_FN = "S2M p.157 (numeric functions: SM1.1 overflow/illegal, output unaltered)"
 _SRC_CONV = "S2M p.115 (ROUND/TRUNC: invalid or too large -> SM1.1, output not affected)"
-_SRC_MOV = "stl_reference 1.2 (MOVB/MOVW/MOVD/MOVR copy 8/16/32/32 bits unchanged)"
+_SRC_MOV = "S2M p.115 example, MWH moves (MOVB/W/D/R copy 8/16/32/32 bits, no conversion)"
 _SRC_CMP = "manualshelf p.186 (compare contacts); S2M p.96 (NaN in Compare Real: fatal)"
 
 INSTRUCTIONS: dict[str, tuple[tuple[str, ...], str, str]] = {}
@@ -368,7 +372,7 @@ _ins("LD A O LDN AN ON LDI AI OI LDNI ANI ONI", ("x",), "contact", _SRC_BIT)
 _ins("= =I", ("x>",), "coil", _SRC_BIT)
 _ins("S R SI RI", ("x>", "b"), "setreset", _SRC_BIT + "; S/R bit, N: N bits from bit")
 _ins("NOT ALD OLD LPS LRD LPP AENO", (), "stack", _SRC_BIT + "; SMART 7.1 (AENO)")
-_ins("NOP", ("n",), "stack", "S2M No Operation (NOP N, N = 0..255)")
+_ins("NOP", ("n",), "stack", "~ S7-200 NOP N, N = 0..255 (page not retrieved)")
 _ins("LDS", ("n",), "stack", "manualshelf p.370 (Load Stack)")
 _ins("EU ED", (), "edge", "MWH s7-23wkr.htm; SMART p.157 (no edge on the first scan)")
 for _t, _cls in (("B", "b"), ("W", "i"), ("D", "l"), ("R", "r")):
@@ -378,44 +382,95 @@ _ins("MOVB", ("b", "b>"), "move", _SRC_MOV)
 _ins("MOVW", ("w", "w>"), "move", _SRC_MOV)
 _ins("MOVD", ("d", "d>"), "move", _SRC_MOV)
 _ins("MOVR", ("r", "r>"), "move", _SRC_MOV)
-_ins("BMB", ("b", "b>", "b"), "blockmove", "MWH Block Move (N = 1..255 elements)")
-_ins("BMW", ("w", "w>", "b"), "blockmove", "MWH Block Move (N = 1..255 elements)")
-_ins("BMD", ("d", "d>", "b"), "blockmove", "MWH Block Move (N = 1..255 elements)")
-_ins("SWAP", ("w^",), "swap", "MWH Swap Bytes")
+_ins("BMB", ("b", "b>", "b"), "blockmove", "~ MWH Block Move, N = 1..255 (page not retrieved)")
+_ins("BMW", ("w", "w>", "b"), "blockmove", "~ MWH Block Move, N = 1..255 (page not retrieved)")
+_ins("BMD", ("d", "d>", "b"), "blockmove", "~ MWH Block Move, N = 1..255 (page not retrieved)")
+_ins("SWAP", ("w^",), "swap", "~ MWH Swap Bytes (page not retrieved)")
 _ins("+R -R *R /R", ("r", "r^"), "math_r", _SRC_MATH_R)
 _ins("+I -I *I /I", ("i", "i^"), "math_i", _SRC_MATH_I)
 _ins("+D -D *D /D", ("l", "l^"), "math_d", _SRC_MATH_I)
 _ins("MUL", ("i", "l^"), "mul", "manualshelf p.252 (MUL: 16 x 16 -> 32 bits)")
 _ins("DIV", ("i", "l^"), "div", "manualshelf p.252 (DIV: remainder high word, quotient low)")
 _ins("SQRT LN EXP SIN COS TAN", ("r", "r>"), "func", _SRC_FN)
-_ins("INCB DECB", ("b^",), "incdec", "S2M Increment/Decrement (overflow rule as Add: ~)")
-_ins("INCW DECW", ("i^",), "incdec", "S2M Increment/Decrement (overflow rule as Add: ~)")
-_ins("INCD DECD", ("l^",), "incdec", "S2M Increment/Decrement (overflow rule as Add: ~)")
-_ins("ANDB ORB XORB", ("b", "b^"), "logic", "MWH Logic operations (SM1.0 zero)")
-_ins("ANDW ORW XORW", ("w", "w^"), "logic", "MWH Logic operations (SM1.0 zero)")
-_ins("ANDD ORD XORD", ("d", "d^"), "logic", "MWH Logic operations (SM1.0 zero)")
-_ins("INVB", ("b^",), "invert", "MWH Invert (SM1.0 zero)")
-_ins("INVW", ("w^",), "invert", "MWH Invert (SM1.0 zero)")
-_ins("INVD", ("d^",), "invert", "MWH Invert (SM1.0 zero)")
-_ins("SLB SRB RLB RRB", ("b^", "b"), "shift", "MWH Shift/Rotate (SM1.0 zero, SM1.1 last bit)")
-_ins("SLW SRW RLW RRW", ("w^", "b"), "shift", "MWH Shift/Rotate (SM1.0 zero, SM1.1 last bit)")
-_ins("SLD SRD RLD RRD", ("d^", "b"), "shift", "MWH Shift/Rotate (SM1.0 zero, SM1.1 last bit)")
+_ins(
+    "INCB DECB",
+    ("b^",),
+    "incdec",
+    "~ Increment/Decrement: the Add rule assumed (S2M p.154; INC page not retrieved)",
+)
+_ins(
+    "INCW DECW",
+    ("i^",),
+    "incdec",
+    "~ Increment/Decrement: the Add rule assumed (S2M p.154; INC page not retrieved)",
+)
+_ins(
+    "INCD DECD",
+    ("l^",),
+    "incdec",
+    "~ Increment/Decrement: the Add rule assumed (S2M p.154; INC page not retrieved)",
+)
+_ins(
+    "ANDB ORB XORB", ("b", "b^"), "logic", "~ MWH logic operations, SM1.0 zero (page not retrieved)"
+)
+_ins(
+    "ANDW ORW XORW", ("w", "w^"), "logic", "~ MWH logic operations, SM1.0 zero (page not retrieved)"
+)
+_ins(
+    "ANDD ORD XORD", ("d", "d^"), "logic", "~ MWH logic operations, SM1.0 zero (page not retrieved)"
+)
+_ins("INVB", ("b^",), "invert", "~ MWH Invert, SM1.0 zero (page not retrieved)")
+_ins("INVW", ("w^",), "invert", "~ MWH Invert, SM1.0 zero (page not retrieved)")
+_ins("INVD", ("d^",), "invert", "~ MWH Invert, SM1.0 zero (page not retrieved)")
+_ins(
+    "SLB SRB RLB RRB",
+    ("b^", "b"),
+    "shift",
+    "~ MWH Shift/Rotate: SM1.0 zero, SM1.1 last bit out (page not retrieved)",
+)
+_ins(
+    "SLW SRW RLW RRW",
+    ("w^", "b"),
+    "shift",
+    "~ MWH Shift/Rotate: SM1.0 zero, SM1.1 last bit out (page not retrieved)",
+)
+_ins(
+    "SLD SRD RLD RRD",
+    ("d^", "b"),
+    "shift",
+    "~ MWH Shift/Rotate: SM1.0 zero, SM1.1 last bit out (page not retrieved)",
+)
 _ins("ROUND TRUNC", ("r", "l>"), "round", _SRC_CONV)
 _ins("DTR", ("l", "r>"), "convert", "S2M p.115 (DTR: DINT -> REAL)")
 _ins("ITD", ("i", "l>"), "convert", "S2M p.115 (ITD: INT -> DINT, sign extended)")
-_ins("DTI", ("l", "i>"), "convert", "S2M p.115 (DTI: SM1.1 if outside INT, output unchanged ~)")
-_ins("BTI", ("b", "i>"), "convert", "S2M Conversion (BTI: unsigned byte -> INT)")
-_ins("ITB", ("i", "b>"), "convert", "S2M Conversion (ITB: SM1.1 outside 0..255 ~)")
-_ins("JMP", ("n",), "jump", "S2M Jump to Label (taken with top of stack = 1)")
-_ins("LBL", ("n",), "label", "S2M Jump to Label (same block)")
+_ins(
+    "DTI",
+    ("l", "i>"),
+    "convert",
+    "~ DTI: SM1.1 outside INT, output unchanged (as ROUND, S2M p.115; assumed)",
+)
+_ins("BTI", ("b", "i>"), "convert", "~ BTI: unsigned byte -> INT (page not retrieved)")
+_ins("ITB", ("i", "b>"), "convert", "~ ITB: SM1.1 outside 0..255 (page not retrieved)")
+_ins(
+    "JMP",
+    ("n",),
+    "jump",
+    "S7-200 help (virtualPLC mirror): a jump is taken with the top of stack 1",
+)
+_ins("LBL", ("n",), "label", "S7-200 help (virtualPLC mirror): jump and label in one block")
 _ins("CALL", (), "call", "manualshelf p.324 (Call Subroutine with parameters)")
-_ins("CRET", (), "cret", "MWH s7-250fn.htm (conditional return)")
-_ins("END", (), "end", "S2M Conditional End (main program only)")
-_ins("STOP", (), "stop", "S2M STOP (CPU to STOP)")
-_ins("WDR", (), "stack", "S2M Watchdog Reset (no effect here: no watchdog)")
-_ins("FOR", ("i>", "i", "i"), "for", "S2M FOR/NEXT loop (INDX, INIT, FINAL)")
-_ins("NEXT", (), "next", "S2M FOR/NEXT loop")
-_ins("PLS", ("n",), "pls", "MWH s7-24yeq.htm (PTO single segment); stl_reference 1.6")
+_ins("CRET", (), "cret", "MWH s7-250fn.htm (CRET: conditional return)")
+_ins("END", (), "end", "~ S7-200 END, conditional end of the main program (page not retrieved)")
+_ins("STOP", (), "stop", "~ S7-200 STOP: the CPU to STOP (page not retrieved)")
+_ins("WDR", (), "stack", "~ WDR: no effect here (no watchdog modelled)")
+_ins("FOR", ("i>", "i", "i"), "for", "~ S7-200 FOR INDX, INIT, FINAL (page not retrieved)")
+_ins("NEXT", (), "next", "~ S7-200 NEXT (page not retrieved)")
+_ins(
+    "PLS",
+    ("n",),
+    "pls",
+    "MWH s7-24yeq.htm (PTO single segment, SMB67/SMB77, SMD72/SMD82, SM66.7/SM76.7)",
+)
 
 _REFUSED_OPS = {
     **dict.fromkeys(

@@ -1,7 +1,7 @@
 """Reading STEP 7-Micro/WIN's text form of an S7-200 program (the ``.awl`` export).
 
-The layout (``/work/shared/stl_reference.md`` section 1.7; no official grammar exists, so
-this follows the exports and the project's generator)::
+The layout (no official grammar exists: this follows Micro/WIN's exports as third-party
+tools read them, and the project's generator)::
 
     ORGANIZATION_BLOCK MAIN:OB1
     TITLE=...
