@@ -26,9 +26,10 @@ Text (:func:`parse_real`: the command line and CSV cells, one rule for both)
 Ranges (the physical range the code supports)
     lengths and offsets ``|L| <=`` :data:`MAX_LENGTH_MM` and a non-zero length at least
     :data:`MIN_LENGTH_MM` (signs are the closed form's ``check``); coordinates
-    ``|x| <=`` :data:`MAX_COORD_MM`; tolerances in 0 .. :data:`MAX_TOL_MM`; pulses per
-    revolution whole in 1 .. :data:`MAX_PULSES_PER_REV`; joint angles ``|q| <=``
-    :data:`MAX_JOINT_DEG`; orientation angles in radians ``|a| <=`` :data:`MAX_ANGLE_RAD`.
+    ``|x| <=`` :data:`MAX_COORD_MM` (the largest PLC REAL); tolerances in 0 ..
+    :data:`MAX_TOL_MM`; pulses per revolution whole in 1 .. :data:`MAX_PULSES_PER_REV`;
+    joint angles ``|q| <=`` :data:`MAX_JOINT_DEG`; a waist angle in radians ``|a| <=``
+    :data:`MAX_ANGLE_RAD`; orientation angles in radians: finite.
 Angles in degrees are reduced exactly (:func:`reduce_deg`)
     An orientation angle or a waist angle given in degrees (command line, CSV) is reduced to
     (-180, 180] deg *before* it is converted to radians: ``fmod`` by 360, which IEEE 754
@@ -81,9 +82,11 @@ and small enough that every square and sum of the closed forms stays far inside 
 MIN_LENGTH_MM = 1e-3
 """Smallest non-zero |length| [mm] (1 micrometre): the closed forms divide by products of
 lengths; below this they lose the target to round-off (and 1e-200 would underflow to 0)."""
-MAX_COORD_MM = 1e9
-"""Largest |target coordinate| [mm] (1000 km): farther is a mistake of units or digits; up to
-it every square is finite in float64 and float32, so distances are finite numbers."""
+MAX_COORD_MM = float(np.finfo(np.float32).max)
+"""Largest |target coordinate| [mm]: the largest PLC REAL (3.4e38), the largest target a
+generated program can be given. Every closed form refuses a target beyond its reach box
+before it squares anything, and in float64 the squares of such coordinates stay finite, so
+every distance the code reports is a finite number."""
 MAX_TOL_MM = 1.0
 """Largest accepted distance tolerance [mm]: a solution "on the shell" may miss the target by
 up to the tolerance, and more than a millimetre would pass a visibly wrong pose as solved."""
@@ -95,8 +98,11 @@ MAX_JOINT_DEG = 3600.0
 """Largest accepted |joint angle| [deg] (ten turns): beyond it an input is a mistake of unit
 or of digits, not a pose."""
 MAX_ANGLE_RAD = math.radians(MAX_JOINT_DEG)
-"""Largest accepted |angle| given in radians through the API (ten turns, 62.8 rad). Angles in
-degrees at the command line and in CSV files are reduced exactly first (:func:`reduce_deg`)."""
+"""Largest accepted |waist angle| given in radians through the API (``theta1_on_axis``: ten
+turns, 62.8 rad), which is wrapped to (-pi, pi] (:func:`wrap_rad`). Orientation angles in
+radians need no bound: the closed forms use only their sine and cosine, which libm (numpy and
+the compiled kernel alike) reduces exactly for every finite argument. Angles in degrees at the
+command line and in CSV files are reduced exactly first (:func:`reduce_deg`)."""
 
 _NUMBER = re.compile(r"[ \t]*[+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?[ \t]*")
 _SHOW = 40  # characters of a text quoted in a message
@@ -244,13 +250,19 @@ def real(
     return v
 
 
-def _has_bool(obj: object, depth: int = 0) -> bool:
-    """True if a nested list/tuple holds a bool (NumPy would turn it into 0/1 silently)."""
+def _nested_problem(obj: object, depth: int = 0) -> str | None:
+    """Why a nested list/tuple cannot be taken as numbers although NumPy would convert it:
+    a bool (to 0/1) or a masked value (to NaN, with a warning); None if neither."""
     if isinstance(obj, (bool, np.bool_)):
-        return True
+        return "a boolean is not a number"
+    if isinstance(obj, np.ma.MaskedArray):
+        return "a masked value is refused (the mask would be dropped): fill it first"
     if isinstance(obj, (list, tuple)) and depth < 32:
-        return any(_has_bool(v, depth + 1) for v in obj)
-    return False
+        for v in obj:
+            problem = _nested_problem(v, depth + 1)
+            if problem:
+                return problem
+    return None
 
 
 def _fits_float(v: object) -> bool:
@@ -283,8 +295,9 @@ def real_array(
     if isinstance(value, np.ndarray):
         arr = value
     else:
-        if isinstance(value, (list, tuple)) and _has_bool(value):
-            raise refuse("a boolean is not a number")
+        problem = _nested_problem(value) if isinstance(value, (list, tuple)) else None
+        if problem:
+            raise refuse(problem)
         try:
             arr = np.asarray(value)
         except (TypeError, ValueError) as exc:
@@ -404,10 +417,10 @@ def check_inputs(
     names: Sequence[str],
     what: str = "target",
 ) -> None:
-    """Range-check the last axis of validated inputs: "mm" columns within
-    :data:`MAX_COORD_MM`, "rad" columns within :data:`MAX_ANGLE_RAD`; the message names the
-    first bad value, its index and the limit."""
-    limits = np.array([MAX_ANGLE_RAD if u == "rad" else MAX_COORD_MM for u in units])
+    """Range-check the last axis of finite inputs: "mm" columns within :data:`MAX_COORD_MM`
+    ("rad" columns: any finite value); the message names the first bad value, its index and
+    the limit."""
+    limits = np.array([np.inf if u == "rad" else MAX_COORD_MM for u in units])
     if not arr.size:
         return
     bad = ~(np.abs(arr) <= limits)
@@ -416,12 +429,7 @@ def check_inputs(
     idx = tuple(int(i) for i in np.argwhere(bad)[0])
     j = idx[-1]
     where = f" at index {idx[:-1]}" if arr.ndim > 1 else ""
-    unit = units[j]
-    if unit == "rad":
-        limit = (f"{MAX_ANGLE_RAD:.4g} rad (ten turns; angles in degrees are reduced exactly at "
-                 "the command line and in CSV files)")  # fmt: skip
-    else:
-        limit = f"{MAX_COORD_MM:g} mm, the largest coordinate the code supports"
+    limit = f"{MAX_COORD_MM:.4g} mm, the largest coordinate the code supports (a PLC REAL)"
     raise InvalidValue(
-        f"{what}{where}: {names[j]} = {arr[idx]:g} {unit} is beyond +-{limit}", names[j]
+        f"{what}{where}: {names[j]} = {arr[idx]:g} {units[j]} is beyond +-{limit}", names[j]
     )

@@ -188,7 +188,7 @@ def test_batch_goes_on_past_a_bad_row(tmp_path, capsys):
     assert df["reason"][0] == ""
     assert "line 3 column z_mm: 'abc' is not a number" in df["reason"][1]
     assert "line 4 column y_mm: empty cell" in df["reason"][2]
-    assert "line 5 column x_mm: x_mm = 1e+300 mm is beyond +-1e+09 mm" in df["reason"][3]
+    assert "line 5 column x_mm: x_mm = 1e+300 mm is beyond +-3.403e+38 mm" in df["reason"][3]
     assert df["z_mm"].tolist() == ["600", "abc", "6", "0"]  # echoed as given
     assert df["note"].tolist() == ["a", "b", "c", "d"]
 

@@ -164,7 +164,7 @@ def test_compiled_equals_numpy(arm, configs, rng):
             pose_of(arm, configs),  # reachable
             np.c_[rng.uniform(-700, 700, (N, 3)), rng.uniform(-np.pi, np.pi, (N, 3))],  # mostly not
             thesis_poses(),
-            [[0.0, 0.0, 200.0, 0.0, 0.0, 0.0], [1e9, 0.0, 0.0, 0.0, 0.0, 0.0]],  # 1e9: the limit
+            [[0.0, 0.0, 200.0, 0.0, 0.0, 0.0], [1e30, 0.0, 0.0, 0.0, 0.0, 0.0]],
         ]
     )
     ref, got = arm.solve(pose), arm.solve(pose, backend="compiled")

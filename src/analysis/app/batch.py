@@ -123,8 +123,8 @@ def _range_problems(
     for i in np.flatnonzero(bad.any(axis=1)):
         j = int(np.flatnonzero(bad[i])[0])
         message = (
-            f"{mm_cols[j]} = {values[i, mm][j]:g} mm is beyond +-{validate.MAX_COORD_MM:g} mm, "
-            "the largest coordinate the code supports"
+            f"{mm_cols[j]} = {values[i, mm][j]:g} mm is beyond +-{validate.MAX_COORD_MM:.4g} mm, "
+            "the largest coordinate the code supports (a PLC REAL)"
         )
         out[i] = str(InputError(message, path, lines[i], mm_cols[j]))
     return out

@@ -736,7 +736,7 @@ def build_parser() -> argparse.ArgumentParser:
         epilog=EPILOG,
         formatter_class=_Help,
     )
-    parser.add_argument("--version", action="version", version=f"%(prog)s {_version()}")
+    parser.add_argument("--version", action=_VersionAction, help="show the version and exit")
     sub = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
 
     _add_fk(sub)
@@ -748,6 +748,17 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+class _VersionAction(argparse.Action):
+    """``--version``: the installed package's version, looked up only when asked for."""
+
+    def __init__(self, option_strings, dest=argparse.SUPPRESS, default=argparse.SUPPRESS,
+                 help=None):  # fmt: skip
+        super().__init__(option_strings, dest, nargs=0, default=default, help=help)
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        parser.exit(0, f"{parser.prog} {_version()}\n")
+
+
 def _version() -> str:
     """The installed package's version (pyproject.toml)."""
     from importlib import metadata
@@ -756,6 +767,16 @@ def _version() -> str:
         return metadata.version("analysis")
     except metadata.PackageNotFoundError:  # pragma: no cover - run from a source tree
         return "unknown (not installed)"
+
+
+_PARSER: list = []
+
+
+def _parser() -> argparse.ArgumentParser:
+    """The parser, built once per process (parsing keeps no state in it)."""
+    if not _PARSER:
+        _PARSER.append(build_parser())
+    return _PARSER[0]
 
 
 def _error_doc(exc: Exception, args) -> dict:
@@ -815,8 +836,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; returns the exit status."""
     import warnings
 
-    parser = build_parser()
-    args = parser.parse_args(list(sys.argv[1:] if argv is None else argv))
+    args = _parser().parse_args(list(sys.argv[1:] if argv is None else argv))
     old = _install_signals()
     try:
         with warnings.catch_warnings():

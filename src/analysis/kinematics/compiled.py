@@ -451,10 +451,11 @@ def _storage(view: np.ndarray, shape: tuple) -> np.ndarray:
 
 
 def input_limits(units: Sequence[str]) -> np.ndarray:
-    """Largest |input| per column (:mod:`analysis.validate`): coordinates [mm], angles [rad]."""
-    from analysis.validate import MAX_ANGLE_RAD, MAX_COORD_MM
+    """Largest |input| per column (:mod:`analysis.validate`): coordinates [mm]; angles [rad]
+    any finite value."""
+    from analysis.validate import MAX_COORD_MM
 
-    return np.array([MAX_ANGLE_RAD if u == "rad" else MAX_COORD_MM for u in units])
+    return np.array([np.finfo(np.float64).max if u == "rad" else MAX_COORD_MM for u in units])
 
 
 def solve(arm, p: npt.NDArray[np.float64], names, *, tol: float, limits, out=None):
