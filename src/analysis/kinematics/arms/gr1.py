@@ -237,15 +237,9 @@ def ik(
             (Status.INSIDE_REACH, m.gt(within, tol)),
             (Status.DEGENERATE, m.le(d, axis_tol)),
         ]
-        den = 2.0 * a2 * a3
-        c3 = m.let(f"c3_{side}", m.clip((d2 - (a2 * a2 + a3 * a3)) / den, -1.0, 1.0))
-        # sin(theta3) >= 0 from 1 -/+ c3 in factored form, not from c3: with a2 = a3 the wrist
-        # near the shoulder has c3 near -1, where 1 + c3 computed from c3 keeps half the
-        # digits and an error in theta3 moves the wrist by a3 times it
-        om3 = m.clip((outer - d) * (outer + d) / den, 0.0, 2.0)  # 1 - c3
-        op3 = m.clip((d - inner) * (d + inner) / den, 0.0, 2.0)  # 1 + c3
-        s3 = m.sqrt(om3 * op3)
-        t3 = m.let(f"acos_c3_{side}", m.atan2(s3, c3))  # acos(c3), in [0, pi]
+        c3 = m.let(f"c3_{side}", m.clip((d2 - (a2 * a2 + a3 * a3)) / (2.0 * a2 * a3), -1.0, 1.0))
+        t3 = m.let(f"acos_c3_{side}", m.acos(c3))  # [0, pi]
+        s3 = m.sqrt((1.0 - c3) * (1.0 + c3))  # sin(acos c3) >= 0
         m.section(f"{side}: theta2 = atan2(z, r) -/+ atan2(a3 s3, a2 + a3 c3)")
         base = m.let(f"atan2_zr_{side}", m.atan2(z, r))
         elbow = m.let(f"atan2_elbow_{side}", m.atan2(a3 * s3, a2 + a3 * c3))
