@@ -62,7 +62,8 @@ class EntryPoint:
     arms: tuple[str, ...] = ARMS
     kind: Callable[[str, int], str] = lambda arm, slot: "mm"
     """What the slot's number is: "mm" (a coordinate), "len" (a length of the arm), "deg",
-    "rad" (a joint or waist angle), "ang" (an orientation angle in radians), "tol", "ppr"."""
+    "jdeg" (a joint angle in degrees), "rad" (a joint or waist angle), "ang" (an orientation
+    angle in radians), "tol", "ppr"."""
     cost: int = 1
     """Relative cost of one run (examples are divided by it to keep the suite's budget)."""
 
@@ -158,7 +159,7 @@ def _cli_ik(arm: str, slot: int, value) -> Outcome:
     return cli("ik", *values, "--arm", arm, "--json")
 
 
-@entry_point("cli fk DEG", "text", lambda arm: arm_of(arm).n_joints, kind=lambda a, s: "deg")
+@entry_point("cli fk DEG", "text", lambda arm: arm_of(arm).n_joints, kind=lambda a, s: "jdeg")
 def _cli_fk(arm: str, slot: int, value) -> Outcome:
     values = ["10"] * arm_of(arm).n_joints
     values[slot] = _text(value)

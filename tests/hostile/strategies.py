@@ -71,6 +71,7 @@ def beyond(kind: str):
     limit = {
         "mm": validate.MAX_COORD_MM,
         "len": validate.MAX_LENGTH_MM,
+        "jdeg": validate.MAX_JOINT_DEG,
         "rad": validate.MAX_ANGLE_RAD,
         "tol": validate.MAX_TOL_MM,
         "ppr": validate.MAX_PULSES_PER_REV,

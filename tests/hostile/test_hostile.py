@@ -99,7 +99,7 @@ def _mentions(message: str, text: str) -> bool:
 def test_hostile_text_is_refused_in_one_line_naming_it(entry, arm):
     ep = REGISTRY[entry]
 
-    @examples(12, ep.cost)
+    @examples(10, ep.cost)
     @given(slot=st.integers(0, ep.slots(arm) - 1), text=hs.hostile_texts())
     def prop(slot, text):
         out = ep.run(arm, slot, text)
@@ -116,7 +116,7 @@ def test_hostile_text_is_refused_in_one_line_naming_it(entry, arm):
 def test_hostile_api_values_raise_one_line_value_errors(entry, arm):
     ep = REGISTRY[entry]
 
-    @examples(15, ep.cost)
+    @examples(12, ep.cost)
     @given(slot=st.integers(0, ep.slots(arm) - 1), value=hs.hostile_api_values())
     def prop(slot, value):
         out = ep.run(arm, slot, value)  # a TypeError or OverflowError fails here
@@ -153,6 +153,7 @@ def test_command_line_and_csv_read_a_number_alike(text):
 def in_range(kind: str):
     limit = {"mm": validate.MAX_COORD_MM, "len": validate.MAX_LENGTH_MM,
              "rad": validate.MAX_ANGLE_RAD, "tol": validate.MAX_TOL_MM, "ang": 1e308,
+             "jdeg": validate.MAX_JOINT_DEG,
              "deg": 1e308, "ppr": validate.MAX_PULSES_PER_REV}[kind]  # fmt: skip
     lo = 0.0 if kind in ("tol", "ppr") else -limit
     edge = st.sampled_from([lo, limit, 0.0, 5e-324, -5e-324, limit * (1 - 1e-16)])
@@ -168,7 +169,7 @@ def in_range(kind: str):
 def test_values_in_range_give_finite_results_or_one_line(entry, arm):
     ep = REGISTRY[entry]
 
-    @examples(12, ep.cost)
+    @examples(10, ep.cost)
     @given(data=st.data())
     def prop(data):
         slot = data.draw(st.integers(0, ep.slots(arm) - 1))
@@ -188,7 +189,7 @@ def test_values_in_range_give_finite_results_or_one_line(entry, arm):
 
 # --- 5. beyond the range: refused, naming the limit -------------------------------------------
 LIMIT_TEXT = {"mm": ("3.403e+38",), "len": ("1e+06",), "rad": ("62.83", "3600 deg"), "tol": ("1",),
-              "ppr": ("1e+07", "10,000,000")}  # fmt: skip
+              "ppr": ("1e+07", "10,000,000"), "jdeg": ("3600 deg",)}  # fmt: skip
 
 
 @pytest.mark.parametrize(("entry", "arm"), cases())
@@ -199,7 +200,7 @@ def test_values_beyond_the_range_are_refused_naming_the_limit(entry, arm):
     if not kinds:
         pytest.skip(f"{entry}: angles in degrees have no range (reduced exactly)")
 
-    @examples(8, ep.cost)
+    @examples(6, ep.cost)
     @given(data=st.data())
     def prop(data):
         slot = data.draw(st.sampled_from(
@@ -292,7 +293,7 @@ def test_backends_agree_on_every_status_at_the_edges(arm_name):
     step = st.sampled_from([0.0, tol, -tol, tol * (1 + 1e-9), tol * (1 - 1e-9), 1e-12, -1e-12,
                             1e-3, -1e-3, 5e-7])  # fmt: skip
 
-    @examples(25)
+    @examples(15)
     @given(seed=st.integers(0, 2**32 - 1), deltas=st.lists(step, min_size=16, max_size=16))
     def prop(seed, deltas):
         p = edge_targets(arm_name, np.random.default_rng(seed), np.array(deltas))
@@ -361,7 +362,7 @@ cell_text = st.text(st.characters(exclude_categories=("Cs",), exclude_characters
                     max_size=30)  # fmt: skip
 
 
-@examples(20)
+@examples(15)
 @given(
     extra=st.lists(st.tuples(st.sampled_from(["status", "input_status", "input_status_2",
                                               "branch", "reason", "note", " c1", "theta1_deg",
