@@ -447,6 +447,8 @@ def _layout(path: Path, MemoryMap):
         return MemoryMap.from_json(path)
     except (KeyError, TypeError, AttributeError, IndexError) as exc:
         raise UsageError(f"{path}: not a memory map ({type(exc).__name__}: {exc})") from None
+    except ValueError as exc:
+        raise UsageError(f"{path}: {exc}" if str(path) not in str(exc) else str(exc)) from None
 
 
 # --- errata ------------------------------------------------------------------------------------
@@ -756,7 +758,8 @@ class _VersionAction(argparse.Action):
         super().__init__(option_strings, dest, nargs=0, default=default, help=help)
 
     def __call__(self, parser, namespace, values, option_string=None):
-        parser.exit(0, f"{parser.prog} {_version()}\n")
+        print(f"{parser.prog} {_version()}")
+        parser.exit(0)
 
 
 def _version() -> str:
