@@ -56,7 +56,9 @@ def _occupied_port(self, ip):
 LocalPortCache.find_available_port = _occupied_port
 '''
 
-STDERR_CELL = "import sys\nprint('Glyph 26080 (\\N{CJK UNIFIED IDEOGRAPH-65E0}) missing', file=sys.stderr)"
+STDERR_CELL = (
+    "import sys\nprint('Glyph 26080 (\\N{CJK UNIFIED IDEOGRAPH-65E0}) missing', file=sys.stderr)"
+)
 STDERR_TEXT = "Glyph 26080 (\u65e0) missing"
 
 # A kernel launcher that crashes (writing a line to stderr) while the marker file is missing,

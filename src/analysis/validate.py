@@ -177,7 +177,7 @@ def parse_real(text: str, name: str = "") -> float:
     >>> parse_real("1_000", "x_mm")
     Traceback (most recent call last):
     ...
-    analysis.validate.InvalidValue: x_mm = '1_000' is not a number (no underscores: write 1000, not 1_000)
+    analysis.validate.InvalidValue: x_mm = '1_000' is not a number (no underscores: ...)
     """
     problem = number_problem(text)
     if problem:
@@ -224,7 +224,7 @@ def real(
     >>> real(1e7, "L2", "mm", hi=1e6, what="the largest length the code supports")
     Traceback (most recent call last):
     ...
-    analysis.validate.InvalidValue: L2 = 1e+07 mm is beyond 1e+06 mm, the largest length the code supports
+    analysis.validate.InvalidValue: L2 = 1e+07 mm is beyond 1e+06 mm, the largest length ...
     """
     if isinstance(value, np.ndarray) and value.ndim == 0 and not isinstance(
         value, np.ma.MaskedArray
@@ -322,7 +322,8 @@ def real_array(
         what = {"b": "boolean", "c": "complex", "U": "text", "S": "bytes", "M": "dates",
                 "m": "time spans", "V": "records"}.get(kind, arr.dtype.name)  # fmt: skip
         raise refuse(f"it holds {what}, not real numbers (dtype {arr.dtype})")
-    if finite and arr.size and not np.isfinite(arr.sum()):  # one pass; an overflowing sum is checked below
+    # one pass (an overflowing sum is checked below)
+    if finite and arr.size and not np.isfinite(arr.sum()):
         bad = ~np.isfinite(arr)
         if bad.any():
             idx = tuple(int(i) for i in np.argwhere(bad)[0])

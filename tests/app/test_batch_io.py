@@ -111,7 +111,7 @@ def _wait_for_tmp(directory: Path, proc: subprocess.Popen, timeout: float = 300)
 @pytest.mark.parametrize(
     ("sig", "status", "word"),
     [(signal.SIGINT, 130, "interrupted (SIGINT)"), (signal.SIGTERM, 143, "terminated (SIGTERM)"),
-     (signal.SIGHUP, 129, "terminated (SIGHUP)")],  # fmt: skip
+     (signal.SIGHUP, 129, "terminated (SIGHUP)")],
 )
 def test_a_signal_removes_the_temporary_file_and_ends_in_one_line(tmp_path, sig, status, word):
     src = _slow_input(tmp_path / "in.csv")

@@ -136,7 +136,7 @@ def test_json_is_valid_and_warnings_stay_off_stdout(capsys):
         (lambda a: a.solve(np.array([100 + 1j, 100, 600])), "holds complex"),
         (lambda a: a.solve(np.ma.masked_array([100.0, 100, 600], [0, 1, 0])), "masked"),
         (lambda a: Arm(a.params.with_(L2=1e200, L3=1e200)).solve([[100, 100, 600]]),
-         r"L2 = 1e\+200 mm is beyond 1e\+06 mm, the largest length"),  # fmt: skip
+         r"L2 = 1e\+200 mm is beyond 1e\+06 mm, the largest length"),
     ],
 )
 def test_the_api_raises_value_errors_naming_the_value(call, needle):
@@ -148,12 +148,13 @@ def test_arm_descriptions_with_holes_are_one_line_errors(tmp_path, capsys):
     base = (data_dir() / "arms" / "palletizer.toml").read_text()
     cases = {
         "no pulses_per_rev": (base.replace('pulses_per_rev = { value = 3200, status = "assumed" }',
-                                           "", 1), "needs pulses_per_rev"),  # fmt: skip
+                                           "", 1), "needs pulses_per_rev"),
         "no joint name": (base.replace('name = "theta1"\n', "", 1), "needs a name"),
         "a list for a number": (base.replace("alpha_deg = -90", "alpha_deg = [-90]", 1),
-                                "is not a real number"),  # fmt: skip
-        "a string for a limit": (base.replace("limits_deg = [-180, 180]",
-                                              'limits_deg = ["-180", 180]', 1), "is text"),  # fmt: skip
+                                "is not a real number"),
+        "a string for a limit": (
+            base.replace("limits_deg = [-180, 180]", 'limits_deg = ["-180", 180]', 1), "is text"
+        ),
     }
     (tmp_path / "arms").mkdir()
     for name, (text, needle) in cases.items():

@@ -497,7 +497,7 @@ def test_header_only_gives_empty_columns(tmp_path):
             2,
             "x_mm",
         ),
-        ("x_mm,y_mm,z_mm\n1,2,1e999\n", r"line 2 column z_mm: '1e999' is beyond the float", 2, "z_mm"),
+        ("x_mm,y_mm,z_mm\n1,2,1e999\n", r"line 2 column z_mm: '1e999' is beyond", 2, "z_mm"),
         (
             'x_mm,y_mm,z_mm\n1,2,3\n4,5,"6\n7,8,9\n',
             r"line 3: quoted field not closed before the end",

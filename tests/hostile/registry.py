@@ -294,7 +294,7 @@ def _toml_value(arm: str, slot: int, value) -> Outcome:
         path.write_text(text, encoding="utf-8")
         for csv_file in data_dir().glob("*.csv"):  # the tables a description may read
             (Path(tmp) / csv_file.name).write_bytes(csv_file.read_bytes())
-        with _captured() as (out, err, warned):
+        with _captured() as (_out, _err, warned):
             try:
                 from analysis.kinematics.arm import Arm, Params
                 from analysis.kinematics.description import load_description
@@ -310,7 +310,7 @@ def _toml_value(arm: str, slot: int, value) -> Outcome:
 # the Python API
 # --------------------------------------------------------------------------------------------
 def api(fn: Callable[[], object]) -> Outcome:
-    with _captured() as (out, err, warned):
+    with _captured() as (_out, _err, warned):
         try:
             result = fn()
         except ValueError as exc:

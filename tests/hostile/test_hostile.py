@@ -204,7 +204,7 @@ def test_values_beyond_the_range_are_refused_naming_the_limit(entry, arm):
     @given(data=st.data())
     def prop(data):
         slot = data.draw(st.sampled_from(
-            [s for s in range(ep.slots(arm)) if ep.kind(arm, s) not in ("deg", "ang")]))  # fmt: skip
+            [s for s in range(ep.slots(arm)) if ep.kind(arm, s) not in ("deg", "ang")]))
         kind = ep.kind(arm, slot)
         value = data.draw(hs.beyond(kind))
         if kind == "tol":
@@ -366,10 +366,10 @@ cell_text = st.text(st.characters(exclude_categories=("Cs",), exclude_characters
 @given(
     extra=st.lists(st.tuples(st.sampled_from(["status", "input_status", "input_status_2",
                                               "branch", "reason", "note", " c1", "theta1_deg",
-                                              "c1"]), cell_text),  # fmt: skip
+                                              "c1"]), cell_text),
                    min_size=0, max_size=4, unique_by=lambda t: t[0].strip()),
     digits=st.sampled_from(["100.12345678901234", "1e2", "+100", "100.000000000000000001",
-                            " 100 ", "0100"]),  # fmt: skip
+                            " 100 ", "0100"]),
     branch=st.sampled_from(["front-up", "all"]),
 )
 def test_batch_echoes_every_cell_as_given_and_never_merges_columns(extra, digits, branch):

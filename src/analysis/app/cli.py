@@ -513,7 +513,7 @@ def _cmd_arms(args: argparse.Namespace) -> int:
                         for k, v in (raw.get("parameters") or {}).items()
                         if isinstance(v, dict) and isinstance(v.get("value"), (int, float))
                         and not isinstance(v.get("value"), bool) and math.isfinite(v["value"])
-                    },  # fmt: skip
+                    },
                 }
             )
             continue

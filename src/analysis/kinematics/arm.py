@@ -20,7 +20,6 @@ Angles in radians, lengths in mm; joint arrays have shape ``(..., n)``, targets
 
 from __future__ import annotations
 
-import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property

@@ -93,7 +93,9 @@ def _load_table3(path: Path, mtime_ns: int, size: int) -> Params:
     rows = []
     for line, cells in body:
         if len(cells) != len(header):
-            raise ValueError(f"{path} line {line}: {len(cells)} fields, the header has {len(header)}")
+            raise ValueError(
+                f"{path} line {line}: {len(cells)} fields, the header has {len(header)}"
+            )
         raw = dict(zip(header, cells, strict=True))
         row = {"link": raw["link"]}
         for col in TABLE3_COLUMNS[1:]:
