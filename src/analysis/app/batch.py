@@ -237,8 +237,8 @@ def solve_csv(
                 if flat_ok.any():
                     pulses[flat_ok] = angles_to_pulses(flat[flat_ok], arm.params.pulses_per_rev)
                 for j in range(nj):
-                    counts = zip(pulses[:, j].tolist(), flat_ok.tolist(), strict=True)
-                    out.append([str(c) if good else "" for c, good in counts])
+                    given = zip(pulses[:, j].tolist(), flat_ok.tolist(), strict=True)
+                    out.append([str(c) if good else "" for c, good in given])
                 out.append(status_text[row_status].tolist())
                 out.append([r or "" for r in reason for _ in range(nb)])
                 writer.writerows(zip(*out, strict=True))
