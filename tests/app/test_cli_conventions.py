@@ -152,6 +152,8 @@ def test_arm_descriptions_with_holes_are_one_line_errors(tmp_path, capsys):
         "no joint name": (base.replace('name = "theta1"\n', "", 1), "needs a name"),
         "a list for a number": (base.replace("alpha_deg = -90", "alpha_deg = [-90]", 1),
                                 "is not a real number"),
+        "a list for a length": (base.replace("L1 = { value = 200.0", "L1 = { value = [200.0]", 1),
+                                "[200.0] is not a finite number"),
         "a string for a limit": (
             base.replace("limits_deg = [-180, 180]", 'limits_deg = ["-180", 180]', 1), "is text"
         ),

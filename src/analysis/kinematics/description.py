@@ -187,6 +187,8 @@ def _number(spec, base: Path, tables: dict, where: str) -> float:
         if "value" not in spec:
             raise ValueError(f"{where}: needs a value (a number, or a table to read it from)")
         spec = spec["value"]
+    if isinstance(spec, (list, dict, str)):  # not a number at all (the words used before)
+        raise ValueError(f"{where}: {spec!r} is not a finite number")
     return validate.real(spec, where)
 
 
