@@ -238,8 +238,8 @@ def _cmd_ik(args: argparse.Namespace) -> int:
         )
         progress.done()
         text = (
-            f"{summary['targets']} targets, {summary['solved']} solved, "
-            + ", ".join(f"{n} {s}" for s, n in summary["status"].items() if s != "ok")
+            f"{summary['targets']} targets, {summary['solved']} solved"
+            + "".join(f", {n} {s}" for s, n in summary["status"].items() if s != "ok")
             + f" -> {summary['output']}"
         )
         if args.json:
