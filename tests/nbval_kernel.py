@@ -36,7 +36,10 @@ What this plugin changes
 3. The kernel's stderr goes to ``<log dir>/<notebook path with / as __>.stderr.log``
    (``--nbval-kernel-log-dir``, default ``build/nbval-kernel-logs`` under the rootdir). The
    path, and the last lines of the log, are added to the report of every failing cell, and a
-   start that fails for good names the path in its error.
+   start that fails for good names the path in its error. The report of a failing cell also
+   quotes the text the cell itself wrote to stderr (section "cell stderr"): nbval names only
+   the key of an unexpected output ("Unexpected output fields ...: {'stderr'}"), not what it
+   says.
 4. ``--nbval-kernel-preload m1,m2``: kernels are forked from a server that imported those
    modules once (``tests/kernel_forkserver.py``).
 5. ``--nbval-kernel-env NAME=VALUE`` (repeatable) sets a variable for the kernels (and their
@@ -486,6 +489,16 @@ def pytest_unconfigure(config: pytest.Config) -> None:
         _state = None
 
 
+def cell_stderr(outputs: list[Any] | None) -> str:
+    """The text a cell wrote to stderr, from nbval's record of its outputs (``test_outputs``:
+    stream outputs with ``name`` and ``text``), in order; "" if none."""
+    return "".join(
+        str(out.get("text", ""))
+        for out in outputs or ()
+        if out.get("output_type") == "stream" and out.get("name") == "stderr"
+    )
+
+
 def _notebook_of(item: pytest.Item) -> Path | None:
     from nbval.plugin import IPyNbFile
 
@@ -507,9 +520,17 @@ def pytest_runtest_setup(item: pytest.Item) -> Generator[None, Any, Any]:
 def pytest_runtest_makereport(
     item: pytest.Item, call: pytest.CallInfo[None]
 ) -> Generator[None, pytest.TestReport, pytest.TestReport]:
-    """Add the kernel's stderr log (path and last lines) to a failing cell's report."""
+    """Add the cell's own stderr text and the kernel's stderr log (path and last lines) to a
+    failing cell's report.
+
+    nbval reports an unexpected stderr output only by its key ("Unexpected output fields from
+    running code: {'stderr'}"); the text (a warning, say) is what says why, so it is quoted."""
     report = yield
     notebook = _notebook_of(item)
+    if report.failed and notebook is not None:
+        text = cell_stderr(getattr(item, "test_outputs", None))
+        if text:
+            report.sections.append(("cell stderr", text))
     if report.failed and notebook is not None and _state is not None:
         path = _state.logs.get(notebook.resolve())
         if path is not None:

@@ -56,6 +56,11 @@ def _occupied_port(self, ip):
 LocalPortCache.find_available_port = _occupied_port
 '''
 
+STDERR_CELL = (
+    "import sys\nprint('Glyph 26080 (\\N{CJK UNIFIED IDEOGRAPH-65E0}) missing', file=sys.stderr)"
+)
+STDERR_TEXT = "Glyph 26080 (\u65e0) missing"
+
 # A kernel launcher that crashes (writing a line to stderr) while the marker file is missing,
 # creating it; with the marker present it runs ipykernel. "always" crashes every time.
 CRASHING_KERNEL = """
@@ -193,6 +198,8 @@ def workdir(tmp_path_factory: pytest.TempPathFactory) -> Path:
         (FORK_CELL, f"True\nTrue True\n{KERNEL_BACKEND}\n"),
     ]
     _notebook(tmp / "ipc.ipynb", "python3", ipc)
+    # a cell whose stored output has no stderr writes to it: the failure report quotes the text
+    _notebook(tmp / "stderr.ipynb", "python3", [(STDERR_CELL, "")])
     _notebook(tmp / "once.ipynb", "crash_once", [two])
     _notebook(tmp / "always.ipynb", "crash_always", [two])
     return tmp
@@ -211,7 +218,7 @@ def sessions(workdir: Path) -> tuple[Session, Session]:
     The TCP session's kernel never answers, and nbval waits out the startup timeout before
     reporting the death: 5 s keeps it short (the plugin's session keeps 30 s for real starts)."""
     tcp = _start(workdir, "tcp", ["tcp.ipynb"], ["port_clash"], timeout=5)
-    notebooks = ["ipc.ipynb", "once.ipynb", "always.ipynb"]
+    notebooks = ["ipc.ipynb", "once.ipynb", "always.ipynb", "stderr.ipynb"]
     ipc = _start(workdir, "ipc", notebooks, ["port_clash", "nbval_kernel"])
     return _finish(workdir, "tcp", tcp), _finish(workdir, "ipc", ipc)
 
@@ -241,6 +248,11 @@ def test_a_taken_port_kills_the_tcp_kernel_and_the_plugin_survives_it(
     # the crashing kernels' specs are not plain ipykernel ones: they start as processes
     assert "kernel_forkserver" not in (ipc_session.log_dir / "once.ipynb.stderr.log").read_text()
     assert ipc_session.ports_chosen == 0, "the plugin's path asked jupyter_client for TCP ports"
+
+    # An unexpected stderr output: nbval names only its key; the report quotes its text.
+    assert ipc_session.outcomes["stderr.ipynb::Cell 0"] == "failure", out
+    assert "Unexpected output fields from running code: {'stderr'}" in out, out
+    assert "cell stderr" in out and STDERR_TEXT in out, out
 
     # A kernel that dies at its first start is started again.
     assert ipc_session.outcomes["once.ipynb::Cell 0"] == "passed", out

@@ -123,7 +123,7 @@ def test_batch_table4_all_branches(tmp_path, capsys, arm):
     assert code == 0, err
     df = pd.read_csv(out_csv)
     assert len(df) == 10 * 4
-    assert list(df.columns[-9:]) == [
+    assert list(df.columns[-10:]) == [
         "branch",
         "reachable",
         "theta1_deg",
@@ -133,6 +133,7 @@ def test_batch_table4_all_branches(tmp_path, capsys, arm):
         "c2",
         "c3",
         "status",
+        "reason",
     ]
     # the input's own printed-angle columns are kept, renamed, not overwritten
     assert "input_theta2_deg" in df.columns
@@ -144,8 +145,8 @@ def test_batch_table4_all_branches(tmp_path, capsys, arm):
     # every batch solution lands on its target (FK independent of the CSV path)
     p = arm.fk(np.radians(ok[["theta1_deg", "theta2_deg", "theta3_deg"]].to_numpy()))
     np.testing.assert_allclose(
-        p, ok[["x_mm", "y_mm", "z_mm"]].to_numpy(), atol=1e-6
-    )  # 10 significant digits in the CSV
+        p, ok[["x_mm", "y_mm", "z_mm"]].to_numpy(), atol=1e-9
+    )  # the angles in full (the shortest text of each float)
     fu = ok[ok["branch"] == "front-up"].set_index("row")
     assert fu.loc[1, ["c1", "c2", "c3"]].tolist() == [500, 113, -1724]
 
@@ -164,12 +165,32 @@ def test_batch_table4_all_branches(tmp_path, capsys, arm):
     ],
 )
 def test_batch_bad_csv_exit_2(tmp_path, capsys, content, needle):
+    """--strict: the first bad row stops the batch, naming line and column; nothing written."""
     src = tmp_path / "in.csv"
     src.write_text(content)
-    code, _, err = run(capsys, "ik", "--input", str(src), "--output", str(tmp_path / "o.csv"))
+    argv = ("ik", "--input", str(src), "--output", str(tmp_path / "o.csv"), "--strict")
+    code, _, err = run(capsys, *argv)
     assert code == 2
     assert needle in err and err.count("\n") == 1
     assert not (tmp_path / "o.csv").exists()
+
+
+def test_batch_goes_on_past_a_bad_row(tmp_path, capsys):
+    """Without --strict a bad row is status 'invalid' with its reason; the others solve."""
+    src = tmp_path / "in.csv"
+    src.write_text("x_mm,y_mm,z_mm,note\n100,100,600,a\n1,2,abc,b\n4,,6,c\n1e300,0,0,d\n")
+    out = tmp_path / "o.csv"
+    code, _, err = run(capsys, "ik", "--input", str(src), "--output", str(out))
+    assert code == 0, err
+    assert "4 targets, 1 solved, 3 invalid" in err
+    df = pd.read_csv(out, dtype=str, keep_default_na=False)
+    assert df["status"].tolist() == ["ok", "invalid", "invalid", "invalid"]
+    assert df["reason"][0] == ""
+    assert "line 3 column z_mm: 'abc' is not a number" in df["reason"][1]
+    assert "line 4 column y_mm: empty cell" in df["reason"][2]
+    assert "line 5 column x_mm: x_mm = 1e+300 mm is beyond +-3.403e+38 mm" in df["reason"][3]
+    assert df["z_mm"].tolist() == ["600", "abc", "6", "0"]  # echoed as given
+    assert df["note"].tolist() == ["a", "b", "c", "d"]
 
 
 def test_batch_missing_file(tmp_path, capsys):

@@ -33,7 +33,9 @@ def pytest_collection_modifyitems(items):
 @pytest.fixture(scope="session")
 def chromium() -> str:
     path = os.environ.get("ANALYSIS_CHROMIUM", CHROMIUM)
-    if not Path(path).exists():
+    # executable, not merely present: a machine without Chromium may still have the path (an
+    # empty unreadable file is how ../shared/tools/bare-machine hides it)
+    if not (Path(path).is_file() and os.access(path, os.X_OK) and Path(path).stat().st_size):
         pytest.skip(
             f"no Chromium at {path}: the browser tests need Debian's chromium "
             "(apt-get install chromium; .ci/run installs it)"

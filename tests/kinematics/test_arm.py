@@ -203,7 +203,7 @@ def test_ik_of_fk_batch(arm, rng):
 
 
 @given(
-    L1=st.floats(0.0, 2000.0),
+    L1=st.just(0.0) | st.floats(1e-3, 2000.0),  # a non-zero length >= 1 micrometre (validate)
     L2=st.floats(1.0, 2000.0),
     L3=st.floats(1.0, 2000.0),
     t1=st.floats(-np.pi, np.pi),
@@ -533,7 +533,11 @@ def test_solve_shapes(arm, rng):
         ([100.0, 100.0, -np.inf], r"non-finite coordinate: \[100.0, 100.0, -inf\]"),
         ("abc", r"target 'abc' is not numeric"),
         (["100", "x", "600"], r"target \['100', 'x', '600'\] is not numeric"),
-        ([100.0, None, 600.0], r"non-finite coordinate: \[100.0, nan, 600.0\]"),  # None -> NaN
+        ([100.0, None, 600.0], r"is not numeric: None \(NoneType\) is not a real number"),
+        ([100.0 + 1j, 100.0, 600.0], r"is not numeric: it holds complex"),
+        (np.ma.masked_array([1.0, 2.0, 3.0], [0, 1, 0]), r"a masked array is refused"),
+        ([10**400, 0, 0], r"beyond the float range"),
+        ([True, 100.0, 600.0], r"a boolean is not a number"),
         ([100.0, 100.0], r"shape \(2,\); expected \(\.\.\., 3\)"),
         ([1.0, 2.0, 3.0, 4.0], r"shape \(4,\); expected \(\.\.\., 3\)"),
         (600.0, r"shape \(\); expected \(\.\.\., 3\)"),

@@ -1,38 +1,60 @@
-"""Batch inverse kinematics from CSV to CSV, streamed in chunks with constant memory.
+"""Batch inverse kinematics from CSV to CSV, streamed in chunks with bounded memory.
 
 ``ik --input IN.csv --output OUT.csv``: the input (columns :func:`input_columns`: x_mm,
-y_mm, z_mm; for a pose also its angles in degrees) is read strictly
-(:func:`analysis.app.safe_io.iter_table_chunks`: a missing, duplicate or ragged column is an
+y_mm, z_mm; for a pose also its angles in degrees; any other columns too) is read strictly
+(:func:`analysis.app.safe_io.iter_record_chunks`: a missing, duplicate or ragged column is an
 error naming its true line), solved chunk by chunk, and written to a temporary file that
 replaces the output only when everything succeeded (:func:`~analysis.app.safe_io.
-atomic_writer`); the output may not be the input. Memory does not grow with the file:
-a chunk of targets is read, solved and written before the next is read.
+atomic_writer`; ``-`` writes standard output as it goes); the output may not be the input,
+nor a device or a FIFO. Memory is bounded by one chunk whatever the file size and the cell
+widths: at most ``chunk_rows`` records and about 32 MB of cell text
+(:data:`analysis.app.safe_io._read.CHUNK_BYTES`), read, solved and written before the next.
 
-Output: every input column (renamed ``input_<name>`` where it clashes with an output
-column), then ``branch, reachable, theta1_deg .. thetan_deg, c1 .. cn, status``, one row per
-target and branch, targets in input order. ``reachable`` is true where the row has a
-solution; ``status`` says why not (ok, out-of-reach, inside-reach, base-axis, joint-limits,
-degenerate). Unsolved rows leave angles and pulses empty, never "nan".
+Nothing of the input is lost: every input column is echoed byte for byte (the cell text as
+read, never re-formatted: ``100.12345678901234`` stays that), under its own name; a name that
+clashes with an output column (or with a name given to another clash) gets the prefix
+``input_`` and, if that is taken too, a number: ``status`` -> ``input_status``,
+``input_status`` -> ``input_status_2``, never one column for two.
+
+Output: the input columns, then ``branch, reachable, theta1_deg .. thetan_deg, c1 .. cn,
+status, reason``, one row per target and branch, targets in input order. ``reachable`` is
+true where the row has a solution; ``status`` says why not (ok, out-of-reach, inside-reach,
+base-axis, joint-limits, degenerate, orientation, invalid). Unsolved rows leave angles and
+pulses empty, never "nan". Angles are written in full (the shortest text that reads back as
+the same float). A row whose numbers are bad (not a number by :mod:`analysis.validate`'s
+rules, or outside its range) is not solved: its status is ``invalid`` and ``reason`` names
+the line, the column, the value and the limit; the batch goes on (``strict=True``: it stops
+at the first, and the output is not written).
 """
 
 from __future__ import annotations
 
+import csv
 from collections import Counter
+from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
 
-from analysis.app.safe_io import atomic_writer, check_paths, iter_table_chunks
+from analysis import validate
+from analysis.app.safe_io import InputError, check_paths, iter_record_chunks, output_stream
 from analysis.kinematics.arm import Arm
 from analysis.kinematics.pulses import angles_to_pulses
 from analysis.kinematics.status import STATUS_TEXT, Status
 
-__all__ = ["INPUT_COLUMNS", "WRITE_ROWS", "input_columns", "output_columns", "solve_csv"]
+__all__ = [
+    "INPUT_COLUMNS",
+    "WRITE_ROWS",
+    "input_columns",
+    "output_columns",
+    "output_header",
+    "solve_csv",
+]
 
 INPUT_COLUMNS = ("x_mm", "y_mm", "z_mm")
 """The columns of a point target (every arm's first three inputs, px, py, pz)."""
 WRITE_ROWS = 25_000
-"""Targets formatted at a time (bounds the memory of the text being written)."""
+"""Targets solved and formatted at a time (bounds the memory of the text being written)."""
 
 
 def input_columns(arm: Arm) -> tuple[str, ...]:
@@ -59,89 +81,169 @@ def output_columns(arm: Arm) -> list[str]:
         *(f"theta{j + 1}_deg" for j in range(n)),
         *(f"c{j + 1}" for j in range(n)),
         "status",
+        "reason",
     ]
 
 
-def _frame(arm, names, cols, header, sol):
-    """One chunk's output rows as a DataFrame (pandas formats the CSV text)."""
-    import pandas as pd
+def output_header(header: list[str], outputs: list[str]) -> list[str]:
+    """The output's header: the input names as written, those that clash renamed.
 
-    n, nb = sol.ok.shape
-    nj = arm.n_joints
-    out_cols = output_columns(arm)
-    data = {}
-    for k in header:
-        v = cols[k]
-        name = f"input_{k}" if k in out_cols else k
-        data[name] = np.repeat(v, nb)
-    ok = sol.ok.reshape(n * nb)
-    theta = sol.theta.reshape(n * nb, nj)
-    pulses = np.zeros((n * nb, nj), dtype=np.int64)
-    if ok.any():
-        pulses[ok] = angles_to_pulses(theta[ok], arm.params.pulses_per_rev)
-    deg = np.degrees(np.where(ok[:, None], theta, 0.0))
-    status = np.repeat(sol.status, nb).astype(np.int64)
-    status = np.where((status == Status.OK) & ~ok, int(Status.JOINT_LIMITS), status)
-    data["branch"] = np.tile(np.array(names, dtype=object), n)
-    data["reachable"] = np.where(ok, "true", "false")
-    for j in range(nj):
-        data[f"theta{j + 1}_deg"] = pd.arrays.FloatingArray(deg[:, j], ~ok)
-    for j in range(nj):
-        data[f"c{j + 1}"] = pd.arrays.IntegerArray(pulses[:, j], ~ok)
-    text = np.array([STATUS_TEXT[Status(s)] for s in range(len(Status))], dtype=object)
-    data["status"] = text[status]
-    return pd.DataFrame(data), Counter(text[sol.status.astype(np.int64)].tolist())
+    A clash is a name (stripped) equal to an output column or to a name already given;
+    it becomes ``input_<name>``, then ``input_<name>_2``, ``_3``, ... until free.
+
+    >>> output_header(["x_mm", "status", "input_status"], ["branch", "status"])
+    ['x_mm', 'input_status_2', 'input_status', 'branch', 'status']
+    """
+    names = [h.strip() for h in header]
+    taken = set(outputs)
+    out = []
+    for raw, name in zip(header, names, strict=True):
+        if name in taken:
+            new, k = f"input_{name}", 2
+            while new in taken or new in names:
+                new, k = f"input_{name}_{k}", k + 1
+            name = raw = new
+        taken.add(name)
+        out.append(raw)  # as written
+    return [*out, *outputs]
+
+
+def _range_problems(
+    arm: Arm, values: np.ndarray, columns: tuple[str, ...], lines: list[int], path
+) -> list[str | None]:
+    """Per row: why its numbers are outside :mod:`analysis.validate`'s ranges, or None.
+    Coordinates (mm) within +-MAX_COORD_MM; angles in degrees have no range (they are
+    reduced exactly)."""
+    mm = np.array([u == "mm" for u in arm.user_units])
+    bad = ~(np.abs(values[:, mm]) <= validate.MAX_COORD_MM) & ~np.isnan(values[:, mm])
+    out: list[str | None] = [None] * len(values)
+    if not bad.any():
+        return out
+    mm_cols = [c for c, m in zip(columns, mm, strict=True) if m]
+    for i in np.flatnonzero(bad.any(axis=1)):
+        j = int(np.flatnonzero(bad[i])[0])
+        message = (
+            f"{mm_cols[j]} = {values[i, mm][j]:g} mm is beyond +-{validate.MAX_COORD_MM:.4g} mm, "
+            "the largest coordinate the code supports (a PLC REAL)"
+        )
+        out[i] = str(InputError(message, path, lines[i], mm_cols[j]))
+    return out
+
+
+def _fmt_angles(deg: np.ndarray, ok: np.ndarray) -> list[str]:
+    """Each angle as the shortest text that reads back as the same float; "" where not ok."""
+    text = [repr(v) for v in (deg + 0.0).tolist()]  # + 0.0: no "-0.0"
+    return [t if good else "" for t, good in zip(text, ok.tolist(), strict=True)]
 
 
 def solve_csv(
     arm: Arm,
-    input_path: Path,
-    output_path: Path,
+    input_path: Path | str,
+    output_path: Path | str,
     *,
     branch: str | None = None,
     tol: float = 1e-6,
     theta1_on_axis: float | None = None,
     chunk_rows: int = 100_000,
     params: Path | None = None,
+    strict: bool = False,
+    delimiter: str | None = None,
+    make_dirs: bool = False,
+    progress: Callable[[int], None] | None = None,
 ) -> dict:
     """Solve every target of ``input_path`` into ``output_path``; return a summary.
 
-    Raises ``InputError`` (bad CSV, naming line and column), ``OutputError`` (cannot write,
-    or the output is an input) or ``ValueError`` (bad options); the output is then untouched.
+    ``input_path`` and ``output_path`` may be ``"-"`` (standard input, output).
+    ``delimiter=None`` sniffs the input's delimiter from its header. ``make_dirs`` creates a
+    missing output directory (removed again if the batch fails). ``progress`` is called with
+    the number of targets done after each part.
+
+    Raises ``InputError`` (bad CSV, naming line and column; with ``strict``, also the first
+    bad number), ``OutputError`` (cannot write, or the output is an input, a device or a
+    FIFO) or ``ValueError`` (bad options); the output is then untouched.
     """
-    if not 1 <= chunk_rows <= 10_000_000:
-        raise ValueError(f"--chunk-rows {chunk_rows} must be in 1 .. 10,000,000")
+    if isinstance(chunk_rows, bool) or not isinstance(chunk_rows, int) or not (
+        1 <= chunk_rows <= 10_000_000
+    ):
+        raise ValueError(f"--chunk-rows {chunk_rows!r} must be a whole number in 1 .. 10,000,000")
+    tol = validate.tolerance_mm(tol, "--tol")
     check_paths(inputs=[p for p in (input_path, params) if p], outputs=[output_path],
-                make_parents=True)  # fmt: skip
+                make_parents=make_dirs)  # fmt: skip
     names = arm.branch_names(branch or arm.branches[0])
+    nb, nj = len(names), arm.n_joints
     columns = input_columns(arm)
+    header, chunks = iter_record_chunks(
+        input_path,
+        required=columns,
+        numeric=columns,
+        allow_extra=True,
+        chunk_rows=chunk_rows,
+        delimiter=delimiter,
+        bad_numbers="raise" if strict else "mark",
+    )
+    status_text = np.array([STATUS_TEXT[Status(s)] for s in range(len(Status))], dtype=object)
     counts: Counter = Counter()
     total = solved = 0
-    with atomic_writer(output_path, newline="", make_parents=True) as fh:
-        first = True
-        for _, cols in iter_table_chunks(
-            input_path,
-            required=columns,
-            numeric=columns,
-            allow_extra=True,
-            chunk_rows=chunk_rows,
-        ):
-            header = list(cols)
-            p_all = arm.from_user(np.stack([cols[c] for c in columns], axis=-1))
-            for s in range(0, len(p_all), WRITE_ROWS):
-                part = {k: v[s : s + WRITE_ROWS] for k, v in cols.items()}
-                p = p_all[s : s + WRITE_ROWS]
-                sol = arm.solve(p, names, tol=tol, theta1_on_axis=theta1_on_axis)
-                df, c = _frame(arm, names, part, header, sol)
-                df.to_csv(fh, header=first, index=False, float_format="%.10g")
-                first = False
-                counts.update(c)
-                total += len(p)
-                solved += int(sol.ok.any(axis=-1).sum())
-        if first:  # no data rows: the header alone
-            import pandas as pd
-
-            pd.DataFrame(columns=[*columns, *output_columns(arm)]).to_csv(fh, index=False)
+    with output_stream(output_path, newline="", make_parents=make_dirs) as fh:
+        writer = csv.writer(fh, lineterminator="\n")
+        writer.writerow(output_header(header, output_columns(arm)))
+        for rec in chunks:
+            values = np.stack([rec.numbers[c] for c in columns], axis=-1)
+            problems = [
+                a or b
+                for a, b in zip(
+                    rec.problems,
+                    _range_problems(arm, values, columns, rec.lines, input_path),
+                    strict=True,
+                )
+            ]
+            if strict and any(problems):
+                raise ValueError(next(p for p in problems if p))
+            for s in range(0, len(values), WRITE_ROWS):
+                e = min(s + WRITE_ROWS, len(values))
+                k = e - s
+                reason = problems[s:e]
+                valid = np.array([r is None for r in reason])
+                theta = np.full((k, nb, nj), np.nan)
+                ok = np.zeros((k, nb), dtype=bool)
+                status = np.full(k, int(Status.INVALID), dtype=np.int64)
+                if valid.any():
+                    sol = arm.solve(
+                        arm.from_user(values[s:e][valid]),
+                        names,
+                        tol=tol,
+                        theta1_on_axis=theta1_on_axis,
+                    )
+                    theta[valid], ok[valid] = sol.theta, sol.ok
+                    status[valid] = sol.status
+                counts.update(status_text[status].tolist())
+                total += k
+                solved += int(ok.any(axis=-1).sum())
+                row_status = np.repeat(status, nb)
+                flat_ok = ok.reshape(-1)
+                # a branch without a solution of a target that has one: outside its limits
+                row_status = np.where((row_status == Status.OK) & ~flat_ok,
+                                      int(Status.JOINT_LIMITS), row_status)  # fmt: skip
+                out: list[list[str]] = []
+                for col in rec.cells:
+                    part = col[s:e]
+                    out.append(part if nb == 1 else [v for v in part for _ in range(nb)])
+                out.append(list(names) * k)
+                out.append(["true" if v else "false" for v in flat_ok.tolist()])
+                flat = theta.reshape(k * nb, nj)
+                for j in range(nj):
+                    out.append(_fmt_angles(np.degrees(flat[:, j]), flat_ok))
+                pulses = np.zeros((k * nb, nj), dtype=np.int64)
+                if flat_ok.any():
+                    pulses[flat_ok] = angles_to_pulses(flat[flat_ok], arm.params.pulses_per_rev)
+                for j in range(nj):
+                    given = zip(pulses[:, j].tolist(), flat_ok.tolist(), strict=True)
+                    out.append([str(c) if good else "" for c, good in given])
+                out.append(status_text[row_status].tolist())
+                out.append([r or "" for r in reason for _ in range(nb)])
+                writer.writerows(zip(*out, strict=True))
+                if progress is not None:
+                    progress(total)
     return {
         "input": str(input_path),
         "output": str(output_path),

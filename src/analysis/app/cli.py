@@ -2,9 +2,14 @@
 
 Every command has ``--help`` with examples, exits 0 on success and 2 on bad input with one
 line ``python -m analysis <command>: error: <reason>`` on stderr (with ``--json``: a JSON
-object with ``"error"`` on stdout instead). Angles are degrees and lengths mm at this edge.
-Outputs are written atomically (a temporary file, then a rename): an error never leaves a
-half-written file, and an output may not be an input.
+object with ``"error"`` on stdout instead; JSON is always valid: no NaN or Infinity tokens,
+and warnings never go to stdout). Angles are degrees and lengths mm at this edge; every
+number is read and checked by :mod:`analysis.validate` (the same rules as in batch CSV
+files; ``ik -1e3 0 600`` needs no ``--``). Outputs are written atomically (a temporary file,
+then a rename): an error never leaves a half-written file or a directory it made, and an
+output may not be an input, a device or a FIFO; ``-`` is standard input or output.
+SIGINT, SIGTERM and SIGHUP end a command with one line and status 128 + the signal
+(130 for Ctrl-C), removing its temporary files.
 
 Imports are deferred to the command that needs them: answering one ``ik`` target loads
 NumPy and the kinematics, not SymPy, pandas or Matplotlib.
@@ -15,7 +20,10 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import re
+import signal
 import sys
+import time
 from collections.abc import Sequence
 from pathlib import Path
 
@@ -30,6 +38,7 @@ EPILOG = """examples:
   python -m analysis stl --dialect s7-200 -o ik.awl --map ik_map.json
   python -m analysis stl-run ik.awl --dialect s7-200 --set VD0=100.0 --read VD100:DINT
   python -m analysis ik 250 0 100 --arm palletizer     another arm (see: arms)
+  python -m analysis ik --input - --output - < in.csv > out.csv    standard input and output
   python -m analysis errata --check                    are the registers current?
   python -m analysis report --out build/report
 """
@@ -39,7 +48,18 @@ class UsageError(ValueError):
     """Bad input from the command line: reported on one line, exit status 2."""
 
 
+# argparse takes an argument that starts with "-" for an option unless it looks like a
+# negative number, and its test knows no exponent: "-1e3" was "unrecognized arguments". Here
+# anything that starts like a number (a digit or a point after the minus, or inf/nan) is a
+# value; analysis.validate then decides whether it is one. No option starts that way.
+_NEGATIVE_NUMBER = re.compile(r"^-(\d|\.\d|inf|nan)", re.IGNORECASE)
+
+
 class _Parser(argparse.ArgumentParser):
+    def __init__(self, *args, **kwargs) -> None:
+        super().__init__(*args, **kwargs)
+        self._negative_number_matcher = _NEGATIVE_NUMBER
+
     def error(self, message: str) -> None:  # one line on stderr, exit 2 (argparse's code)
         self.exit(2, f"{self.prog}: error: {message}\n")
 
@@ -49,13 +69,66 @@ class _Help(argparse.RawDescriptionHelpFormatter):
 
 
 def _finite(text: str) -> float:
+    """A number given on the command line (:func:`analysis.validate.parse_real`: ASCII
+    digits, no underscores, finite)."""
+    from analysis.validate import InvalidValue, parse_real
+
     try:
-        value = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"{text!r} is not a number") from None
-    if not math.isfinite(value):
-        raise argparse.ArgumentTypeError(f"{text!r} is not a finite number")
-    return value
+        return parse_real(text)
+    except InvalidValue as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
+
+
+def _tolerance(text: str) -> float:
+    from analysis.validate import InvalidValue, tolerance_mm
+
+    try:
+        return tolerance_mm(_finite(text), "--tol")
+    except InvalidValue as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
+
+
+def _whole(text: str) -> int:
+    value = _finite(text)
+    if value != int(value):
+        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number")
+    return int(value)
+
+
+def _json(doc) -> str:
+    """JSON text that is always valid: a non-finite float (which no validated input yields)
+    becomes null instead of the invalid token NaN or Infinity."""
+
+    def clean(v):
+        if isinstance(v, float) and not math.isfinite(v):
+            return None
+        if isinstance(v, dict):
+            return {k: clean(x) for k, x in v.items()}
+        if isinstance(v, (list, tuple)):
+            return [clean(x) for x in v]
+        return v
+
+    return json.dumps(clean(doc), allow_nan=False, ensure_ascii=False)
+
+
+class _Progress:
+    """Progress on stderr for work that takes over a second, on a terminal only (a log or a
+    pipe gets the final summary alone): ``update(text)`` rewrites one line."""
+
+    def __init__(self, what: str) -> None:
+        self.what, self.start, self.shown = what, time.monotonic(), False
+        self.tty = sys.stderr.isatty()
+
+    def update(self, text: str) -> None:
+        if self.tty and time.monotonic() - self.start >= 1.0:
+            sys.stderr.write(f"\r{self.what}: {text} ({time.monotonic() - self.start:.0f} s)\033[K")
+            sys.stderr.flush()
+            self.shown = True
+
+    def done(self) -> None:
+        if self.shown:
+            sys.stderr.write("\r\033[K")
+            sys.stderr.flush()
 
 
 def _arm(args: argparse.Namespace):
@@ -79,7 +152,16 @@ def _common(p: argparse.ArgumentParser) -> None:
 
 
 def _emit(args, doc: dict, text: str) -> None:
-    print(json.dumps(doc) if getattr(args, "json", False) else text)
+    print(_json(doc) if getattr(args, "json", False) else text)
+
+
+def _mkdir_flag(p: argparse.ArgumentParser) -> None:
+    p.add_argument(
+        "--mkdir",
+        action="store_true",
+        help="create the output's missing directories (without it a missing directory is an "
+        "error; they are removed again if the command fails)",
+    )
 
 
 # --- fk --------------------------------------------------------------------------------------
@@ -100,6 +182,9 @@ def _cmd_fk(args: argparse.Namespace) -> int:
                 f"theta{j} = {a:g} deg is beyond +-{MAX_JOINT_DEG:g} deg (ten turns): "
                 "angles are in degrees"
             )
+    hint = _radians_hint(args.angles)
+    if hint:
+        print(f"{PROG} fk: note: {hint}", file=sys.stderr)
     p = arm.fk(np.radians(args.angles))
     p = np.where(p == 0, 0.0, p)  # no "-0.000"
     doc = {"arm": arm.name, "theta_deg": list(args.angles), "position_mm": p.tolist()}
@@ -111,6 +196,20 @@ def _cmd_fk(args: argparse.Namespace) -> int:
     return 0
 
 
+def _radians_hint(angles: Sequence[float]) -> str:
+    """A hint when joint angles look like radians typed where degrees belong (as ``ik``
+    hints at metres): every angle within +-pi, and some with a fractional part."""
+    if angles and all(abs(a) <= math.pi + 1e-9 for a in angles) and any(
+        a != round(a) for a in angles
+    ):
+        deg = ", ".join(f"{math.degrees(a):.2f}" for a in angles)
+        return (
+            "the angles are taken in degrees; all lie within +-pi, as radians would: "
+            f"in degrees those are ({deg})"
+        )
+    return ""
+
+
 # --- ik ------------------------------------------------------------------------------------------
 def _cmd_ik(args: argparse.Namespace) -> int:
     if args.input is not None or args.output is not None:
@@ -118,8 +217,12 @@ def _cmd_ik(args: argparse.Namespace) -> int:
             raise UsageError("give either a target X Y Z or --input/--output, not both")
         if args.input is None or args.output is None:
             raise UsageError("batch mode needs both --input IN.csv and --output OUT.csv")
+        if args.json and str(args.output) == "-":
+            raise UsageError("--json prints the summary on stdout, which --output - writes the "
+                             "CSV to: give an output file, or leave out --json")  # fmt: skip
         from analysis.app.batch import solve_csv
 
+        progress = _Progress("ik")
         summary = solve_csv(
             _arm(args),
             args.input,
@@ -129,14 +232,19 @@ def _cmd_ik(args: argparse.Namespace) -> int:
             theta1_on_axis=_axis(args),
             chunk_rows=args.chunk_rows,
             params=args.params,
+            strict=args.strict,
+            delimiter=args.delimiter,
+            make_dirs=args.mkdir,
+            progress=lambda n: progress.update(f"{n:,} targets"),
         )
+        progress.done()
         text = (
-            f"{summary['targets']} targets, {summary['solved']} solved, "
-            + ", ".join(f"{n} {s}" for s, n in summary["status"].items() if s != "ok")
+            f"{summary['targets']} targets, {summary['solved']} solved"
+            + "".join(f", {n} {s}" for s, n in summary["status"].items() if s != "ok")
             + f" -> {summary['output']}"
         )
         if args.json:
-            print(json.dumps(summary))
+            print(_json(summary))
         else:
             print(text, file=sys.stderr)
         return 0
@@ -173,7 +281,13 @@ def _nearest_pose_hint(arm, target) -> str:
 
 
 def _axis(args) -> float | None:
-    return None if args.theta1_on_axis is None else math.radians(args.theta1_on_axis)
+    """The waist angle on the base axis [rad]: the degrees given, reduced exactly to
+    (-180, 180] first (:func:`analysis.validate.reduce_deg`; 3600 deg is 0 deg)."""
+    if args.theta1_on_axis is None:
+        return None
+    from analysis.validate import reduce_deg
+
+    return math.radians(reduce_deg(args.theta1_on_axis))
 
 
 def _ik_single(args: argparse.Namespace, arm) -> int:
@@ -199,6 +313,7 @@ def _ik_single(args: argparse.Namespace, arm) -> int:
         }
         for name, theta in sols.items()
     ]
+    missing = _missing_branches(arm, target, names, sols, args)
     units = arm.user_units
     if all(u == "mm" for u in units):
         lines = [f"target ({', '.join(f'{v:g}' for v in given)}) mm"]
@@ -212,11 +327,56 @@ def _ik_single(args: argparse.Namespace, arm) -> int:
         ang = ", ".join(f"{t:.2f}" for t in s["theta_deg"])
         pul = ", ".join(str(c) for c in s["pulses"])
         lines.append(f"  {s['branch']:<10} theta = ({ang}) deg   pulses = ({pul})")
+    for m in missing:
+        lines.append(f"  {m['branch']:<10} no solution: {m['status']} ({m['reason']})")
+    if len(names) > 1:
+        lines.append(
+            f"{arm.name} has {len(arm.branches)} branches; {len(out)} of the {len(names)} "
+            f"requested solve this target"
+        )
     doc = {"target": given, "reachable": True, "solutions": out}
     if arm.name != "grabber":
         doc["arm"] = arm.name
+    if len(names) > 1:
+        doc["branches"] = len(arm.branches)
+        doc["missing"] = missing
     _emit(args, doc, "\n".join(lines))
     return 0
+
+
+def _missing_branches(arm, target, names, sols, args) -> list[dict]:
+    """Why each requested branch without a solution has none: its own refusal (the GR-1's
+    back wrist out of reach, ...) or the joint limit it crosses, with the angle."""
+    import numpy as np
+
+    from analysis.kinematics.status import Status
+
+    out = []
+    for b in names:
+        if b in sols:
+            continue
+        one = arm.solve(target, [b], tol=args.tol, theta1_on_axis=_axis(args))
+        status = Status(int(one.status))
+        reason = status.text
+        if status in (Status.OK, Status.JOINT_LIMITS):
+            free = arm.solve(target, [b], tol=args.tol, theta1_on_axis=_axis(args),
+                             limits=False)  # fmt: skip
+            status = Status.JOINT_LIMITS
+            crossed = []
+            for j, (q, lim) in enumerate(zip(free.theta[0], arm.limits, strict=True), 1):
+                if lim is not None and not (lim[0] <= q <= lim[1]):
+                    crossed.append(
+                        f"theta{j} = {np.degrees(q):.2f} deg outside "
+                        f"[{np.degrees(lim[0]):g}, {np.degrees(lim[1]):g}] deg"
+                    )
+            reason = "; ".join(crossed) or "outside the joint limits"
+        else:
+            message, _ = arm.closed_form.refusal(
+                status, target, arm.params, tol=args.tol, distance=float(one.outside_mm)
+            )
+            reason = " ".join(message.split())
+        out.append({"branch": b, "status": status.text, "reason": reason})
+    return out
 
 
 # --- stl ------------------------------------------------------------------------------------------
@@ -225,13 +385,16 @@ def _cmd_stl(args: argparse.Namespace) -> int:
     from analysis.plc.generate import generate
     from analysis.plc.memmap import MemoryMap
 
+    outputs = [args.output, *([args.map] if args.map else [])]
+    if str(args.output) == "-" and (args.json or str(args.map) == "-"):
+        raise UsageError("-o - writes the program to stdout: --json and --map - cannot share it")
     check_paths(
         inputs=[p for p in (args.layout, args.params) if p],
-        outputs=[args.output, args.map],
-        make_parents=True,
+        outputs=outputs,
+        make_parents=args.mkdir,
     )
     arm = _arm(args)
-    mmap = MemoryMap.from_json(args.layout) if args.layout else None
+    mmap = _layout(args.layout, MemoryMap) if args.layout else None
     text, mjson = generate(
         args.dialect,
         args.branch,
@@ -241,22 +404,52 @@ def _cmd_stl(args: argparse.Namespace) -> int:
         motion=not args.no_motion,
         theta1_on_axis=_axis(args),
     )
-    write_many_atomic({args.output: text, args.map: mjson}, newline="", make_parents=True)
+    files = {p: c for p, c in ((args.output, text), (args.map, mjson)) if p and str(p) != "-"}
+    if files:
+        write_many_atomic(files, newline="", make_parents=args.mkdir)
+    for p, c in ((args.output, text), (args.map, mjson)):
+        if p is not None and str(p) == "-":
+            sys.stdout.write(c)
+            sys.stdout.flush()
     doc = {
         "program": str(args.output),
-        "map": str(args.map),
+        "map": None if args.map is None else str(args.map),
         "dialect": args.dialect,
         "arm": arm.name,
         "branch": args.branch or arm.branches[0],
         "lines": text.count("\n"),
     }
-    print(
-        json.dumps(doc)
-        if args.json
-        else f"wrote {args.output} ({args.dialect}, {arm.name} {doc['branch']}, "
-        f"{doc['lines']} lines) and {args.map}"
-    )
+    if args.json:
+        print(_json(doc))
+    else:
+        also = f" and {args.map}" if args.map else " (no MAP.json: --map FILE writes it)"
+        print(
+            f"wrote {args.output} ({args.dialect}, {arm.name} {doc['branch']}, "
+            f"{doc['lines']} lines){also}",
+            file=sys.stderr if str(args.output) == "-" else sys.stdout,
+        )
     return 0
+
+
+def _layout(path: Path, MemoryMap):
+    """``--layout L.json``, checked at the boundary: a JSON object, read by the memory map's
+    own parser; anything it cannot take is one line naming the file."""
+    try:
+        doc = json.loads(Path(path).read_text(encoding="utf-8"))
+    except json.JSONDecodeError as exc:
+        raise UsageError(f"{path}: not valid JSON ({exc})") from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise UsageError(f"cannot read {path}: {getattr(exc, 'strerror', None) or exc}") from None
+    if not isinstance(doc, dict):
+        raise UsageError(
+            f"{path}: a memory map is a JSON object (MAP.json format), not {type(doc).__name__}"
+        )
+    try:
+        return MemoryMap.from_json(path)
+    except (KeyError, TypeError, AttributeError, IndexError) as exc:
+        raise UsageError(f"{path}: not a memory map ({type(exc).__name__}: {exc})") from None
+    except ValueError as exc:
+        raise UsageError(f"{path}: {exc}" if str(path) not in str(exc) else str(exc)) from None
 
 
 # --- errata ------------------------------------------------------------------------------------
@@ -264,16 +457,32 @@ def _cmd_errata(args: argparse.Namespace) -> int:
     from analysis.audit import register as reg
 
     papers = [args.paper] if args.paper else None
+    if args.paper and args.paper not in reg.PAPERS:
+        reg.register(args.paper)  # raises, naming the papers
+    progress = _Progress("errata")
+    for i, paper in enumerate(papers or reg.available(), 1):  # built once, cached
+        progress.update(f"building the register of {paper} ({i}/{len(papers or reg.available())})")
+        if args.write or args.check or not args.json:
+            reg.register(paper)
+    progress.done()
     if args.write:
         changed = reg.write_all(papers)
-        print("\n".join(changed) or "up to date")
+        if args.json:
+            print(_json({"changed": changed}))
+        else:
+            print("\n".join(changed) or "up to date")
         return 0
     if args.check:
         stale = reg.check(papers)
-        if stale:
+        if args.json:
+            print(_json({"up_to_date": not stale, "stale": stale}))
+        elif stale:
             print(f"out of date: {', '.join(stale)} (run: {PROG} errata --write)", file=sys.stderr)
-            return 1
-        print("up to date")
+        else:
+            print("up to date")
+        return 1 if stale else 0
+    if args.json:
+        print(_json({p: reg.load(p).to_dict(orient="records") for p in papers or reg.available()}))
         return 0
     print(reg.render_markdown(papers), end="")
     return 0
@@ -288,7 +497,10 @@ def _cmd_arms(args: argparse.Namespace) -> int:
 
     docs = []
     for path in sorted((data_dir() / "arms").glob("*.toml")):
-        raw = tomllib.loads(path.read_text(encoding="utf-8"))
+        try:
+            raw = tomllib.loads(path.read_text(encoding="utf-8"))
+        except (tomllib.TOMLDecodeError, OSError, UnicodeDecodeError) as exc:
+            raise UsageError(f"{path}: not a readable TOML description ({exc})") from None
         if "rows" not in raw:  # not a D-H description (the picker: dimensions only)
             docs.append(
                 {
@@ -297,9 +509,11 @@ def _cmd_arms(args: argparse.Namespace) -> int:
                     "paper": "",
                     "joints": [],
                     "parameters": {
-                        k: {"value": v["value"], "unit": v["unit"], "status": v["status"]}
-                        for k, v in raw.get("parameters", {}).items()
-                        if isinstance(v.get("value"), (int, float))
+                        k: {"value": v["value"], "unit": str(v.get("unit", "")),
+                            "status": str(v.get("status", ""))}
+                        for k, v in (raw.get("parameters") or {}).items()
+                        if isinstance(v, dict) and isinstance(v.get("value"), (int, float))
+                        and not isinstance(v.get("value"), bool) and math.isfinite(v["value"])
                     },
                 }
             )
@@ -318,7 +532,7 @@ def _cmd_arms(args: argparse.Namespace) -> int:
             }
         )
     if args.json:
-        print(json.dumps(docs))
+        print(_json(docs))
         return 0
     for d in docs:
         params = ", ".join(
@@ -347,7 +561,10 @@ def _add_fk(sub) -> None:
         epilog="example:\n  python -m analysis fk 45 10.21 -155.13 --json",
         formatter_class=_Help,
     )
-    p.add_argument("angles", nargs="+", type=_finite, metavar="DEG", help="joint angles [deg]")
+    p.add_argument(
+        "angles", nargs="+", type=_finite, metavar="DEG",
+        help="joint angles [deg] (a note on stderr when they look like radians)",
+    )  # fmt: skip
     p.add_argument("--json", action="store_true", help="machine-readable output")
     _common(p)
     p.set_defaults(func=_cmd_fk)
@@ -361,11 +578,14 @@ def _add_ik(sub) -> None:
         description="Closed-form IK (the paper's corrected eqs. 6-19) and stepper pulses "
         "(eqs. 20-22), for one target or a CSV of them (columns x_mm, y_mm, z_mm; the output "
         "has one row per target and branch, with reachable = the row is solved and status = "
-        "ok, out-of-reach, inside-reach, base-axis, joint-limits).",
+        "ok, out-of-reach, inside-reach, base-axis, joint-limits, invalid; a row whose numbers "
+        "are bad is 'invalid', its reason in the last column, and the batch goes on: --strict "
+        "stops at the first). '-' reads standard input or writes standard output.",
         epilog="examples:\n  python -m analysis ik 100 100 600 --json\n"
         "  python -m analysis ik 0 0 900 --theta1-on-axis 30\n"
         "  python -m analysis ik 300 100 50 0 90 10 --arm gr1 --branch all\n"
-        "  python -m analysis ik --input targets.csv --output solved.csv --branch all",
+        "  python -m analysis ik --input targets.csv --output solved.csv --branch all\n"
+        "  python -m analysis ik -1e3 0 600                 (a leading minus needs no --)",
         formatter_class=_Help,
     )
     p.add_argument(
@@ -381,12 +601,23 @@ def _add_ik(sub) -> None:
         "--input",
         type=Path,
         help="batch: CSV with columns x_mm, y_mm, z_mm (the GR-1: also alpha_deg, beta_deg, "
-        "gamma_deg)",
+        "gamma_deg); - for stdin",
     )
-    p.add_argument("--output", type=Path, help="batch: output CSV (one row per target, branch)")
     p.add_argument(
-        "--chunk-rows", type=int, default=100_000, help="batch: rows per chunk (memory bound)"
+        "--output", type=Path, help="batch: output CSV (one row per target, branch); - for stdout"
     )
+    p.add_argument(
+        "--chunk-rows", type=_whole, default=100_000, help="batch: rows per chunk (memory bound)"
+    )
+    p.add_argument(
+        "--strict", action="store_true",
+        help="batch: stop at the first bad row (default: mark it 'invalid' and go on)",
+    )  # fmt: skip
+    p.add_argument(
+        "--delimiter", choices=(",", ";", "\t", "|"), metavar="CHAR",
+        help="batch: the input's field separator (default: sniffed from the header: , ; tab |)",
+    )  # fmt: skip
+    _mkdir_flag(p)
     p.add_argument(
         "--theta1-on-axis",
         type=_finite,
@@ -395,7 +626,7 @@ def _add_ik(sub) -> None:
     )
     p.add_argument(
         "--tol",
-        type=_finite,
+        type=_tolerance,
         default=1e-6,
         help="distance tolerance [mm] at the reach boundary and the base axis, 0 .. 1 "
         "(default 1e-06)",
@@ -414,7 +645,8 @@ def _add_stl(sub) -> None:
         "input and output address.",
         epilog="examples:\n  python -m analysis stl --dialect s7-200 -o ik.awl --map ik_map.json\n"
         "  python -m analysis stl --dialect s7-300 --arm palletizer -o pal.awl --map pal.json\n"
-        "  python -m analysis stl --dialect st --arm gr1 -o gr1.st --map gr1.json",
+        "  python -m analysis stl --dialect st --arm gr1 -o gr1.st --map gr1.json\n"
+        "  python -m analysis stl --dialect s7-300 -o -          the program on stdout",
         formatter_class=_Help,
     )
     p.add_argument(
@@ -437,9 +669,12 @@ def _add_stl(sub) -> None:
     p.add_argument(
         "--theta1-on-axis", type=_finite, metavar="DEG", help="waist angle on the base axis"
     )
-    p.add_argument("-o", "--output", required=True, type=Path, help="program file to write")
-    p.add_argument("--map", required=True, type=Path, help="MAP.json to write")
+    p.add_argument(
+        "-o", "--output", required=True, type=Path, help="program file to write; - for stdout"
+    )
+    p.add_argument("--map", type=Path, help="MAP.json to write (optional)")
     p.add_argument("--json", action="store_true", help="machine-readable summary and errors")
+    _mkdir_flag(p)
     _common(p)
     p.set_defaults(func=_cmd_stl)
 
@@ -463,6 +698,11 @@ def _add_errata(sub) -> None:
         help="only this paper's register (grabber, palletizer, picker, gr1); the README block "
         "lists every paper and is checked and written only without --paper",
     )
+    p.add_argument(
+        "--json", action="store_true",
+        help="machine-readable: the register rows, or {up_to_date, stale} with --check, "
+        "{changed} with --write",
+    )  # fmt: skip
     p.set_defaults(func=_cmd_errata)
 
 
@@ -500,6 +740,7 @@ def build_parser() -> argparse.ArgumentParser:
         epilog=EPILOG,
         formatter_class=_Help,
     )
+    parser.add_argument("--version", action=_VersionAction, help="show the version and exit")
     sub = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
 
     _add_fk(sub)
@@ -510,6 +751,38 @@ def build_parser() -> argparse.ArgumentParser:
     _add_arms(sub)
     _add_report(sub)
     return parser
+
+
+class _VersionAction(argparse.Action):
+    """``--version``: the installed package's version, looked up only when asked for."""
+
+    def __init__(self, option_strings, dest=argparse.SUPPRESS, default=argparse.SUPPRESS,
+                 help=None):  # fmt: skip
+        super().__init__(option_strings, dest, nargs=0, default=default, help=help)
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        print(f"{parser.prog} {_version()}")
+        parser.exit(0)
+
+
+def _version() -> str:
+    """The installed package's version (pyproject.toml)."""
+    from importlib import metadata
+
+    try:
+        return metadata.version("analysis")
+    except metadata.PackageNotFoundError:  # pragma: no cover - run from a source tree
+        return "unknown (not installed)"
+
+
+_PARSER: list = []
+
+
+def _parser() -> argparse.ArgumentParser:
+    """The parser, built once per process (parsing keeps no state in it)."""
+    if not _PARSER:
+        _PARSER.append(build_parser())
+    return _PARSER[0]
 
 
 def _error_doc(exc: Exception, args) -> dict:
@@ -535,25 +808,80 @@ def _hint(exc: Exception, args) -> str:
     if isinstance(exc, BaseAxisError):
         return " (here: --theta1-on-axis DEG)"
     target = getattr(exc, "target", None)
-    if isinstance(exc, UnreachableError) and target and max(abs(v) for v in target) <= 5:
+    if isinstance(exc, UnreachableError) and target and max(abs(v) for v in target[:3]) <= 5:
         return " (coordinates are in mm: did you give metres?)"
+    if "does not exist" in str(exc) and hasattr(args, "mkdir") and not args.mkdir:
+        return " (--mkdir creates it)"
     return ""
+
+
+class _Signal(BaseException):
+    """SIGTERM or SIGHUP, raised where the program is, so that every ``with`` and ``finally``
+    runs (temporary files removed) before the command ends with status 128 + the signal."""
+
+    def __init__(self, signum: int) -> None:
+        super().__init__(signum)
+        self.signum = signum
+
+
+def _raise_signal(signum, frame) -> None:
+    raise _Signal(signum)
+
+
+def _install_signals() -> dict:
+    old = {}
+    for sig in (signal.SIGTERM, signal.SIGHUP):
+        try:
+            old[sig] = signal.signal(sig, _raise_signal)
+        except (ValueError, OSError):  # not the main thread
+            pass
+    return old
 
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; returns the exit status."""
-    parser = build_parser()
-    args = parser.parse_args(list(sys.argv[1:] if argv is None else argv))
+    import warnings
+
+    args = _parser().parse_args(list(sys.argv[1:] if argv is None else argv))
+    old = _install_signals()
     try:
-        return int(args.func(args) or 0)
+        with warnings.catch_warnings():
+            # a warning goes to stderr, never into stdout or JSON; none is expected from
+            # validated input (tests/hostile holds every entry point to that)
+            warnings.simplefilter("default")
+            return int(args.func(args) or 0)
     except (ValueError, OSError) as exc:  # UsageError, UnreachableError, OutputError, ...
+        if isinstance(exc, BrokenPipeError):
+            return _broken_pipe()
         if isinstance(exc, OSError):
             exc = ValueError(f"{getattr(exc, 'filename', '') or ''}: {exc.strerror or exc}")
         message = " ".join(str(exc).split()) + _hint(exc, args)
         if getattr(args, "json", False):
             doc = _error_doc(exc, args)
             doc["error"] = message
-            print(json.dumps(doc))
+            print(_json(doc))
         else:
             print(f"{PROG} {args.command}: error: {message}", file=sys.stderr)
         return 2
+    except KeyboardInterrupt:
+        print(f"{PROG} {args.command}: interrupted (SIGINT)", file=sys.stderr)
+        return 128 + signal.SIGINT
+    except _Signal as exc:
+        name = signal.Signals(exc.signum).name
+        print(f"{PROG} {args.command}: terminated ({name})", file=sys.stderr)
+        return 128 + exc.signum
+    finally:
+        for sig, handler in old.items():
+            signal.signal(sig, handler)
+
+
+def _broken_pipe() -> int:
+    """The reader of stdout went away (``| head``): end quietly, as a shell tool does."""
+    import os
+
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError):  # pragma: no cover
+        pass
+    return 128 + signal.SIGPIPE

@@ -39,20 +39,13 @@ STYLE: dict[str, object] = {
 
 
 def cjk_fonts() -> list[str]:
-    """Installed font families that have Chinese glyphs (the paper's 无解), for a text's
-    ``fontfamily=["DejaVu Sans", *cjk_fonts()]`` fallback list; [] where none is installed
-    (Debian's ``fonts-wqy-microhei``, which ``.ci/run`` installs, provides one)."""
-    from matplotlib import font_manager as fm
+    """The font families with Chinese glyphs (the paper's 无解), for a text's
+    ``fontfamily=["DejaVu Sans", *cjk_fonts()]`` fallback list: the bundled Noto Sans SC
+    only (:func:`analysis.fonts.register_cjk_font`), never a system font, so the figure is
+    the same on every machine."""
+    from analysis.fonts import register_cjk_font
 
-    prefixes = ("WenQuanYi", "Noto Sans CJK", "Droid Sans Fallback")
-    found = sorted({f.name for f in fm.fontManager.ttflist if f.name.startswith(prefixes)})
-    if not found:  # matplotlib's font cache may predate the font's installation
-        files = ("wqy", "notosanscjk", "droidsansfallback")
-        for path in fm.findSystemFonts():
-            if any(k in Path(path).name.lower() for k in files):
-                fm.fontManager.addfont(path)
-        found = sorted({f.name for f in fm.fontManager.ttflist if f.name.startswith(prefixes)})
-    return found
+    return [register_cjk_font()]
 
 
 def equal_axes_3d(ax, points: npt.ArrayLike, *, ticks: int = 5, pad: float = 0.05):

@@ -20,7 +20,6 @@ Angles in radians, lengths in mm; joint arrays have shape ``(..., n)``, targets
 
 from __future__ import annotations
 
-import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
@@ -29,11 +28,11 @@ from types import ModuleType
 import numpy as np
 import numpy.typing as npt
 
+from analysis import validate
 from analysis.kinematics.arms import closed_form
 from analysis.kinematics.description import (
     MAX_PULSES_PER_REV,
     ArmDescription,
-    check_pulses_per_rev,
     load_description,
 )
 from analysis.kinematics.dh import DHTable, chain_frames
@@ -100,11 +99,7 @@ class Params(Mapping):
         for k, v in dict(self.data).items():
             if k not in desc.parameters:
                 raise ValueError(f"arm {self.arm}: unknown parameter {k!r}")
-            if isinstance(v, bool) or not isinstance(v, (int, float, np.floating, np.integer)):
-                raise ValueError(f"{k} = {v!r} mm is not a finite number")
-            if not math.isfinite(v):
-                raise ValueError(f"{k} = {v!r} mm is not a finite number")
-            vals[k] = float(v)
+            vals[k] = validate.length_mm(v, k)  # real, finite, in the supported range
         missing = set(desc.parameters) - set(vals)
         if missing:
             raise ValueError(f"arm {self.arm}: missing parameter(s) {sorted(missing)}")
@@ -116,7 +111,7 @@ class Params(Mapping):
         try:
             if not isinstance(ppr, (list, tuple)) or len(ppr) != n:
                 raise ValueError
-            ppr = tuple(check_pulses_per_rev(v, "pulses_per_rev") for v in ppr)
+            ppr = tuple(validate.pulses_per_rev(v, "pulses_per_rev") for v in ppr)
         except ValueError:
             raise ValueError(
                 f"pulses_per_rev = {self.pulses_per_rev!r}: need {n} whole numbers in "
@@ -218,17 +213,21 @@ class Arm:
         return tuple("deg" if u == "rad" else u for u in self.input_units)
 
     def from_user(self, values: npt.ArrayLike) -> np.ndarray:
-        """``(..., k)`` inputs in :attr:`user_units` -> in :attr:`input_units` (degrees to
-        radians; coordinates unchanged).
+        """``(..., k)`` inputs in :attr:`user_units` -> in :attr:`input_units` (degrees
+        reduced exactly to (-180, 180], :func:`analysis.validate.reduce_deg`, then radians;
+        coordinates unchanged).
 
         >>> load_arm("gr1").from_user([100, 0, 600, 0, 90, 180]).round(4).tolist()
         [100.0, 0.0, 600.0, 0.0, 1.5708, 3.1416]
         """
-        v = np.asarray(values, dtype=float)
+        v = validate.real_array(values, "target")
         angle = np.array([u == "rad" for u in self.input_units])
         if v.shape[-1:] != angle.shape:
             raise ValueError(f"{self.name} takes {len(angle)} inputs per target, got {v.shape}")
-        return np.where(angle, np.radians(v), v)
+        if not angle.any():
+            return v
+        # degrees reduced exactly to (-180, 180] before the conversion (analysis.validate)
+        return np.where(angle, np.radians(validate.reduce_deg(v)), v)
 
     @property
     def n_joints(self) -> int:
@@ -316,6 +315,13 @@ class Arm:
         """Validated branch names (``"all"`` for every branch)."""
         if isinstance(branches, str):
             branches = self.branches if branches == "all" else (branches,)
+        if not isinstance(branches, (list, tuple)) or not all(
+            isinstance(b, str) for b in branches
+        ):
+            raise ValueError(
+                f"branches = {branches!r}: expected 'all', a branch name or a sequence of them "
+                f"({', '.join(self.branches)})"
+            )
         names = tuple(branches)
         unknown = [b for b in names if b not in self.branches]
         if unknown or not names:
@@ -348,7 +354,8 @@ class Arm:
             Branch names or ``"all"``.
         theta1_on_axis : array_like, optional
             Waist angle [rad] for targets on the base axis (broadcast against
-            ``p[..., 0]``). Without it such targets get ``Status.BASE_AXIS``.
+            ``p[..., 0]``; real, within ten turns, wrapped to (-pi, pi]). Without it such
+            targets get ``Status.BASE_AXIS``.
         tol : float
             Distance tolerance [mm] (0 .. :data:`MAX_TOL_MM`).
         limits : bool
@@ -367,14 +374,12 @@ class Arm:
         """
         names = self.branch_names(branches)
         # the compiled kernel counts non-finite inputs in its input copy (one pass, not two)
-        p = as_points(p, inputs=self.inputs, finite=backend != "compiled")
+        p = as_points(p, inputs=self.inputs, finite=backend != "compiled", units=self.input_units)
         tol = check_tol(tol)
         options = refusal_options(tol, margin_mm, margin_rad)
         lim = self.limits if limits else ()
         if theta1_on_axis is not None:
-            t = np.asarray(theta1_on_axis, dtype=float)
-            if not np.isfinite(t).all():
-                raise ValueError(f"theta1_on_axis = {theta1_on_axis!r} rad is not finite")
+            theta1_on_axis = check_theta1_on_axis(theta1_on_axis)
         if backend == "compiled":
             if theta1_on_axis is not None:
                 raise ValueError("the compiled backend takes no theta1_on_axis; use numpy")
@@ -467,7 +472,7 @@ class Arm:
 
         Branches outside the joint limits are left out; if none is left, ValueError.
         """
-        p = as_points(p, inputs=self.inputs)
+        p = as_points(p, inputs=self.inputs, units=self.input_units)
         if p.shape != (len(self.inputs),):
             raise ValueError(
                 f"ik takes one target of shape ({len(self.inputs)},), got {p.shape}; "
@@ -480,7 +485,7 @@ class Arm:
 
     def check_target(self, p: npt.ArrayLike, *, tol: float = DEFAULT_TOL_MM, allow_axis=False):
         """Raise :class:`UnreachableError` or :class:`BaseAxisError` for one bad target."""
-        p = as_points(p, inputs=self.inputs)
+        p = as_points(p, inputs=self.inputs, units=self.input_units)
         sol = self.solve(p, self.branches, tol=tol, theta1_on_axis=0.0 if allow_axis else None)
         self.raise_for(p, int(sol.status), float(sol.outside_mm), tol=tol)
 
@@ -502,6 +507,17 @@ class Arm:
         if status == Status.ORIENTATION:
             raise OrientationError(message, p)
         raise ValueError(message)
+
+
+def check_theta1_on_axis(value) -> float | npt.NDArray[np.float64]:
+    """The waist angle for targets on the base axis [rad]: real, finite, within ten turns
+    (:func:`analysis.validate.angle_rad`), wrapped to (-pi, pi] (the README's convention)."""
+    if np.ndim(value) == 0 and not isinstance(value, np.ma.MaskedArray):
+        return validate.wrap_rad(validate.angle_rad(value, "theta1_on_axis"))
+    arr = validate.real_array(value, "theta1_on_axis")
+    if arr.size and np.abs(arr).max() > validate.MAX_ANGLE_RAD:
+        validate.angle_rad(float(arr.flat[np.abs(arr).argmax()]), "theta1_on_axis")
+    return validate.wrap_rad(arr)
 
 
 def load_arm(name: str = "grabber", tables: dict | None = None) -> Arm:

@@ -258,22 +258,23 @@ def module_text(source: str) -> str:
 TRANSPOSE = """
 
 @numba.njit(parallel=True, nogil=True, cache=True)
-def transpose_into(src, dst, start, k):
+def transpose_into(src, dst, start, k, lim):
     # rows start .. start + k of src (n, m) into the columns 0 .. k of dst (m, >= k),
     # in parallel (the kernel then reads each input as a contiguous row); returns how many
-    # of the values copied are not finite
+    # of the values copied are outside +-lim[j] of their column (NaN included)
     m = src.shape[1]
     bad = 0
     for i in numba.prange(k):
         for j in range(m):
             v = src[start + i, j]
             dst[j, i] = v
-            bad += 0 if math.isfinite(v) else 1
+            bad += 0 if abs(v) <= lim[j] else 1
     return bad
 """
 """The input copy of :meth:`Kernel.run`, generated with each kernel (and cached with it):
 a parallel transpose, twice as fast as ``np.copyto`` of the transposed rows on two cores,
-which counts the non-finite inputs on the way (the validation, in the same pass)."""
+which counts the inputs outside their range on the way (NaN and inf included: the
+validation of :mod:`analysis.validate`, in the same pass)."""
 
 
 @cache
@@ -340,9 +341,10 @@ class Kernel:
     outputs: dict
     transpose: object = None
 
-    def run(self, inputs: np.ndarray, scalars, outs) -> int:
+    def run(self, inputs: np.ndarray, scalars, outs, limits=None) -> int:
         """Evaluate rows ``inputs`` (n, len(arrays)) into 1-D arrays ``outs`` (length n);
-        return how many input values are not finite (their rows are evaluated all the same).
+        return how many input values are outside +-``limits`` (one per column; default: how
+        many are not finite). Their rows are evaluated all the same.
 
         The input columns are copied into contiguous buffers a chunk at a time (at most
         :data:`CHUNK` rows: bounded memory), then one parallel kernel call per chunk.
@@ -351,6 +353,7 @@ class Kernel:
         scal = [float(v) for v in scalars]
         k_in = len(self.arrays)
         buf = _scratch(k_in, min(CHUNK, max(n, 1)))
+        lim = np.full(k_in, np.inf) if limits is None else np.asarray(limits, dtype=np.float64)
         fast = (
             self.transpose is not None
             and inputs.ndim == 2
@@ -362,10 +365,10 @@ class Kernel:
             e = min(s + CHUNK, n)
             k = e - s
             if fast:
-                bad += self.transpose(inputs, buf, s, k)
+                bad += self.transpose(inputs, buf, s, k, lim)
             else:
                 np.copyto(buf[:, :k], inputs[s:e].T)
-                bad += int(k * k_in - np.isfinite(buf[:, :k]).sum())
+                bad += int(k * k_in - (np.abs(buf[:, :k]) <= lim[:, None]).sum())
             self.fn(k, *(buf[j, :k] for j in range(k_in)), *scal, *(o[s:e] for o in outs))
         return bad
 
@@ -447,9 +450,17 @@ def _storage(view: np.ndarray, shape: tuple) -> np.ndarray:
     return base
 
 
+def input_limits(units: Sequence[str]) -> np.ndarray:
+    """Largest |input| per column (:mod:`analysis.validate`): coordinates [mm]; angles [rad]
+    any finite value."""
+    from analysis.validate import MAX_COORD_MM
+
+    return np.array([np.finfo(np.float64).max if u == "rad" else MAX_COORD_MM for u in units])
+
+
 def solve(arm, p: npt.NDArray[np.float64], names, *, tol: float, limits, out=None):
     """:meth:`Arm.solve` with the compiled kernel (same arguments, validated but for the
-    finiteness of ``p``, which the kernel's input copy counts: ``ValueError`` as from
+    values of ``p``, whose ranges the kernel's input copy checks: ``ValueError`` as from
     :func:`~analysis.kinematics.solution.as_points`, after the outputs were written)."""
     if not HAVE_NUMBA:  # pragma: no cover
         return arm.solve(p, names, tol=tol, limits=bool(limits))
@@ -466,8 +477,10 @@ def solve(arm, p: npt.NDArray[np.float64], names, *, tol: float, limits, out=Non
     outs = [res.status.reshape(n, copy=False), res.outside_mm.reshape(n, copy=False)]
     outs += [ok[b] for b in range(len(names))]
     outs += [theta[b, j] for b in range(len(names)) for j in range(nj)]
-    if kern.run(p.reshape(n, p.shape[-1]), [*arm.params.values(), tol], outs):
-        as_points(p, inputs=arm.inputs)  # raises, naming the first non-finite target
+    limits = input_limits(arm.input_units)
+    if kern.run(p.reshape(n, p.shape[-1]), [*arm.params.values(), tol], outs, limits):
+        # raises, naming the first target outside analysis.validate's ranges
+        as_points(p, inputs=arm.inputs, units=arm.input_units)
     return IKSolutions(res.theta, res.ok, res.status, res.outside_mm, names)
 
 

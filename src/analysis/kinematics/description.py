@@ -37,6 +37,7 @@ from dataclasses import dataclass, field
 from functools import cache
 from pathlib import Path
 
+from analysis import validate
 from analysis.kinematics.dh import DHRow, DHTable
 from analysis.paths import data_dir
 
@@ -50,10 +51,7 @@ __all__ = [
 ]
 
 STATUSES = ("printed", "derived", "assumed")
-MAX_PULSES_PER_REV = 10_000_000
-"""Upper bound of pulses (or encoder counts) per joint revolution: a 200-step motor at 256
-microsteps gives 51,200 and a 24-bit encoder 16,777,216 per motor turn; 10^7 per joint
-turn keeps every pulse count of a joint within +-5 x 10^6, far inside a DINT."""
+MAX_PULSES_PER_REV = validate.MAX_PULSES_PER_REV
 
 
 @dataclass(frozen=True)
@@ -149,13 +147,12 @@ def _resolve(v, values: dict, arm: str):
 
 
 def check_pulses_per_rev(value, where: str) -> int:
-    """A whole number of pulses per revolution in 1 .. :data:`MAX_PULSES_PER_REV`."""
-    ok = isinstance(value, (int, float)) and not isinstance(value, bool)
-    if ok and math.isfinite(value) and value == int(value) and 1 <= value <= MAX_PULSES_PER_REV:
-        return int(value)
-    raise ValueError(
-        f"{where}: pulses_per_rev = {value!r} must be a whole number in 1 .. {MAX_PULSES_PER_REV:,}"
-    )
+    """A whole number of pulses per revolution in 1 .. :data:`MAX_PULSES_PER_REV`
+    (:func:`analysis.validate.pulses_per_rev`)."""
+    try:
+        return validate.pulses_per_rev(value, "pulses_per_rev")
+    except ValueError as exc:
+        raise ValueError(f"{where}: {exc}") from None
 
 
 def _table_value(spec: dict, base: Path, tables: dict, where: str) -> float:
@@ -180,24 +177,94 @@ def _table_value(spec: dict, base: Path, tables: dict, where: str) -> float:
     hits = [r for r in rows if all(r[k] == str(v) for k, v in spec.get("match", {}).items())]
     if len(hits) != 1:
         raise ValueError(f"{where}: {len(hits)} rows of {path} match {spec.get('match')}")
-    text = hits[0][col]
-    try:
-        value = float(text)
-    except ValueError:
-        raise ValueError(f"{where}: {path} column {col}: {text!r} is not a number") from None
-    if not math.isfinite(value):
-        raise ValueError(f"{where}: {path} column {col}: {text!r} is not finite")
-    return value
+    return validate.parse_real(hits[0][col], f"{where}: {path} column {col}")
 
 
 def _number(spec, base: Path, tables: dict, where: str) -> float:
     if isinstance(spec, dict) and "table" in spec:
         return _table_value(spec, base, tables, where)
     if isinstance(spec, dict):
-        spec = spec.get("value")
-    if not isinstance(spec, (int, float)) or isinstance(spec, bool) or not math.isfinite(spec):
+        if "value" not in spec:
+            raise ValueError(f"{where}: needs a value (a number, or a table to read it from)")
+        spec = spec["value"]
+    if isinstance(spec, (list, dict, str)):  # not a number at all (the words used before)
         raise ValueError(f"{where}: {spec!r} is not a finite number")
-    return float(spec)
+    return validate.real(spec, where)
+
+
+def _text(d: dict, key: str, where: str, default: str) -> str:
+    v = d.get(key, default)
+    if not isinstance(v, str):
+        raise ValueError(f"{where}: {key} = {v!r} must be a string")
+    return v
+
+
+def _tables(d: dict, key: str, where: str) -> list[dict]:
+    """``[[key]]``: an array of tables (a missing key is an empty one)."""
+    v = d.get(key, [])
+    if not isinstance(v, list) or not all(isinstance(t, dict) for t in v):
+        raise ValueError(f"{where}: {key} must be an array of tables ([[{key}]]), not {v!r}")
+    return v
+
+
+def _row_value(v, where: str, key: str):
+    """A D-H row's length: a number [mm] or the name of a parameter."""
+    if isinstance(v, str):
+        return v
+    return validate.length_mm(v, f"{where} {key}")
+
+
+def _row_angle(v, where: str, key: str) -> float:
+    return validate.real(v, f"{where} {key}", "deg", lo=-validate.MAX_JOINT_DEG,
+                         hi=validate.MAX_JOINT_DEG, what="ten turns")  # fmt: skip
+
+
+def _check_rows(rows: list[dict], path: Path) -> tuple[dict, ...]:
+    out = []
+    for i, r in enumerate(rows, start=1):
+        where = f"{path.name} row {i}"
+        kind = r.get("kind", "revolute")
+        if kind not in ("revolute", "fixed"):
+            raise ValueError(f"{where}: kind {kind!r} is not 'revolute' or 'fixed'")
+        for key in ("link", "joint"):
+            _text(r, key, where, "")
+        row = dict(r)
+        for key in ("alpha_deg", "theta_offset_deg"):
+            if key in r:
+                row[key] = _row_angle(r[key], where, key)
+        for key in ("a", "d"):
+            if key in r:
+                row[key] = _row_value(r[key], where, key)
+        out.append(row)
+    return tuple(out)
+
+
+def _joint(j: dict, base: Path, tables: dict, path: Path, index: int) -> JointSpec:
+    name = j.get("name")
+    if not isinstance(name, str) or not name:
+        raise ValueError(f"{path.name} joint {index}: needs a name (a string), got {name!r}")
+    where = f"{path.name} joint {name}"
+    if "pulses_per_rev" not in j:
+        raise ValueError(f"{where}: needs pulses_per_rev (a whole number, or a table)")
+    spec = j["pulses_per_rev"]
+    ppr = check_pulses_per_rev(_number(spec, base, tables, where), where)
+    pstatus = spec.get("status", "printed") if isinstance(spec, dict) else "printed"
+    if pstatus not in STATUSES:
+        raise ValueError(f"{where}: pulses_per_rev status {pstatus!r} is not one of {STATUSES}")
+    limits = j.get("limits_deg", [-180.0, 180.0])
+    if not isinstance(limits, list) or len(limits) != 2:
+        raise ValueError(f"{where}: limits_deg = {limits!r} must be [lower, upper] in degrees")
+    lo, hi = (_row_angle(v, where, "limits_deg") for v in limits)
+    if not lo < hi:
+        raise ValueError(f"{where}: limits_deg [{lo:g}, {hi:g}] must have lower < upper")
+    return JointSpec(
+        name,
+        ppr,
+        math.radians(lo),
+        math.radians(hi),
+        _text(j, "limits_status", where, ""),
+        pstatus,
+    )
 
 
 def load_description(name: str, tables: dict | None = None) -> ArmDescription:
@@ -239,54 +306,47 @@ def _load(name: str, tables: tuple, stamp: tuple) -> ArmDescription:
         d = tomllib.loads(path.read_text(encoding="utf-8"))
     except tomllib.TOMLDecodeError as exc:
         raise ValueError(f"{path}: not valid TOML ({exc})") from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise ValueError(f"{path}: cannot read ({exc})") from None
     tables = dict(tables or {})
     base = path.parent.parent
     params = {}
-    for key, spec in d.get("parameters", {}).items():
+    raw_params = d.get("parameters", {})
+    if not isinstance(raw_params, dict):
+        raise ValueError(f"{path.name}: [parameters] must be a table, not {raw_params!r}")
+    for key, spec in raw_params.items():
         where = f"{path.name} parameter {key}"
-        status = spec.get("status", "printed") if isinstance(spec, dict) else "printed"
+        if isinstance(spec, dict):
+            status = _text(spec, "status", where, "printed")
+            unit = _text(spec, "unit", where, "mm")
+            source = _text(spec, "source", where, _text(spec, "note", where, ""))
+        else:
+            status, unit, source = "printed", "mm", ""
         if status not in STATUSES:
             raise ValueError(f"{where}: status {status!r} is not one of {STATUSES}")
-        params[key] = ParamSpec(
-            key,
-            _number(spec, base, tables, where),
-            spec.get("unit", "mm") if isinstance(spec, dict) else "mm",
-            status,
-            spec.get("source", spec.get("note", "")) if isinstance(spec, dict) else "",
-        )
-    rows = tuple(d.get("rows", ()))
+        value = _number(spec, base, tables, where)
+        if unit == "mm":
+            value = validate.length_mm(value, where)
+        params[key] = ParamSpec(key, value, unit, status, source)
+    rows = _check_rows(_tables(d, "rows", path.name), path)
     if not rows:
         raise ValueError(f"{path}: no [[rows]]")
-    joints = []
-    for j in d.get("joints", ()):
-        where = f"{path.name} joint {j.get('name', '?')}"
-        ppr = check_pulses_per_rev(_number(j["pulses_per_rev"], base, tables, where), where)
-        spec = j["pulses_per_rev"]
-        pstatus = spec.get("status", "printed") if isinstance(spec, dict) else "printed"
-        if pstatus not in STATUSES:
-            raise ValueError(f"{where}: pulses_per_rev status {pstatus!r} is not one of {STATUSES}")
-        lo, hi = (float(v) for v in j.get("limits_deg", (-180.0, 180.0)))
-        if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
-            raise ValueError(f"{where}: limits_deg [{lo}, {hi}] must be finite with lower < upper")
-        joints.append(
-            JointSpec(
-                j["name"],
-                ppr,
-                math.radians(lo),
-                math.radians(hi),
-                j.get("limits_status", ""),
-                pstatus,
-            )
-        )
+    joints = [
+        _joint(j, base, tables, path, i)
+        for i, j in enumerate(_tables(d, "joints", path.name), start=1)
+    ]
     n_rev = sum(r.get("kind", "revolute") == "revolute" for r in rows)
     if len(joints) != n_rev:
         raise ValueError(f"{path}: {len(joints)} [[joints]] for {n_rev} revolute rows")
+    convention = _text(d, "convention", path.name, "standard")
+    if convention not in ("standard", "modified"):
+        raise ValueError(f"{path.name}: convention {convention!r} is not 'standard' or 'modified'")
     desc = ArmDescription(
-        d.get("name", path.stem),
-        d.get("title", path.stem),
-        d.get("paper", ""),
-        d.get("closed_form", path.stem),
-        d.get("convention", "standard"),
+        _text(d, "name", path.name, path.stem),
+        _text(d, "title", path.name, path.stem),
+        _text(d, "paper", path.name, ""),
+        _text(d, "closed_form", path.name, path.stem),
+        convention,
         params,
         rows,
         tuple(joints),

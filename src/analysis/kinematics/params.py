@@ -69,44 +69,66 @@ def load_table3(path: str | Path | None = None) -> Params:
 
 @cache
 def _load_table3(path: Path, mtime_ns: int, size: int) -> Params:
-    """Read once per file version (the audit asks for Table 3 hundreds of times)."""
-    import pandas as pd
+    """Read once per file version (the audit asks for Table 3 hundreds of times). Every cell
+    is read by the rules of :func:`analysis.validate.parse_real` (the command line's and the
+    batch CSV's): an empty cell, ``nan``, ``inf`` or ``1_000`` is refused, naming the line
+    and the column."""
+    import csv
+
+    from analysis import validate
 
     try:
-        df = pd.read_csv(path)
-    except FileNotFoundError:
-        raise ValueError(f"{path}: no such file") from None
-    missing = [c for c in TABLE3_COLUMNS if c not in df.columns]
+        with path.open(newline="", encoding="utf-8-sig") as fh:
+            reader = csv.reader(fh, strict=True)
+            header = next(reader, None)
+            body = [(reader.line_num, row) for row in reader if row]
+    except (OSError, UnicodeDecodeError, csv.Error) as exc:
+        raise ValueError(f"{path}: cannot read as CSV ({exc})") from None
+    header = [h.strip() for h in header or ()]
+    missing = [c for c in TABLE3_COLUMNS if c not in header]
     if missing:
         raise ValueError(f"{path}: missing column(s) {', '.join(missing)}")
-    if len(df) != 3:
-        raise ValueError(f"{path}: {len(df)} rows; the arm has 3 links (waist, shoulder, elbow)")
-    for col in TABLE3_COLUMNS[1:]:
-        try:
-            df[col] = df[col].astype(float)
-        except ValueError as exc:
-            raise ValueError(f"{path} column {col}: not a number ({exc})") from None
-    alpha = df["alpha_deg"].tolist()
+    if len(body) != 3:
+        raise ValueError(f"{path}: {len(body)} rows; the arm has 3 links (waist, shoulder, elbow)")
+    rows = []
+    for line, cells in body:
+        if len(cells) != len(header):
+            raise ValueError(
+                f"{path} line {line}: {len(cells)} fields, the header has {len(header)}"
+            )
+        raw = dict(zip(header, cells, strict=True))
+        row = {"link": raw["link"]}
+        for col in TABLE3_COLUMNS[1:]:
+            row[col] = validate.parse_real(raw[col], f"{path} line {line} column {col}")
+        for col in ("step_angle_deg", "resolution_deg"):
+            if not 0 < row[col] <= 360:
+                raise ValueError(
+                    f"{path} line {line} column {col}: {row[col]:g} deg must be > 0 and "
+                    "<= 360 deg"
+                )
+        rows.append(row)
+    alpha = [r["alpha_deg"] for r in rows]
     if alpha != [90.0, 0.0, 0.0]:
         raise ValueError(f"{path}: alpha_deg = {alpha}; the closed-form IK needs [90, 0, 0]")
-    for _, row in df.iterrows():
+    for row in rows:
         rad = math.radians(row["alpha_deg"])
-        if (
-            abs(math.cos(rad) - row["cos_alpha"]) > 1e-12
-            or abs(math.sin(rad) - row["sin_alpha"]) > 1e-12
+        if not (
+            abs(math.cos(rad) - row["cos_alpha"]) <= 1e-12
+            and abs(math.sin(rad) - row["sin_alpha"]) <= 1e-12
         ):
             raise ValueError(f"{path}: link {row['link']}: cos/sin columns disagree with alpha")
-    a, d = df["a_mm"].tolist(), df["d_mm"].tolist()
+    a, d = [r["a_mm"] for r in rows], [r["d_mm"] for r in rows]
     if a[0] != 0.0 or d[1] != 0.0 or d[2] != 0.0:
         raise ValueError(f"{path}: need a_1 = 0 and d_2 = d_3 = 0 (Table 1), got a = {a}, d = {d}")
-    ppr = tuple(int(v) if float(v).is_integer() else float(v) for v in df["pulses_per_rev"])
     return ArmParams(
         L1=d[0],
         L2=a[1],
         L3=a[2],
-        pulses_per_rev=ppr,
-        step_angle_deg=tuple(df["step_angle_deg"]),
-        resolution_deg=tuple(df["resolution_deg"]),
+        pulses_per_rev=tuple(
+            int(v) if float(v).is_integer() else v for v in (r["pulses_per_rev"] for r in rows)
+        ),
+        step_angle_deg=tuple(r["step_angle_deg"] for r in rows),
+        resolution_deg=tuple(r["resolution_deg"] for r in rows),
     )
 
 

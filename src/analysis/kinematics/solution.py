@@ -17,11 +17,14 @@ from typing import NamedTuple
 import numpy as np
 import numpy.typing as npt
 
+from analysis import validate
 from analysis.kinematics.ops import Ops
 from analysis.kinematics.status import Status
+from analysis.validate import MAX_JOINT_DEG, MAX_TOL_MM
 
 __all__ = [
     "DEFAULT_TOL_MM",
+    "JOINT_STOP_SLACK_RAD",
     "MAX_JOINT_DEG",
     "MAX_TOL_MM",
     "BaseAxisError",
@@ -40,13 +43,12 @@ DEFAULT_TOL_MM = 1e-6
 the shell (cos theta3 clipped to +-1), and targets this close to the base axis count as on
 it. 1 nm is far below any mechanical meaning and far above float64 round-off at this
 scale (|p| ~ 1e3 mm, eps * |p| ~ 2e-13 mm)."""
-MAX_TOL_MM = 1.0
-"""Largest accepted tolerance [mm]: a solution "on the shell" may miss the target by up to
-the tolerance, and more than a millimetre would pass a visibly wrong pose as solved."""
-MAX_JOINT_DEG = 3600.0
-"""Largest accepted |joint angle| [deg] (ten turns): beyond it an input is a mistake of unit
-or of digits, not a pose."""
-
+JOINT_STOP_SLACK_RAD = 1e-12
+"""A joint angle this far past a stop counts as on it (and is returned as the stop): the
+backends compute the same angle to a few ulps apart (the compiled ``atan2`` is not libm's,
+4.4e-16 rad per ulp near pi), so without it a pose exactly on a stop (the GR-1's theta3 =
+-135 deg) could be ok on one backend and "joint-limits" on the other. 1e-12 rad moves a
+point 1 m out by 1e-9 mm. The PLC programs apply the limits as described (no band)."""
 
 class UnreachableError(ValueError):
     """The target lies outside the reachable set; ``distance_mm`` says how far."""
@@ -125,69 +127,70 @@ def as_points(
     inputs: Sequence[str] = ("x", "y", "z"),
     *,
     finite: bool = True,
+    units: Sequence[str] | None = None,
 ) -> npt.NDArray[np.float64]:
     """Validate and convert targets to a float array of shape (..., k), k = len(inputs)
-    (default (..., 3) = x, y, z [mm]).
+    (default (..., 3) = x, y, z [mm]), through :mod:`analysis.validate`: real numbers only
+    (complex, masked and boolean input refused), finite, coordinates ("mm") within
+    +-:data:`~analysis.validate.MAX_COORD_MM`, angles ("rad") within
+    +-:data:`~analysis.validate.MAX_ANGLE_RAD`.
 
-    Raises ``ValueError`` naming the offending value for text, wrong shapes, NaN or inf
-    (``finite=False``: the caller checks finiteness itself, as the compiled kernel does).
+    Raises ``ValueError`` (:class:`~analysis.validate.InvalidValue`) naming the offending value
+    and the limit. ``finite=False``: the type and shape only; the caller checks the values
+    itself, as the compiled kernel does in its input copy.
     """
-    try:
-        arr = np.asarray(p, dtype=float)
-    except (TypeError, ValueError) as exc:
-        raise ValueError(f"{name} {p!r} is not numeric: {exc}") from None
+    arr = validate.real_array(p, name, finite=False)
     k = len(inputs)
     if arr.ndim == 0 or arr.shape[-1] != k:
         what = "(x, y, z) in mm" if k == 3 else "(" + ", ".join(inputs) + ")"
-        raise ValueError(f"{name} has shape {arr.shape}; expected (..., {k}) = {what}")
-    if not finite or np.isfinite(arr.sum()):  # one pass: NaN or inf make the sum non-finite
-        return arr
-    bad = ~np.isfinite(arr)  # (or the sum overflowed: then nothing is bad)
-    if bad.any():
-        idx = np.argwhere(bad)[0]
-        where = "" if arr.ndim == 1 else f" at index {tuple(int(i) for i in idx[:-1])}"
-        raise ValueError(
-            f"{name}{where} has a non-finite coordinate: {arr[tuple(idx[:-1])].tolist()}"
+        raise validate.InvalidValue(
+            f"{name} has shape {arr.shape}; expected (..., {k}) = {what}", name
         )
+    if not finite:
+        return arr
+    if not np.isfinite(arr.sum()):  # one pass: NaN or inf make the sum non-finite
+        bad = ~np.isfinite(arr)  # (or the sum overflowed: then nothing is bad)
+        if bad.any():
+            idx = np.argwhere(bad)[0]
+            where = "" if arr.ndim == 1 else f" at index {tuple(int(i) for i in idx[:-1])}"
+            raise validate.InvalidValue(
+                f"{name}{where} has a non-finite coordinate: {arr[tuple(idx[:-1])].tolist()}",
+                name,
+            )
+    validate.check_inputs(arr, units or ("mm",) * k, inputs, name)
     return arr
 
 
 def check_joints(q: npt.ArrayLike, n: int, name: str = "joint array") -> npt.NDArray[np.float64]:
-    """Validate joint angles (..., n) [rad]: numeric, finite, within +-:data:`MAX_JOINT_DEG`."""
-    try:
-        q = np.asarray(q, dtype=float)
-    except (TypeError, ValueError) as exc:
-        raise ValueError(f"{name} {q!r} is not numeric: {exc}") from None
+    """Validate joint angles (..., n) [rad]: real, finite, within +-:data:`MAX_JOINT_DEG`."""
+    q = validate.real_array(q, name, finite=False)
     if q.ndim == 0 or q.shape[-1] != n:
-        raise ValueError(f"{name} has shape {q.shape}; expected (..., {n})")
+        raise validate.InvalidValue(f"{name} has shape {q.shape}; expected (..., {n})", name)
     limit = math.radians(MAX_JOINT_DEG)
-    if q.size and -limit <= q.min() and q.max() <= limit:  # NaN fails both: one pass each
+    if not q.size or (-limit <= q.min() and q.max() <= limit):  # NaN fails both: one pass each
         return q
     bad = ~np.isfinite(q) | (np.abs(q) > limit)
-    if bad.any():
-        idx = tuple(int(i) for i in np.argwhere(bad)[0])
-        v = q[idx]
-        what = "is not finite" if not np.isfinite(v) else "is beyond"
-        raise ValueError(
-            f"{name}: theta{idx[-1] + 1} = {math.degrees(v) if np.isfinite(v) else v:g} deg "
-            f"{what} (accepted: finite, |theta| <= {MAX_JOINT_DEG:g} deg, ten turns)"
-        )
-    return q
+    idx = tuple(int(i) for i in np.argwhere(bad)[0])
+    v = float(q[idx])
+    what = "is not finite" if not math.isfinite(v) else "is beyond"
+    raise validate.InvalidValue(
+        f"{name}: theta{idx[-1] + 1} = {math.degrees(v) if math.isfinite(v) else v:g} deg "
+        f"{what} (accepted: finite, |theta| <= {MAX_JOINT_DEG:g} deg, ten turns)",
+        name,
+    )
 
 
 def check_tol(tol) -> float:
     """A distance tolerance [mm] in 0 .. :data:`MAX_TOL_MM`, else ValueError."""
-    if not (
-        isinstance(tol, (int, float, np.floating, np.integer))
-        and not isinstance(tol, bool)
-        and math.isfinite(tol)
-        and 0 <= tol <= MAX_TOL_MM
-    ):
-        raise ValueError(
+    try:
+        return validate.tolerance_mm(tol, "tol")
+    except ValueError:
+        raise validate.InvalidValue(
             f"tol = {tol!r} mm: the tolerance must be a finite number >= 0 mm "
-            f"and <= {MAX_TOL_MM:g} mm"
-        )
-    return float(tol)
+            f"and <= {MAX_TOL_MM:g} mm",
+            "tol",
+            tol,
+        ) from None
 
 
 # --------------------------------------------------------------------------------------------
@@ -264,7 +267,8 @@ def solve_body(
         within = None
         for qj, lim in zip(q, limits or [None] * len(q), strict=True):
             if lim is not None:
-                inside = m.and_(m.ge(qj, lim[0]), m.le(qj, lim[1]))
+                lo, hi = lim[0] - JOINT_STOP_SLACK_RAD, lim[1] + JOINT_STOP_SLACK_RAD
+                inside = m.and_(m.ge(qj, lo), m.le(qj, hi))
                 ok = m.and_(ok, inside)
                 within = inside if within is None else m.and_(within, inside)
         if has_branch and within is not None:
@@ -273,7 +277,9 @@ def solve_body(
             )  # fmt: skip
             reason = m.select(stop, float(Status.JOINT_LIMITS), reason)
         out[f"ok:{b}"] = ok
-        for j, qj in enumerate(q):
+        for j, (qj, lim) in enumerate(zip(q, limits or [None] * len(q), strict=True)):
+            if lim is not None:  # within the slack past a stop: the stop itself
+                qj = m.clip(qj, lim[0], lim[1])
             out[f"q:{b}:{j}"] = m.select(ok, qj, math.nan)
         any_ok = ok if any_ok is None else m.or_(any_ok, ok)
         first_reason = reason if first_reason is None else first_reason

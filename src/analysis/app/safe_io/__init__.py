@@ -32,10 +32,12 @@ The package: ``_write`` (outputs), ``_read`` (inputs), ``_errors`` (both error c
 from __future__ import annotations
 
 from analysis.app.safe_io._errors import InputError, OutputError
-from analysis.app.safe_io._read import iter_table_chunks, read_table
+from analysis.app.safe_io._read import Records, iter_record_chunks, iter_table_chunks, read_table
 from analysis.app.safe_io._write import (
     atomic_writer,
     check_paths,
+    output_stream,
+    sweep_stale,
     write_many_atomic,
     write_text_atomic,
 )
@@ -43,10 +45,14 @@ from analysis.app.safe_io._write import (
 __all__ = [
     "InputError",
     "OutputError",
+    "Records",
     "atomic_writer",
     "check_paths",
+    "iter_record_chunks",
     "iter_table_chunks",
+    "output_stream",
     "read_table",
+    "sweep_stale",
     "write_many_atomic",
     "write_text_atomic",
 ]

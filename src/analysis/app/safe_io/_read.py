@@ -4,16 +4,30 @@ from __future__ import annotations
 
 import codecs
 import csv
-import math
+import io
+import itertools
+import re
+import sys
 from collections.abc import Iterator, Sequence
+from dataclasses import dataclass
 from typing import IO, Any
 
 import numpy as np
 import numpy.typing as npt
 
 from analysis.app.safe_io._errors import InputError, PathLike
+from analysis.validate import number_problem
 
-__all__ = ["iter_table_chunks", "read_table"]
+__all__ = ["DELIMITERS", "Records", "iter_record_chunks", "iter_table_chunks", "read_table"]
+
+DELIMITERS = (",", ";", "\t", "|")
+"""Field separators a header is sniffed for (``delimiter=None``), in order of preference."""
+CHUNK_BYTES = 32 << 20
+"""A chunk ends before its cells take more than about this much memory (32 MB as Python
+strings: text length plus about 56 bytes per cell), whatever ``chunk_rows`` says: a file
+of 10,000-character cells or of 200,000 columns streams in chunks of a few rows."""
+_CELL_OVERHEAD = 56  # bytes of a short str object and its list slot
+_PLAIN = re.compile(r"[0-9eE.+\- \t]*")  # the characters of a plain number (fast path)
 
 _SHOW = 40  # characters of a cell value quoted in a message
 
@@ -26,6 +40,8 @@ def _open_text(path: PathLike, encoding: str) -> IO[str]:
     """Open for csv: lines end only at \\n (a \\r\\n ending stays), a UTF-8 BOM is dropped."""
     if codecs.lookup(encoding).name == "utf-8":
         encoding = "utf-8-sig"
+    if str(path) == "-":  # standard input
+        return io.TextIOWrapper(sys.stdin.buffer, encoding=encoding, newline="\n")
     try:
         return open(path, encoding=encoding, newline="\n")
     except OSError as exc:
@@ -38,6 +54,8 @@ def _decode_error(path: PathLike, encoding: str, exc: UnicodeDecodeError) -> Inp
     No line break byte occurs inside a multibyte character of an ASCII-compatible encoding,
     so decoding line by line fails on the same bytes as decoding the whole file.
     """
+    if str(path) == "-":
+        return InputError(f"not valid {encoding} text ({exc.reason})", path)
     with open(path, "rb") as fh:
         for number, raw in enumerate(fh, start=1):
             try:
@@ -69,8 +87,12 @@ class _Table:
         numeric: Sequence[str],
         allow_extra: bool,
         encoding: str,
-        delimiter: str,
+        delimiter: str | None,
+        bad_numbers: str = "raise",
     ) -> None:
+        if bad_numbers not in ("raise", "mark"):
+            raise ValueError(f"bad_numbers must be 'raise' or 'mark', not {bad_numbers!r}")
+        self.bad_numbers = bad_numbers
         for group, names in (("required", required), ("optional", optional)):
             if isinstance(names, str) or len(set(names)) != len(names):
                 raise ValueError(f"{group} must be a sequence of distinct column names")
@@ -99,9 +121,22 @@ class _Table:
     def open(self) -> None:
         """Read and check the header; sets ``names``, ``keep``, ``header_line``."""
         self.file = _open_text(self.path, self.encoding)
-        self.reader = csv.reader(self.file, delimiter=self.delimiter, strict=True)
         header = None
         try:
+            peeked: list[str] = []  # the lines up to the first non-blank one, for the sniff
+            try:
+                for line in self.file:
+                    peeked.append(line)
+                    if line.strip():
+                        break
+            except UnicodeDecodeError as exc:
+                raise _decode_error(self.path, self.encoding, exc) from None
+            self.first_text = peeked[-1] if peeked else ""
+            if self.delimiter is None:
+                self.delimiter = _sniff(self.first_text, self.required)
+            self.reader = csv.reader(
+                itertools.chain(peeked, self.file), delimiter=self.delimiter, strict=True
+            )
             while header is None:
                 previous = self.reader.line_num
                 try:
@@ -148,7 +183,7 @@ class _Table:
         if missing:
             raise InputError(
                 f"missing required column(s) {', '.join(missing)} (the header has: "
-                f"{', '.join(names)})",
+                f"{', '.join(names)}){_delimiter_hint(self.first_text, self.delimiter)}",
                 self.path,
                 self.header_line,
             )
@@ -163,6 +198,7 @@ class _Table:
         self.width = len(names)
         self.keep = list(enumerate(names))
         self.names = names
+        self.header = header  # as written (names unstripped)
 
     def chunks(self, chunk_rows: int | None) -> Iterator[tuple[int, dict[str, np.ndarray]]]:
         """Yield (first line, columns) for every ``chunk_rows`` records (all if None)."""
@@ -170,11 +206,21 @@ class _Table:
             yield from self._chunks(chunk_rows)
 
     def _chunks(self, chunk_rows: int | None) -> Iterator[tuple[int, dict[str, np.ndarray]]]:
+        for columns, ends in self._raw_chunks(chunk_rows, None):
+            yield self._chunk(columns, ends)
+
+    def _raw_chunks(
+        self, chunk_rows: int | None, chunk_bytes: int | None
+    ) -> Iterator[tuple[list[list[str]], list[int]]]:
+        """(columns of raw cells, the line each record ends on) per chunk of at most
+        ``chunk_rows`` records and about ``chunk_bytes`` of cells."""
         # Cells go straight into per-column lists: keeping the csv row lists alive instead
         # makes the cyclic garbage collector rescan them and halves the throughput.
         reader, width = self.reader, self.width
         columns: list[list[str]] = [[] for _ in range(width)]
         ends: list[int] = []  # physical line each record ends on
+        row_cost = _CELL_OVERHEAD * width
+        size = 0
         try:
             for row in reader:
                 if len(row) != width:
@@ -185,10 +231,12 @@ class _Table:
                 for column, cell in zip(columns, row):  # noqa: B905 - lengths checked above
                     column.append(cell)
                 ends.append(reader.line_num)
-                if len(ends) == chunk_rows:
+                if chunk_bytes is not None:
+                    size += row_cost + sum(map(len, row))
+                if len(ends) == chunk_rows or (chunk_bytes is not None and size >= chunk_bytes):
                     self.last_line = ends[-1]
-                    yield self._chunk(columns, ends)
-                    columns, ends = [[] for _ in range(width)], []
+                    yield columns, ends
+                    columns, ends, size = [[] for _ in range(width)], [], 0
         except csv.Error as exc:
             start = max(self.last_line, ends[-1] if ends else 0) + 1
             if "unexpected end of data" in str(exc):
@@ -199,7 +247,7 @@ class _Table:
         except UnicodeDecodeError as exc:
             raise _decode_error(self.path, self.encoding, exc) from None
         if ends:
-            yield self._chunk(columns, ends)
+            yield columns, ends
 
     def _field_count_error(self, row: list[str], last: int) -> None:
         first = _first_line(row, last)
@@ -229,38 +277,121 @@ class _Table:
         }
 
     def _numbers(
-        self, columns: list[list[str]], index: int, ends: list[int], name: str
+        self,
+        columns: list[list[str]],
+        index: int,
+        ends: list[int],
+        name: str,
+        problems: list[str | None] | None = None,
     ) -> np.ndarray:
+        """The numeric column ``index``; a bad cell raises, or (``problems`` given) becomes
+        NaN with its reason in ``problems`` (the first per record)."""
         cells = columns[index]
         try:
             values = np.fromiter(map(float, cells), dtype=np.float64, count=len(cells))
-            good = "_" not in "".join(cells) and bool(np.isfinite(values).all())
+            # float() also takes 1_000, non-ASCII digits, nan and inf: the rule is
+            # analysis.validate's, which the plain characters and finiteness ensure
+            good = bool(_PLAIN.fullmatch("".join(cells))) and bool(np.isfinite(values).all())
         except ValueError:
             good = False
+            values = np.empty(len(cells))
         if good:
             return values
         for i, cell in enumerate(cells):
             problem = _number_problem(cell)
-            if problem:
-                line = _first_line([c[i] for c in columns], ends[i])
+            if problem is None:
+                values[i] = float(cell)
+                continue
+            line = _first_line([c[i] for c in columns], ends[i])
+            if problems is None:
                 raise InputError(problem, self.path, line, name)
-        raise AssertionError("unreachable: a bad cell was detected but not found")
+            values[i] = np.nan
+            if problems[i] is None:
+                problems[i] = str(InputError(problem, self.path, line, name))
+        return values
+
+    def records(
+        self, chunk_rows: int | None, chunk_bytes: int | None
+    ) -> Iterator[Records]:
+        """The chunks as :class:`Records` (raw text of every cell, numbers parsed)."""
+        with self.file:
+            for columns, ends in self._raw_chunks(chunk_rows, chunk_bytes):
+                n = len(ends)
+                problems: list[str | None] | None = (
+                    [None] * n if self.bad_numbers == "mark" else None
+                )
+                numbers = {
+                    name: self._numbers(columns, index, ends, name, problems)
+                    for index, name in self.keep
+                    if name in self.numeric
+                }
+                yield Records(ends, columns, numbers, problems or [None] * n)
+
+
+@dataclass
+class Records:
+    """One chunk of :func:`iter_record_chunks`.
+
+    Attributes
+    ----------
+    lines : list of int
+        The physical line each record ends on (where it starts, unless a quoted cell holds
+        a line break).
+    cells : list of list of str
+        Per column, in header order, every cell's text exactly as read (after CSV unquoting).
+    numbers : dict of str to ndarray
+        The numeric columns parsed (float64; NaN where a cell is bad and ``bad_numbers`` is
+        "mark").
+    problems : list of str or None
+        Per record: None, or the one-line reason (file, line, column) of its first bad
+        numeric cell.
+    """
+
+    lines: list[int]
+    cells: list[list[str]]
+    numbers: dict[str, np.ndarray]
+    problems: list[str | None]
 
 
 def _number_problem(cell: str) -> str | None:
-    """Why ``cell`` is not a finite number, or None if it is one."""
-    text = cell.strip()
-    if not text:
+    """Why ``cell`` is not a finite number (:func:`analysis.validate.number_problem`), or
+    None if it is one."""
+    if not cell.strip():
         return "empty cell; a number is required"
-    try:
-        if "_" in text:
-            raise ValueError
-        value = float(text)
-    except ValueError:
-        return f"{_show(cell)} is not a number"
-    if not math.isfinite(value):
-        return f"{_show(cell)} is not a finite number"
-    return None
+    return number_problem(cell)
+
+
+def _split(line: str, delimiter: str) -> list[str]:
+    return [name.strip().strip('"').strip() for name in line.rstrip("\r\n").split(delimiter)]
+
+
+def _sniff(line: str, required: Sequence[str]) -> str:
+    """The delimiter of a header line: the first of :data:`DELIMITERS` under which it has
+    every required column (else the one that splits it into the most fields, else ",")."""
+    for d in DELIMITERS:
+        names = _split(line, d)
+        if required and all(r in names for r in required):
+            return d
+    if not required:
+        counts = {d: line.count(d) for d in DELIMITERS}
+        best = max(counts, key=lambda d: counts[d])
+        if counts[best]:
+            return best
+    return ","
+
+
+def _delimiter_hint(line: str, used: str | None) -> str:
+    """A second sentence when the header looks separated by another delimiter than ``used``."""
+    name = {"\t": "tab", ",": "','", ";": "';'", "|": "'|'"}
+    others = [d for d in DELIMITERS if d != used and line.count(d) > line.count(used or ",")]
+    if not others:
+        return ""
+    d = max(others, key=line.count)
+    flag = "\\t" if d == "\t" else d
+    return (
+        f"; the header looks {name[d]}-separated, not {name.get(used or ',', repr(used))}: "
+        f"give --delimiter '{flag}'"
+    )
 
 
 def iter_table_chunks(
@@ -314,6 +445,42 @@ def iter_table_chunks(
         yield from table.chunks(chunk_rows)
 
     return generate()
+
+
+def iter_record_chunks(
+    path: PathLike,
+    required: Sequence[str] = (),
+    optional: Sequence[str] = (),
+    numeric: Sequence[str] = (),
+    *,
+    allow_extra: bool = False,
+    chunk_rows: int = 100_000,
+    chunk_bytes: int = CHUNK_BYTES,
+    encoding: str = "utf-8",
+    delimiter: str | None = None,
+    bad_numbers: str = "raise",
+) -> tuple[list[str], Iterator[Records]]:
+    """Stream a CSV table as :class:`Records`: every cell's text as given (for an output
+    that echoes its input byte for byte) and the numeric columns parsed.
+
+    Memory is bounded by the chunk, in rows (``chunk_rows``) and in bytes (``chunk_bytes``,
+    estimated as Python strings): text cells stay Python strings, never fixed-width arrays.
+    ``path`` may be ``"-"`` (standard input). ``delimiter=None`` sniffs it from the header
+    (:data:`DELIMITERS`: the first under which every required column is there). With
+    ``bad_numbers="mark"`` a bad numeric cell (not a number by
+    :func:`analysis.validate.parse_real`'s rules) does not raise: its record carries the
+    reason in ``problems`` and NaN in ``numbers``. Structural errors (header, field counts,
+    quoting, encoding) raise :class:`InputError` as :func:`read_table` does.
+
+    Returns ``(header, chunks)``: the header's names as written, and the iterator.
+    """
+    if isinstance(chunk_rows, bool) or not isinstance(chunk_rows, int) or chunk_rows < 1:
+        raise ValueError(f"chunk_rows must be a positive integer, not {chunk_rows!r}")
+    table = _Table(
+        path, required, optional, numeric, allow_extra, encoding, delimiter, bad_numbers
+    )
+    table.open()
+    return list(table.header), table.records(chunk_rows, chunk_bytes)
 
 
 def read_table(

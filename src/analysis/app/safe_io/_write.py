@@ -5,9 +5,11 @@ from __future__ import annotations
 import contextlib
 import errno
 import os
+import re
 import secrets
 import shutil
 import stat
+import sys
 import tempfile
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 from pathlib import Path
@@ -15,7 +17,14 @@ from typing import IO, Any
 
 from analysis.app.safe_io._errors import OutputError, PathLike
 
-__all__ = ["atomic_writer", "check_paths", "write_many_atomic", "write_text_atomic"]
+__all__ = [
+    "atomic_writer",
+    "check_paths",
+    "output_stream",
+    "sweep_stale",
+    "write_many_atomic",
+    "write_text_atomic",
+]
 
 # errno values a write to an already open file can fail with; an OSError with one of these
 # raised inside an atomic_writer block is reported as "cannot write <output>".
@@ -45,12 +54,74 @@ def _umask() -> int:
     return mask
 
 
-def _target(path: PathLike, make_parents: bool) -> Path:
-    """Where ``path`` really is (a symlink is written through), after the output checks."""
+_KINDS = (
+    (stat.S_ISCHR, "a character device"),
+    (stat.S_ISBLK, "a block device"),
+    (stat.S_ISFIFO, "a FIFO (named pipe)"),
+    (stat.S_ISSOCK, "a socket"),
+)
+
+
+def _not_regular(path: PathLike) -> str | None:
+    """What ``path`` is if it exists and is neither a regular file nor a directory (symlinks
+    followed: /dev/stdout is a pipe or a terminal), else None."""
+    try:
+        mode = os.stat(path).st_mode
+    except OSError:
+        return None
+    for test, what in _KINDS:
+        if test(mode):
+            return what
+    return None
+
+
+def _refuse_special(path: PathLike) -> None:
+    what = _not_regular(path)
+    if what:
+        raise OutputError(
+            f"output {os.fspath(path)} is {what}, not a regular file: it would be replaced by "
+            "one; write to '-' (standard output) and redirect instead",
+            path,
+        )
+
+
+def _make_parents(parent: Path, path: PathLike) -> list[Path]:
+    """Create ``parent`` and its missing ancestors; return those created, outermost first."""
+    missing = []
+    d = parent
+    while not d.exists():
+        missing.append(d)
+        if d.parent == d:
+            break
+        d = d.parent
+    created = []
+    try:
+        for d in reversed(missing):
+            d.mkdir()
+            created.append(d)
+    except OSError as exc:
+        _remove_dirs(created)
+        raise _cannot_write(path, exc) from exc
+    return created
+
+
+def _remove_dirs(created: Sequence[Path]) -> None:
+    """Remove directories this process created, innermost first, if they are empty."""
+    for d in reversed(created):
+        with contextlib.suppress(OSError):
+            d.rmdir()
+
+
+def _target(path: PathLike, make_parents: bool, created: list[Path] | None = None) -> Path:
+    """Where ``path`` really is (a symlink is written through), after the output checks.
+
+    Missing parent directories are created with ``make_parents`` (and appended to
+    ``created``, so that a failure can remove them again)."""
     given = Path(path)
     target = Path(os.path.realpath(given)) if given.is_symlink() else given
     if target.is_dir():
         raise OutputError(f"cannot write {os.fspath(path)}: it is a directory", path)
+    _refuse_special(target)
     parent = target.parent
     if not parent.is_dir():
         if parent.exists():
@@ -59,10 +130,9 @@ def _target(path: PathLike, make_parents: bool) -> Path:
             raise OutputError(
                 f"cannot write {os.fspath(path)}: directory {parent} does not exist", path
             )
-        try:
-            parent.mkdir(parents=True, exist_ok=True)
-        except OSError as exc:
-            raise _cannot_write(path, exc) from exc
+        made = _make_parents(parent, path)
+        if created is not None:
+            created.extend(made)
     return target
 
 
@@ -74,14 +144,56 @@ def _mode_for(target: Path) -> int:
         return 0o666 & ~_umask()
 
 
+def _tmp_prefix(target: Path) -> str:
+    return f".{target.name[:100]}."
+
+
 def _mkstemp(target: Path, path: PathLike) -> tuple[int, Path]:
+    """A temporary file beside ``target``, named ``.<name>.<pid>.<random>.tmp``: the writer's
+    process id lets a later run tell a file whose writer was killed (:func:`sweep_stale`)."""
+    sweep_stale(target)
     try:
         fd, tmp = tempfile.mkstemp(
-            prefix=f".{target.name[:100]}.", suffix=".tmp", dir=target.parent
+            prefix=f"{_tmp_prefix(target)}{os.getpid()}.", suffix=".tmp", dir=target.parent
         )
     except OSError as exc:
         raise _cannot_write(path, exc) from exc
     return fd, Path(tmp)
+
+
+def _alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except OSError:  # EPERM: it exists, another user's
+        return True
+    return True
+
+
+def sweep_stale(target: PathLike) -> list[Path]:
+    """Remove the temporary files that writers of ``target`` left when they were killed
+    (SIGKILL, power loss: no handler ran): ``.<name>.<pid>.*.tmp`` beside it whose process
+    ``pid`` no longer exists. Files of a running writer are kept. Returns those removed.
+
+    A killed writer's file can outlive it only until the next write of the same output;
+    SIGTERM, SIGHUP and SIGINT remove it at once (:mod:`analysis.app.cli` turns them into
+    exceptions, and :func:`atomic_writer` removes its file on any exception)."""
+    target = Path(target)
+    pattern = re.compile(re.escape(_tmp_prefix(target)) + r"(\d+)\.[^./]+\.tmp")
+    removed = []
+    try:
+        names = os.listdir(target.parent)
+    except OSError:
+        return removed
+    for name in names:
+        match = pattern.fullmatch(name)
+        if match and int(match.group(1)) != os.getpid() and not _alive(int(match.group(1))):
+            stale = target.parent / name
+            with contextlib.suppress(OSError):
+                stale.unlink()
+                removed.append(stale)
+    return removed
 
 
 def _unlink(path: Path | None) -> None:
@@ -187,7 +299,8 @@ def atomic_writer(
     newline : str, optional
         As for :func:`open`; pass ``""`` when handing the file to :func:`csv.writer`.
     make_parents : bool, default False
-        Create a missing parent directory instead of raising :class:`OutputError`.
+        Create a missing parent directory instead of raising :class:`OutputError` (removed
+        again if the write fails).
 
     Yields
     ------
@@ -218,18 +331,23 @@ def atomic_writer(
     """
     if mode not in ("w", "wt", "wb"):
         raise ValueError(f"mode must be 'w', 'wt' or 'wb', not {mode!r}")
-    target = _target(path, make_parents)
-    with _staged(path, target, mode, encoding, newline) as (fh, tmp):
-        yield fh
+    created: list[Path] = []
+    target = _target(path, make_parents, created)
     replaced = False
     try:
-        os.replace(tmp[0], target)
-        replaced = True
-    except OSError as exc:
-        raise _cannot_write(path, exc) from exc
+        with _staged(path, target, mode, encoding, newline) as (fh, tmp):
+            yield fh
+        try:
+            os.replace(tmp[0], target)
+            replaced = True
+        except OSError as exc:
+            raise _cannot_write(path, exc) from exc
+        finally:
+            if not replaced:
+                _unlink(tmp[0])
     finally:
         if not replaced:
-            _unlink(tmp[0])
+            _remove_dirs(created)  # no directory left behind by a failed write
     _fsync_dir(target.parent)
 
 
@@ -333,9 +451,16 @@ def write_many_atomic(
     """
     paths = list(files)
     check_paths(outputs=paths, make_parents=make_parents)
-    targets = [_target(path, make_parents) for path in paths]
+    created: list[Path] = []
+    targets = []
+    try:
+        targets = [_target(path, make_parents, created) for path in paths]
+    except BaseException:
+        _remove_dirs(created)
+        raise
     staged: list[tuple[PathLike, Path, Path]] = []
     backups: list[Path | None] = []
+    done = False
     try:
         for path, target in zip(paths, targets, strict=True):
             content = files[path]
@@ -369,11 +494,14 @@ def write_many_atomic(
                 raise error from exc
         for directory in {target.parent for target in targets}:
             _fsync_dir(directory)
+        done = True
     finally:
         for _, _, tmp in staged:
             _unlink(tmp)
         for backup in backups:
             _unlink(backup)
+        if not done:
+            _remove_dirs(created)
 
 
 def _rollback(
@@ -421,19 +549,24 @@ def check_paths(
     make_parents : bool, default False
         Accept an output whose parent directory is missing (it will be created).
 
+    ``"-"`` (standard input or output) is never checked.
+
     Raises
     ------
     OutputError
-        The first of: an output is a directory; an output's parent directory is missing (or
+        The first of: an output is a directory; an output exists and is not a regular file
+        (a device, a FIFO, a socket: replacing it with a file would destroy it, and /dev/null
+        with it); an output's parent directory is missing (or
         not a directory); an output is the same file as an input; two outputs are the same
         file. "Same file" resolves symlinks and, where both exist, compares device and inode
         (:func:`os.path.samefile`), so hard links count.
     """
-    ins = [os.fspath(p) for p in inputs]
-    outs = [os.fspath(p) for p in outputs]
+    ins = [os.fspath(p) for p in inputs if os.fspath(p) != "-"]
+    outs = [os.fspath(p) for p in outputs if os.fspath(p) != "-"]
     for out in outs:
         if os.path.isdir(out):
             raise OutputError(f"output {out} is a directory; give a file name", out)
+        _refuse_special(out)
         parent = os.path.dirname(os.path.realpath(out))
         if not os.path.isdir(parent) and not (make_parents and not os.path.exists(parent)):
             what = "is not a directory" if os.path.exists(parent) else "does not exist"
@@ -456,3 +589,26 @@ def check_paths(
                     "give each output its own file",
                     second,
                 )
+
+
+@contextlib.contextmanager
+def output_stream(
+    path: PathLike,
+    *,
+    encoding: str = "utf-8",
+    newline: str | None = None,
+    make_parents: bool = False,
+) -> Iterator[IO[Any]]:
+    """Write ``path`` with :func:`atomic_writer`, or standard output for ``"-"`` (written as
+    it goes; not closed).
+
+    Raises :class:`OutputError` as :func:`atomic_writer` does; for ``"-"`` nothing is
+    checked."""
+    if os.fspath(path) == "-":
+        yield sys.stdout
+        sys.stdout.flush()
+        return
+    with atomic_writer(
+        path, "w", encoding=encoding, newline=newline, make_parents=make_parents
+    ) as fh:
+        yield fh

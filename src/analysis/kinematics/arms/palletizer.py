@@ -132,8 +132,15 @@ def ik(m, p, P, *, tol, axis_tol=None, margin_rad=0.0, theta1_on_axis=None):
         ca1 = m.clip((L1 * L1 - L2 * L2 + l4sq) / (2.0 * L1 * l4safe), -1.0, 1.0)
         a1 = m.let(f"alpha1_{side}", m.acos(ca1))
         a2 = m.let(f"alpha2_{side}", m.atan2(zw, w))
-        cb1 = m.clip(((L1 * L1 + L2 * L2) - l4sq) / (2.0 * L1 * L2), -1.0, 1.0)
-        b1 = m.let(f"beta1_{side}", m.acos(cb1))
+        den = 2.0 * L1 * L2
+        cb1 = m.clip(((L1 * L1 + L2 * L2) - l4sq) / den, -1.0, 1.0)
+        # beta1 = acos(cb1) as atan2(sin, cos), sin from 1 -/+ cos(beta1) in factored form
+        # ((L4 - |L1 - L2|)(L4 + |L1 - L2|) / den, ...): acos(cb1) loses half the digits where
+        # cb1 nears 1, and with L1 = L2 that is the wrist near the shoulder, where an error in
+        # beta1 moves the wrist by L1 times it (2.5e-6 mm at 2.5e-6 mm from the shoulder)
+        om1 = m.clip((l4 - inner) * (l4 + inner) / den, 0.0, 2.0)
+        op1 = m.clip((outer - l4) * (outer + l4) / den, 0.0, 2.0)
+        b1 = m.let(f"beta1_{side}", m.atan2(m.sqrt(om1 * op1), cb1))
         m.section(f"{side}: D-H angles (eq. 12, gripper kept level)")
         s12 = m.let(f"alpha12_{side}", a1 + a2)
         branches[f"{side}-up"] = (
