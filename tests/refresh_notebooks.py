@@ -3,7 +3,8 @@
 The stored outputs are nbval's reference (``make test`` compares against them), so a change
 that alters what a notebook shows is committed together with the notebook re-executed by
 this script (``make notebooks``, or ``make notebooks NB="notebooks/03_table4.ipynb ..."``).
-Cells are stored without nbclient's timing metadata. The kernels get the same environment as under ``make test``: the inline backend
+Cells are stored without nbclient's timing metadata, and a cell's stream outputs coalesced
+(how nbval compares them; how the kernel split them varies with load). The kernels get the same environment as under ``make test``: the inline backend
 (``MPLBACKEND`` from the Makefile) and ``PYTHONHASHSEED=0``.
 """
 
@@ -14,6 +15,7 @@ import time
 from pathlib import Path
 
 import nbformat
+from nbval.plugin import coalesce_streams
 
 from analysis.app.report import execute_notebook
 
@@ -33,6 +35,8 @@ def main(argv: list[str]) -> int:
             continue
         for cell in nb.cells:  # wall-clock stamps: they vary and would only make merges conflict
             cell.metadata.pop("execution", None)
+            if cell.cell_type == "code":  # one stream output per name, as nbval compares them
+                cell.outputs = coalesce_streams(cell.outputs)
         nbformat.write(nb, path)
         print(f"{path}: executed and stored in {time.perf_counter() - t:.1f} s")
     return 1 if failed else 0
