@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from types import ModuleType
 from typing import NamedTuple
 
 import numpy as np
@@ -23,6 +22,7 @@ from analysis.kinematics.status import Status
 __all__ = [
     "DEFAULT_TOL_MM",
     "MAX_JOINT_DEG",
+    "MAX_JOINT_MM",
     "MAX_TOL_MM",
     "BaseAxisError",
     "IKSolutions",
@@ -33,6 +33,7 @@ __all__ = [
     "check_tol",
     "refusal_options",
     "solve_body",
+    "status_of",
 ]
 
 DEFAULT_TOL_MM = 1e-6
@@ -46,6 +47,9 @@ the tolerance, and more than a millimetre would pass a visibly wrong pose as sol
 MAX_JOINT_DEG = 3600.0
 """Largest accepted |joint angle| [deg] (ten turns): beyond it an input is a mistake of unit
 or of digits, not a pose."""
+MAX_JOINT_MM = 1e5
+"""Largest accepted |prismatic joint value| [mm] (100 m): beyond it an input is a mistake of
+unit or of digits."""
 
 
 class UnreachableError(ValueError):
@@ -152,24 +156,35 @@ def as_points(
     return arr
 
 
-def check_joints(q: npt.ArrayLike, n: int, name: str = "joint array") -> npt.NDArray[np.float64]:
-    """Validate joint angles (..., n) [rad]: numeric, finite, within +-:data:`MAX_JOINT_DEG`."""
+def check_joints(
+    q: npt.ArrayLike, n: int, name: str = "joint array", units: Sequence[str] | None = None
+) -> npt.NDArray[np.float64]:
+    """Validate joint values (..., n): numeric, finite, angles [rad] within
+    +-:data:`MAX_JOINT_DEG` and, where ``units`` says "mm" (a prismatic joint), lengths
+    within +-:data:`MAX_JOINT_MM`."""
     try:
         q = np.asarray(q, dtype=float)
     except (TypeError, ValueError) as exc:
         raise ValueError(f"{name} {q!r} is not numeric: {exc}") from None
     if q.ndim == 0 or q.shape[-1] != n:
         raise ValueError(f"{name} has shape {q.shape}; expected (..., {n})")
+    mm = np.array([u == "mm" for u in units]) if units is not None else np.zeros(n, bool)
     limit = math.radians(MAX_JOINT_DEG)
-    if q.size and -limit <= q.min() and q.max() <= limit:  # NaN fails both: one pass each
-        return q
-    bad = ~np.isfinite(q) | (np.abs(q) > limit)
+    if not mm.any() and q.size and -limit <= q.min() and q.max() <= limit:
+        return q  # NaN fails both comparisons: one pass each
+    bound = np.where(mm, MAX_JOINT_MM, limit)
+    bad = ~np.isfinite(q) | (np.abs(q) > bound)
     if bad.any():
         idx = tuple(int(i) for i in np.argwhere(bad)[0])
-        v = q[idx]
+        v, j = q[idx], idx[-1]
         what = "is not finite" if not np.isfinite(v) else "is beyond"
+        if mm[j]:
+            raise ValueError(
+                f"{name}: q{j + 1} = {v:g} mm {what} (accepted: finite, |q| <= "
+                f"{MAX_JOINT_MM:g} mm for a prismatic joint)"
+            )
         raise ValueError(
-            f"{name}: theta{idx[-1] + 1} = {math.degrees(v) if np.isfinite(v) else v:g} deg "
+            f"{name}: theta{j + 1} = {math.degrees(v) if np.isfinite(v) else v:g} deg "
             f"{what} (accepted: finite, |theta| <= {MAX_JOINT_DEG:g} deg, ten turns)"
         )
     return q
@@ -218,9 +233,30 @@ def refusal_options(tol: float, margin_mm: float = 0.0, margin_rad: float = 0.0)
     return {"tol": -margin_mm, "axis_tol": max(tol, margin_mm), "margin_rad": margin_rad}
 
 
+def status_of(m: Ops, refusals: Sequence, default=0.0):
+    """The status code of the first refusal whose condition holds, else ``default``.
+
+    ``refusals`` is ``[(Status, condition), ...]`` in priority order (a closed form's, or a
+    branch's); the one function that turns refusals into a status, in any namespace: the
+    shared solver body (Python, the compiled kernel) and the float32 model of the PLC
+    programs (:func:`analysis.plc.model.predict`) call it, and the programs test the
+    conditions in the same order (:mod:`analysis.plc.ir`).
+
+    >>> from analysis.kinematics.ops import numpy_ops
+    >>> import numpy as np
+    >>> x = np.array([0.5, 2.0, -1.0])
+    >>> status_of(numpy_ops, [(Status.OUT_OF_REACH, x > 1), (Status.BASE_AXIS, x < 0)]).tolist()
+    [0.0, 1.0, 3.0]
+    """
+    status = default
+    for code, cond in reversed(tuple(refusals)):
+        status = m.select(cond, float(code), status)
+    return status
+
+
 def solve_body(
     m: Ops,
-    cf: ModuleType,
+    cf,
     p,
     P,
     names: Sequence[str],
@@ -233,33 +269,31 @@ def solve_body(
 
     Written once for every arm and backend: :meth:`Arm.solve` runs it with numpy, the
     compiled kernel is generated from its recording, the PLC program from the closed form
-    it calls. Returns ``status`` (float code), ``outside``, and per branch ``b`` the
-    condition ``ok:b`` and the angles ``q:b:j`` (NaN where not ok).
+    it calls. ``cf`` is a :class:`~analysis.kinematics.arms.ClosedForm`; ``options`` go to
+    its :meth:`~analysis.kinematics.arms.ClosedForm.solve`. Returns ``status`` (float
+    code), ``outside``, and per branch ``b`` the condition ``ok:b`` and the angles ``q:b:j``
+    (NaN where not ok).
 
-    A closed form may also return ``branch_refusals`` {branch: [(Status, condition), ...]}
-    for what only some branches cannot do (the GR-1's front and back wrists lie at
-    different points, so one may be out of reach while the other is not): a branch is ok
-    where none of its own conditions holds. A target that passes the closed form's
-    refusals but has no ok branch gets the first requested branch's reason (its first
-    true condition, else ``JOINT_LIMITS``), which is what a one-branch PLC program reports.
+    A closed form's ``branch_refusals`` hold what only some branches cannot do (the GR-1's
+    front and back wrists lie at different points, so one may be out of reach while the
+    other is not): a branch is ok where none of its own conditions holds. A target that
+    passes the closed form's refusals but has no ok branch gets the first requested
+    branch's reason (its first true condition, else ``JOINT_LIMITS``), which is what a
+    one-branch PLC program reports.
     """
-    sol = cf.ik(m, p, P, tol=tol, **options)
-    status = 0.0
-    for code, cond in reversed(sol["refusals"]):
-        status = m.select(cond, float(code), status)
+    sol = cf.solve(m, p, P, tol=tol, **options)
+    status = status_of(m, sol.refusals)
     good = m.eq(status, 0.0)
-    out = {"outside": sol["outside"]}
-    per_branch = sol.get("branch_refusals", {})
-    has_branch = any(per_branch.get(b) for b in names)
+    out = {"outside": sol.outside}
+    has_branch = any(sol.branch_refusals[b] for b in names)
     any_ok = None
     first_reason = None
     for b in names:
-        q = sol["branches"][b]
+        q = sol.branches[b]
         ok = good
         reason = 0.0
-        if per_branch.get(b):
-            for code, cond in reversed(per_branch[b]):
-                reason = m.select(cond, float(code), reason)
+        if sol.branch_refusals[b]:
+            reason = status_of(m, sol.branch_refusals[b])
             ok = m.and_(ok, m.eq(reason, 0.0))
         within = None
         for qj, lim in zip(q, limits or [None] * len(q), strict=True):
