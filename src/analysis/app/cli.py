@@ -72,7 +72,11 @@ def _arm(args: argparse.Namespace):
 
 def _common(p: argparse.ArgumentParser) -> None:
     p.add_argument(
-        "--arm", default="grabber", help="arm (default: grabber, the paper's; list: arms)"
+        "--arm",
+        default="grabber",
+        metavar="NAME|PATH",
+        help="arm: a name (default: grabber, the paper's; list: arms) or the path of a "
+        "description file (*.toml), anywhere on disk",
     )
     p.add_argument("--params", type=Path, help="a Table 3 CSV instead of data/table3.csv")
 
