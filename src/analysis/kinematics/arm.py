@@ -271,6 +271,17 @@ class Arm:
         return tuple(j.unit for j in self.description.joints)
 
     @property
+    def joint_labels(self) -> tuple[str, ...]:
+        """Column names of the joint values in user units: ``<joint>_deg`` (revolute) or
+        ``<joint>_mm`` (prismatic), e.g. ``theta1_deg`` (batch CSV, the explorer's table).
+
+        >>> load_arm("picker").joint_labels
+        ('theta1_deg', 'theta2_mm', 'theta6_deg', 'theta7_deg', 'theta8_deg', 'theta9_mm')
+        """
+        return tuple(f"{n}_{u}" for n, u in zip(self.joint_names, self.joint_user_units,
+                                               strict=True))  # fmt: skip
+
+    @property
     def joint_user_units(self) -> tuple[str, ...]:
         """Units a user gives joint values in (``fk`` on the command line): "deg" or "mm"."""
         return tuple("deg" if u == "rad" else u for u in self.joint_units)
@@ -286,7 +297,7 @@ class Arm:
     def joints_to_user(self, q: npt.ArrayLike) -> np.ndarray:
         """``(..., n)`` joint values in :attr:`joint_units` -> :attr:`joint_user_units`."""
         q = np.asarray(q, dtype=float)
-        return np.where(np.array([u == "rad" for u in self.joint_units]), np.degrees(q), q)
+        return np.where(np.array([u == "rad" for u in self.joint_units]), np.degrees(q), q) + 0.0
 
     @property
     def statuses(self) -> tuple[Status, ...]:

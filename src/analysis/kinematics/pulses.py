@@ -41,7 +41,7 @@ def pulse_value(m, theta, pulses_per_rev, lead_mm=None):
     (eqs. 20-22 print ``c = theta / 360 x 4000``); for a prismatic joint (``lead_mm`` given)
     ``q_mm / lead_mm * ppr``."""
     if lead_mm is not None:
-        return theta / float(lead_mm) * pulses_per_rev
+        return theta / lead_mm * pulses_per_rev
     return m.degrees(theta) / 360.0 * pulses_per_rev
 
 
@@ -56,7 +56,7 @@ def pulse_angle(m, c, pulses_per_rev, lead_mm=None):
     """Joint value [rad, or mm with ``lead_mm``] commanded by ``c`` whole pulses (inverse of
     eqs. 20-22)."""
     if lead_mm is not None:
-        return c * float(lead_mm) / pulses_per_rev
+        return c * lead_mm / pulses_per_rev
     return m.radians(c * 360.0 / pulses_per_rev)
 
 

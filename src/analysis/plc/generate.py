@@ -69,10 +69,9 @@ def generate(
         raise ValueError("--trig native is not possible on the S7-200 (no ATAN/ACOS instruction)")
     prog = build_program(params, branch, trig, theta1_on_axis=theta1_on_axis)
     mmap = (mmap or default_map(dialect, prog.inputs, len(prog.outputs))).with_dialect(dialect)
-    # the first-scan example target: the paper's Figure 3 (100, 100, 600) mm unless the
-    # closed form names its own (STARTUP_TARGET; None: write nothing)
-    cf = closed_form(params.description.closed_form)
-    start = getattr(cf, "STARTUP_TARGET", (100.0, 100.0, 600.0))
+    # the first-scan example target: the closed form's STARTUP_TARGET (the paper's Figure 3
+    # (100, 100, 600) mm for the grabber; None: write nothing)
+    start = closed_form(params.description.closed_form).startup_target(params)
     if dialect == "s7-300":
         text = emit_s7300(prog, mmap, startup_target=start, optimize=optimize)
     else:

@@ -71,9 +71,10 @@ def program_body(m: Ops, params, p, branch: str, *, theta1_on_axis=None):
         for qj, (lo, hi) in limited:
             refusals.append((Status.JOINT_LIMITS, m.or_(m.lt(qj, lo), m.gt(qj, hi))))
     ppr = params.pulses_per_rev
+    lead = [j.lead_mm for j in joints]
     m.section(f"pulses c = ROUND(theta_deg / 360 * {ppr[0]:g}) (eqs. 20-22); reach flag on")
-    c = [pulse_count(m, qj, n) for qj, n in zip(q, ppr, strict=True)]
-    count = [pulse_value(m, qj, n) for qj, n in zip(q, ppr, strict=True)]  # recorded: shared
+    c = [pulse_count(m, qj, n, s) for qj, n, s in zip(q, ppr, lead, strict=True)]
+    count = [pulse_value(m, qj, n, s) for qj, n, s in zip(q, ppr, lead, strict=True)]  # shared
     return {"c": c, "count": count, "theta": q, "refusals": refusals}
 
 
