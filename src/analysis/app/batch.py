@@ -9,7 +9,8 @@ atomic_writer`); the output may not be the input. Memory does not grow with the 
 a chunk of targets is read, solved and written before the next is read.
 
 Output: every input column (renamed ``input_<name>`` where it clashes with an output
-column), then ``branch, reachable, theta1_deg .. thetan_deg, c1 .. cn, status``, one row per
+column), then ``branch, reachable``, the joint values (``Arm.joint_labels``: ``theta1_deg ..
+thetan_deg``; a prismatic joint's in mm), ``c1 .. cn, status``, one row per
 target and branch, targets in input order. ``reachable`` is true where the row has a
 solution; ``status`` says why not (ok, out-of-reach, inside-reach, base-axis, joint-limits,
 degenerate). Unsolved rows leave angles and pulses empty, never "nan".
@@ -24,7 +25,6 @@ import numpy as np
 
 from analysis.app.safe_io import atomic_writer, check_paths, iter_table_chunks
 from analysis.kinematics.arm import Arm
-from analysis.kinematics.pulses import angles_to_pulses
 from analysis.kinematics.status import STATUS_TEXT, Status
 
 __all__ = ["INPUT_COLUMNS", "WRITE_ROWS", "input_columns", "output_columns", "solve_csv"]
@@ -56,7 +56,7 @@ def output_columns(arm: Arm) -> list[str]:
     return [
         "branch",
         "reachable",
-        *(f"theta{j + 1}_deg" for j in range(n)),
+        *arm.joint_labels,
         *(f"c{j + 1}" for j in range(n)),
         "status",
     ]
@@ -78,14 +78,14 @@ def _frame(arm, names, cols, header, sol):
     theta = sol.theta.reshape(n * nb, nj)
     pulses = np.zeros((n * nb, nj), dtype=np.int64)
     if ok.any():
-        pulses[ok] = angles_to_pulses(theta[ok], arm.params.pulses_per_rev)
-    deg = np.degrees(np.where(ok[:, None], theta, 0.0))
+        pulses[ok] = arm.pulses(theta[ok])
+    deg = arm.joints_to_user(np.where(ok[:, None], theta, 0.0))  # degrees | mm
     status = np.repeat(sol.status, nb).astype(np.int64)
     status = np.where((status == Status.OK) & ~ok, int(Status.JOINT_LIMITS), status)
     data["branch"] = np.tile(np.array(names, dtype=object), n)
     data["reachable"] = np.where(ok, "true", "false")
-    for j in range(nj):
-        data[f"theta{j + 1}_deg"] = pd.arrays.FloatingArray(deg[:, j], ~ok)
+    for j, label in enumerate(arm.joint_labels):
+        data[label] = pd.arrays.FloatingArray(deg[:, j], ~ok)
     for j in range(nj):
         data[f"c{j + 1}"] = pd.arrays.IntegerArray(pulses[:, j], ~ok)
     text = np.array([STATUS_TEXT[Status(s)] for s in range(len(Status))], dtype=object)
