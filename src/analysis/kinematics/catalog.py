@@ -17,18 +17,20 @@ def arm_names() -> tuple[str, ...]:
 
 
 def describe_arm(name: str | Path) -> dict:
-    """One arm as plain data: ``name, title, paper, joints`` (names), ``joint_units``,
-    ``branches``, ``inputs``, ``parameters`` {name: {value, unit, status}}; or ``name`` and
-    ``error`` (the reason it does not load, one line) if it does not."""
+    """One arm as plain data: ``name`` (what ``--arm`` takes: the file's stem), ``title,
+    paper, joints`` (names), ``joint_units``, ``branches``, ``inputs``, ``parameters`` {name:
+    {value, unit, status}}; or ``name`` and ``error`` (the reason it does not load, one line)
+    if it does not."""
     from analysis.kinematics.arm import load_arm
 
+    stem = Path(str(name)).stem
     try:
         arm = load_arm(str(name))
     except (ValueError, OSError) as exc:
-        return {"name": Path(str(name)).stem, "error": " ".join(str(exc).split())}
+        return {"name": stem, "error": " ".join(str(exc).split())}
     d = arm.description
     return {
-        "name": d.name,
+        "name": stem,
         "title": d.title,
         "paper": d.paper,
         "joints": list(arm.joint_names),

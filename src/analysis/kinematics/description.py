@@ -12,7 +12,8 @@ from that chain.
 Format (``data/arms/grabber.toml`` is the commented example)::
 
     name = "grabber"; title = "..."; paper = "..."
-    closed_form = "grabber"            # module analysis.kinematics.arms.<closed_form>
+    closed_form = "grabber"            # module analysis.kinematics.arms.<closed_form>, or
+                                       # "my_arm.py": a file next to the description
     convention = "standard"            # or "modified" (Craig)
     [parameters]
     L1 = { value = 660.0, unit = "mm", status = "printed", source = "Table 3" }
@@ -371,11 +372,16 @@ def _load(name: str, tables: tuple, stamp: tuple) -> ArmDescription:
                 raise ValueError(
                     f"{path} joint {j.name}: kind {j.kind!r}, but its D-H row is {kind!r}"
                 )
+    cf_name = d.get("closed_form", path.stem)
+    if not isinstance(cf_name, str) or not cf_name:
+        raise ValueError(f"{path}: closed_form = {cf_name!r} must name a closed form")
+    if cf_name.endswith(".py"):  # a closed form kept next to the description
+        cf_name = str((path.parent / cf_name).resolve())
     desc = ArmDescription(
         d.get("name", path.stem),
         d.get("title", path.stem),
         d.get("paper", ""),
-        d.get("closed_form", path.stem),
+        cf_name,
         d.get("convention", "standard"),
         params,
         rows,

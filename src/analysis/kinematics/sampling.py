@@ -29,9 +29,10 @@ SAMPLE_MARGIN_MM = 0.01
 """Default band [mm] kept clear of every reach shell and singular set: ten times the band
 the generated PLC programs refuse (:data:`analysis.plc.model.PLC_MARGIN_MM`, 1e-3 mm), so a
 sampled target is solved by the PLC's float32 arithmetic too."""
-SAMPLE_MARGIN_RAD = 1e-4
+SAMPLE_MARGIN_RAD = 4e-5
 """Default band [rad] kept clear of every angular tolerance (the GR-1's orientation, the
-picker's wrist singularity): five times the PLC's (2e-5 rad)."""
+picker's wrist singularity): twice the PLC's (2e-5 rad); the GR-1 accepts an orientation
+1e-4 rad out of its arm plane, so a band must stay below that."""
 SOLVE_BACK_TOL = 1e-7
 """A solution equals the candidate when every joint agrees to this [rad | mm]: float64
 round-off through FK and IK is ~1e-12 here (away from the refusal bands), a different

@@ -56,7 +56,9 @@ arithmetic never accepts what Python refuses.
 
 To add an arm: write its description (``data/arms/<name>.toml``, or a file anywhere), and
 either name an existing closed form in it (``closed_form = "grabber"`` serves every 3R arm
-of that shape, whatever its lengths) or write a module here with the names above. When the
+of that shape, whatever its lengths) or write a module with the names above: here
+(``analysis/kinematics/arms/<name>.py``), or next to the description
+(``closed_form = "<file>.py"``, a path relative to the description's folder). When the
 arm loads (:class:`analysis.kinematics.arm.Params`), :meth:`ClosedForm.probe` records its
 ``ik`` once with the parameters: a closed form that the recorder cannot follow (Python's
 ``if`` on a value, ``math.sqrt``) is refused then, with the reason, instead of breaking the
@@ -409,11 +411,44 @@ def _known() -> list[str]:
     return sorted(m.name for m in pkgutil.iter_modules(__path__) if not m.name.startswith("_"))
 
 
+@cache
+def _load_file(path: str, stamp: tuple) -> ClosedForm:
+    """A closed form kept in a file of the user's (``closed_form = "my_arm.py"`` next to
+    the description), imported once per version of the file."""
+    import hashlib
+    import importlib.util
+    import sys
+
+    digest = hashlib.sha256(f"{path}{stamp}".encode()).hexdigest()[:16]
+    spec = importlib.util.spec_from_file_location(f"analysis_user_closed_form_{digest}", path)
+    if spec is None or spec.loader is None:
+        raise ValueError(f"closed form {path}: not a Python file")
+    mod = importlib.util.module_from_spec(spec)
+    sys.modules[spec.name] = mod
+    try:
+        spec.loader.exec_module(mod)
+    except Exception as exc:  # the user's code: report it as a load error, with its reason
+        del sys.modules[spec.name]
+        raise ValueError(
+            f"closed form {path} does not import: {type(exc).__name__}: {exc}"
+        ) from None
+    return check_module(path, mod)
+
+
 def closed_form(name: str | ClosedForm) -> ClosedForm:
-    """The closed form ``analysis.kinematics.arms.<name>``, checked against the contract
-    (module docstring); a :class:`ClosedForm` is returned as it is."""
+    """The closed form ``analysis.kinematics.arms.<name>``, or the one in the Python file
+    ``name`` (a path ending in ``.py``: a user's own, next to their description), checked
+    against the contract (module docstring); a :class:`ClosedForm` is returned as it is."""
     if isinstance(name, ClosedForm):
         return name
+    if isinstance(name, str) and name.endswith(".py"):
+        from pathlib import Path
+
+        path = Path(name).resolve()
+        if not path.is_file():
+            raise ValueError(f"closed form {name}: no such file")
+        st = path.stat()
+        return _load_file(str(path), (st.st_mtime_ns, st.st_size))
     if not isinstance(name, str) or not name.isidentifier():
-        raise ValueError(f"closed form {name!r} is not a module name")
+        raise ValueError(f"closed form {name!r} is not a module name (or a path to a .py file)")
     return _load(name)
