@@ -27,11 +27,14 @@ from analysis.kinematics.arms import picker as cf
 from analysis.kinematics.ops import numpy_ops
 from analysis.kinematics.rpy import rpy_columns
 from analysis.kinematics.status import Status
+from analysis.plc import st_engine
 from analysis.plc.approx import PlcFloat32Ops
 from analysis.plc.generate import generate
+from analysis.plc.ir import build_program
 from analysis.plc.memmap import MemoryMap, default_map
 from analysis.plc.model import predict
 from analysis.plc.runner import sweep
+from analysis.plc.st import block_name, emit_st
 from analysis.plc.translate import translate_s7200
 from analysis.plc.verify import compare, reference_pulses
 
@@ -146,6 +149,25 @@ def test_sweep_matches_python(dialect, trig, targets):
     assert res.status[ref].tolist() == [0] and res.pulses[ref].tolist() == [[0] * 6]
 
 
+@pytest.mark.parametrize("trig", ["function", "subroutine"])
+def test_st_on_the_engine(trig, targets):
+    """The IEC 61131-3 ST program of the same IR on the ST engine (pyplcopen's), the same
+    poses: the float32 model bit for bit, statuses as Python's, pulses across half pulses."""
+    try:
+        engine = st_engine.engine_path()
+    except st_engine.EngineMissing as exc:
+        pytest.skip(str(exc))
+    prog = build_program(ARM.params, "front", trig)
+    text = emit_st(prog, units=ARM.input_units, default_branch=ARM.branches[0])
+    xyz = targets[COLS].to_numpy()
+    res, run = st_engine.sweep(text, block_name(prog, "front"), prog.inputs, 6, xyz, SENTINEL,
+                               engine)  # fmt: skip
+    assert (run.faults == 0).all()
+    c = compare(res, targets, ARM, "front", "st", SENTINEL, trig)
+    assert c.model_exact and c.status_mismatch == 0 and c.unsafe == 0 and c.unchanged_ok
+    assert c.max_abs_diff <= 1 and c.all_explained, c.mismatch_table
+
+
 def test_float32_model_against_python_on_a_wider_sweep():
     """The float32 model of the S7-300 program (what awlsim reproduces bit for bit above) on
     a sweep ten times larger, against Python: same statuses outside the band, pulses within
@@ -161,3 +183,18 @@ def test_float32_model_against_python_on_a_wider_sweep():
     err = np.abs(model.counts.astype(float) - exact)[both]
     assert err.max() < 0.1
     assert (model.status[t["kind"] == "bad"] == Status.INVALID).all()
+
+
+def test_stl_writes_every_dialect_for_the_picker(tmp_path, capsys):
+    """``stl --arm picker`` in every dialect: the program names the six inputs and counts."""
+    from analysis.app.cli import main
+
+    for dialect in ("s7-200", "s7-300", "st", "scl", "plcopen-xml"):
+        out, mp = tmp_path / f"picker.{dialect}", tmp_path / f"picker-{dialect}.json"
+        assert main(["stl", "--dialect", dialect, "--arm", "picker", "-o", str(out), "--map",
+                     str(mp), "--json"]) == 0, capsys.readouterr().err  # fmt: skip
+        doc = json.loads(capsys.readouterr().out)
+        assert (doc["arm"], doc["branch"]) == ("picker", "front")
+        text, names = out.read_text(), mp.read_text()  # S7: addresses, named in the map
+        assert "gamma" in text and "c6" in (text if dialect not in ("s7-200", "s7-300")
+                                            else names), dialect  # fmt: skip
