@@ -718,9 +718,13 @@ class Arm:
         if status == Status.OK:
             return
         if status == Status.JOINT_LIMITS:
+            values = ", ".join(
+                f"{name} = {math.degrees(v) if u == 'rad' else v:g} {'deg' if u == 'rad' else u}"
+                for name, v, u in zip(self.inputs, map(float, p), self.input_units, strict=True)
+            )
             raise ValueError(
-                f"target {tuple(float(v) for v in p)} mm is reachable, but no requested branch "
-                f"is within the joint limits of {self.name}"
+                f"target ({values}) is reachable, but no requested branch is within the joint "
+                f"limits of {self.name}"
             )
         message, limit = self.closed_form.refusal(status, p, self.params, tol=tol, distance=outside)
         if status in (Status.OUT_OF_REACH, Status.INSIDE_REACH):
