@@ -426,6 +426,8 @@ class Arm:
 
     def _points(self, m, q: npt.NDArray[np.float64] | list) -> dict:
         qs = list(np.moveaxis(q, -1, 0)) if isinstance(q, np.ndarray) else q
+        if self.closed_form.fk is None:  # chain_points' D-H case, with the table built once
+            return {"frames": chain_frames(m, self.table, qs), "rotation": None, "valid": True}
         return chain_points(m, self.description, self.closed_form, self.params, qs)
 
     def frames(self, q: npt.ArrayLike) -> npt.NDArray[np.float64]:
