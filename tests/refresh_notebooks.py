@@ -4,8 +4,9 @@ The stored outputs are nbval's reference (``make test`` compares against them), 
 that alters what a notebook shows is committed together with the notebook re-executed by
 this script (``make notebooks``, or ``make notebooks NB="notebooks/03_table4.ipynb ..."``).
 Cells are stored without nbclient's timing metadata, and a cell's stream outputs coalesced
-(how nbval compares them; how the kernel split them varies with load). The kernels get the same environment as under ``make test``: the inline backend
-(``MPLBACKEND`` from the Makefile) and ``PYTHONHASHSEED=0``.
+(how nbval compares them; how the kernel split them varies with load). The kernels get the
+same environment as under ``make test``: the inline backend (``MPLBACKEND`` from the
+Makefile) and ``PYTHONHASHSEED=0``.
 """
 
 from __future__ import annotations

@@ -1,5 +1,5 @@
-"""``python -m analysis arms`` lists every file of data/arms/, the picker's dimensions-only
-description included (it has no D-H rows; the command used to stop on it)."""
+"""``python -m analysis arms`` lists every file of data/arms/, the picker included (a closed
+chain without D-H rows; the command used to stop on it, then listed it with 0 joints)."""
 
 import json
 
@@ -15,9 +15,9 @@ def test_arms_lists_every_description(capsys):
     assert "x_A = 100 mm (assumed)" in lines["picker"]
     assert main(["arms", "--json"]) == 0
     docs = {d["name"]: d for d in json.loads(capsys.readouterr().out)}
-    assert (
-        docs["picker"]["joints"] == [] and docs["picker"]["parameters"]["g"]["status"] == "assumed"
-    )
+    assert docs["picker"]["joints"] == ["theta1", "theta2", "theta6", "theta7", "theta8", "theta9"]
+    assert docs["picker"]["parameters"]["g"]["status"] == "assumed"
+    assert "(6 joints)" in lines["picker"]
 
 
 def test_ik_takes_the_gr1_pose_with_angles_in_degrees(capsys):

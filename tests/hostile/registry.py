@@ -66,18 +66,21 @@ class EntryPoint:
     angle in radians), "tol", "ppr"."""
     cost: int = 1
     """Relative cost of one run (examples are divided by it to keep the suite's budget)."""
+    optional: Callable[[str, int], bool] = lambda arm, slot: False
+    """Whether None is the slot's documented "not given" (``theta1_on_axis=None``: refuse
+    targets on the base axis), so that None there is not a hostile value."""
 
 
 REGISTRY: dict[str, EntryPoint] = {}
 
 
-def entry_point(name: str, form: str, slots, arms=ARMS, kind=None, cost=1):
+def entry_point(name: str, form: str, slots, arms=ARMS, kind=None, cost=1, optional=None):
     """Register ``run`` as an entry point (see the module docstring)."""
 
     def register(run):
         REGISTRY[name] = EntryPoint(
             name, form, run, slots if callable(slots) else (lambda arm, n=slots: n), tuple(arms),
-            kind or (lambda arm, slot: "mm"), cost,
+            kind or (lambda arm, slot: "mm"), cost, optional or (lambda arm, slot: False),
         )  # fmt: skip
         return run
 
@@ -358,7 +361,8 @@ def _fk(arm: str, slot: int, value) -> Outcome:
     return api(lambda: arm_of(arm).fk(q))
 
 
-@entry_point("Arm.solve options", "api", 2, kind=lambda a, s: ("rad", "tol")[s])
+@entry_point("Arm.solve options", "api", 2, kind=lambda a, s: ("rad", "tol")[s],
+             optional=lambda a, s: s == 0)  # fmt: skip
 def _options(arm: str, slot: int, value) -> Outcome:
     key = ("theta1_on_axis", "tol")[slot]
     target = [float(v) for v in arm_of(arm).from_user([float(t) for t in on_axis_target(arm)])]

@@ -125,6 +125,8 @@ def test_hostile_api_values_raise_one_line_value_errors(entry, arm):
     def prop(slot, value):
         out = ep.run(arm, slot, value)  # a TypeError or OverflowError fails here
         check_outcome(out)
+        if value is None and ep.optional(arm, slot):
+            return  # None is that option's "not given" (its default)
         assert out.refused, f"{entry} accepted {value!r}: {out.result}"
 
     prop()

@@ -359,8 +359,8 @@ def test_bad_rows():
         DHRow(alpha=0.0, a=1.0, d=float("nan"), name="j")
     with pytest.raises(ValueError, match="a = inf is not finite"):
         DHRow(alpha=0.0, a=float("inf"), d=0.0)
-    with pytest.raises(ValueError, match="kind 'prismatic'"):
-        DHRow(alpha=0.0, a=1.0, d=0.0, kind="prismatic")
+    with pytest.raises(ValueError, match="kind 'sliding'"):
+        DHRow(alpha=0.0, a=1.0, d=0.0, kind="sliding")
 
 
 def _write(tmp_path, text):

@@ -129,7 +129,7 @@ def test_model_structure():
 
 
 def test_no_revolute_row():
-    with pytest.raises(ValueError, match="has no revolute row"):
+    with pytest.raises(ValueError, match="has no joint row"):
         build_model(DHTable((DHRow(0.0, 10.0, 0.0, kind="fixed"),), "standard", "tool-only"))
 
 

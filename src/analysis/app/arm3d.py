@@ -89,7 +89,8 @@ def workspace_box(
     lim = np.array([lim if lim is not None else (-np.pi, np.pi) for lim in arm.limits])
     rng = np.random.default_rng(seed)
     q = lim[:, 0] + rng.random((samples, arm.n_joints)) * (lim[:, 1] - lim[:, 0])
-    pts = arm.frames(np.concatenate([q, np.zeros((1, arm.n_joints))])).reshape(-1, 3)
+    q = np.concatenate([q, np.zeros((1, arm.n_joints))])
+    pts = arm.frames(q[arm.valid_q(q)]).reshape(-1, 3)  # a closed chain: poses that assemble
     lo, hi = pts.min(axis=0), pts.max(axis=0)
     margin = pad * np.maximum(hi - lo, grid_mm)
     lo = np.floor((lo - margin) / grid_mm) * grid_mm

@@ -16,15 +16,16 @@ clashes with an output column (or with a name given to another clash) gets the p
 ``input_`` and, if that is taken too, a number: ``status`` -> ``input_status``,
 ``input_status`` -> ``input_status_2``, never one column for two.
 
-Output: the input columns, then ``branch, reachable, theta1_deg .. thetan_deg, c1 .. cn,
-status, reason``, one row per target and branch, targets in input order. ``reachable`` is
-true where the row has a solution; ``status`` says why not (ok, out-of-reach, inside-reach,
-base-axis, joint-limits, degenerate, orientation, invalid). Unsolved rows leave angles and
-pulses empty, never "nan". Angles are written in full (the shortest text that reads back as
-the same float). A row whose numbers are bad (not a number by :mod:`analysis.validate`'s
-rules, or outside its range) is not solved: its status is ``invalid`` and ``reason`` names
-the line, the column, the value and the limit; the batch goes on (``strict=True``: it stops
-at the first, and the output is not written).
+Output: the input columns, then ``branch, reachable``, the joint values (``Arm.joint_labels``:
+``theta1_deg .. thetan_deg``; a prismatic joint's in mm), ``c1 .. cn, status, reason``, one row
+per target and branch, targets in input order. ``reachable`` is true where the row has a
+solution; ``status`` says why not (ok, out-of-reach, inside-reach, base-axis, joint-limits,
+degenerate, orientation, invalid). Unsolved rows leave angles and pulses empty, never "nan".
+Angles are written in full (the shortest text that reads back as the same float). A row whose
+numbers are bad (not a number by :mod:`analysis.validate`'s rules, or outside its range) is not
+solved: its status is ``invalid`` and ``reason`` names the line, the column, the value and the
+limit; the batch goes on (``strict=True``: it stops at the first, and the output is not
+written).
 """
 
 from __future__ import annotations
@@ -39,7 +40,6 @@ import numpy as np
 from analysis import validate
 from analysis.app.safe_io import InputError, check_paths, iter_record_chunks, output_stream
 from analysis.kinematics.arm import Arm
-from analysis.kinematics.pulses import angles_to_pulses
 from analysis.kinematics.status import STATUS_TEXT, Status
 
 __all__ = [
@@ -78,7 +78,7 @@ def output_columns(arm: Arm) -> list[str]:
     return [
         "branch",
         "reachable",
-        *(f"theta{j + 1}_deg" for j in range(n)),
+        *arm.joint_labels,
         *(f"c{j + 1}" for j in range(n)),
         "status",
         "reason",
@@ -231,11 +231,12 @@ def solve_csv(
                 out.append(list(names) * k)
                 out.append(["true" if v else "false" for v in flat_ok.tolist()])
                 flat = theta.reshape(k * nb, nj)
+                user = arm.joints_to_user(np.where(flat_ok[:, None], flat, 0.0))  # deg | mm
                 for j in range(nj):
-                    out.append(_fmt_angles(np.degrees(flat[:, j]), flat_ok))
+                    out.append(_fmt_angles(user[:, j], flat_ok))
                 pulses = np.zeros((k * nb, nj), dtype=np.int64)
                 if flat_ok.any():
-                    pulses[flat_ok] = angles_to_pulses(flat[flat_ok], arm.params.pulses_per_rev)
+                    pulses[flat_ok] = arm.pulses(flat[flat_ok])
                 for j in range(nj):
                     given = zip(pulses[:, j].tolist(), flat_ok.tolist(), strict=True)
                     out.append([str(c) if good else "" for c, good in given])

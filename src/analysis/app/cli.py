@@ -146,7 +146,11 @@ def _arm(args: argparse.Namespace):
 
 def _common(p: argparse.ArgumentParser) -> None:
     p.add_argument(
-        "--arm", default="grabber", help="arm (default: grabber, the paper's; list: arms)"
+        "--arm",
+        default="grabber",
+        metavar="NAME|PATH",
+        help="arm: a name (default: grabber, the paper's; list: arms) or the path of a "
+        "description file (*.toml), anywhere on disk",
     )
     p.add_argument("--params", type=Path, help="a Table 3 CSV instead of data/table3.csv")
 
@@ -171,27 +175,41 @@ def _cmd_fk(args: argparse.Namespace) -> int:
     from analysis.kinematics.arm import MAX_JOINT_DEG
 
     arm = _arm(args)
+    units = arm.joint_user_units
     if len(args.angles) != arm.n_joints:
-        raise UsageError(
-            f"{arm.name} has {arm.n_joints} joints: give {arm.n_joints} angles in degrees, "
-            f"got {len(args.angles)}"
+        what = (
+            "angles in degrees"
+            if set(units) == {"deg"}
+            else "values ("
+            + ", ".join(f"{n} [{u}]" for n, u in zip(arm.joint_names, units, strict=True))
+            + ")"
         )
-    for j, a in enumerate(args.angles, 1):
-        if abs(a) > MAX_JOINT_DEG:
+        raise UsageError(
+            f"{arm.name} has {arm.n_joints} joints: give {arm.n_joints} {what}, "
+            f"got {len(args.angles)}"
+        )  # fmt: skip
+    for j, (a, u) in enumerate(zip(args.angles, units, strict=True), 1):
+        if u == "deg" and abs(a) > MAX_JOINT_DEG:
             raise UsageError(
                 f"theta{j} = {a:g} deg is beyond +-{MAX_JOINT_DEG:g} deg (ten turns): "
                 "angles are in degrees"
             )
-    hint = _radians_hint(args.angles)
-    if hint:
-        print(f"{PROG} fk: note: {hint}", file=sys.stderr)
-    p = arm.fk(np.radians(args.angles))
+    if set(units) == {"deg"}:
+        hint = _radians_hint(args.angles)
+        if hint:
+            print(f"{PROG} fk: note: {hint}", file=sys.stderr)
+    p = arm.fk(arm.joints_from_user(args.angles))
     p = np.where(p == 0, 0.0, p)  # no "-0.000"
-    doc = {"arm": arm.name, "theta_deg": list(args.angles), "position_mm": p.tolist()}
-    text = (
-        f"theta = ({', '.join(f'{t:.2f}' for t in args.angles)}) deg -> "
-        f"P = ({', '.join(f'{v:.3f}' for v in p)}) mm"
-    )
+    if set(units) == {"deg"}:
+        doc = {"arm": arm.name, "theta_deg": list(args.angles)}
+        given = f"theta = ({', '.join(f'{t:.2f}' for t in args.angles)}) deg"
+    else:  # prismatic joints too: each value in its own unit
+        doc = {"arm": arm.name, "joint_values": list(args.angles), "joint_units": list(units)}
+        given = "q = (" + ", ".join(
+            f"{n} {t:.2f} {u}" for n, t, u in zip(arm.joint_names, args.angles, units, strict=True)
+        ) + ")"  # fmt: skip
+    doc["position_mm"] = p.tolist()
+    text = f"{given} -> P = ({', '.join(f'{v:.3f}' for v in p)}) mm"
     _emit(args, doc, text)
     return 0
 
@@ -291,9 +309,7 @@ def _axis(args) -> float | None:
 
 
 def _ik_single(args: argparse.Namespace, arm) -> int:
-    import numpy as np
 
-    from analysis.kinematics.pulses import angles_to_pulses
     from analysis.kinematics.solution import OrientationError
 
     given = list(args.target)
@@ -305,14 +321,16 @@ def _ik_single(args: argparse.Namespace, arm) -> int:
         # the library names the Python way to the nearest orientation; here, the command
         hint = arm.closed_form.PROJECTION_HINT
         raise UsageError(str(exc).replace(hint, _nearest_pose_hint(arm, target))) from None
-    out = [
-        {
-            "branch": name,
-            "theta_deg": np.degrees(theta).tolist(),
-            "pulses": angles_to_pulses(theta, arm.params.pulses_per_rev).tolist(),
-        }
-        for name, theta in sols.items()
-    ]
+    revolute = set(arm.joint_units) == {"rad"}
+    out = []
+    for name, theta in sols.items():
+        values = (arm.joints_to_user(theta) + 0.0).tolist()  # degrees | mm; no "-0.00"
+        sol = {"branch": name}
+        if revolute:
+            sol["theta_deg"] = values
+        else:
+            sol |= {"joint_values": values, "joint_units": list(arm.joint_user_units)}
+        out.append({**sol, "pulses": arm.pulses(theta).tolist()})
     missing = _missing_branches(arm, target, names, sols, args)
     units = arm.user_units
     if all(u == "mm" for u in units):
@@ -324,9 +342,14 @@ def _ik_single(args: argparse.Namespace, arm) -> int:
                         for name, v, u in zip(arm.inputs, given, units, strict=True))
         ]  # fmt: skip
     for s in out:
-        ang = ", ".join(f"{t:.2f}" for t in s["theta_deg"])
         pul = ", ".join(str(c) for c in s["pulses"])
-        lines.append(f"  {s['branch']:<10} theta = ({ang}) deg   pulses = ({pul})")
+        if revolute:
+            ang = "theta = (" + ", ".join(f"{t:.2f}" for t in s["theta_deg"]) + ") deg"
+        else:
+            ang = "q = (" + ", ".join(
+                f"{t:.2f} {u}" for t, u in zip(s["joint_values"], arm.joint_user_units,
+                                               strict=True)) + ")"  # fmt: skip
+        lines.append(f"  {s['branch']:<10} {ang}   pulses = ({pul})")
     for m in missing:
         lines.append(f"  {m['branch']:<10} no solution: {m['status']} ({m['reason']})")
     if len(names) > 1:
@@ -490,51 +513,16 @@ def _cmd_errata(args: argparse.Namespace) -> int:
 
 # --- arms ----------------------------------------------------------------------------------------
 def _cmd_arms(args: argparse.Namespace) -> int:
-    import tomllib
+    from analysis.kinematics.catalog import list_arms
 
-    from analysis.kinematics.description import load_description
-    from analysis.paths import data_dir
-
-    docs = []
-    for path in sorted((data_dir() / "arms").glob("*.toml")):
-        try:
-            raw = tomllib.loads(path.read_text(encoding="utf-8"))
-        except (tomllib.TOMLDecodeError, OSError, UnicodeDecodeError) as exc:
-            raise UsageError(f"{path}: not a readable TOML description ({exc})") from None
-        if "rows" not in raw:  # not a D-H description (the picker: dimensions only)
-            docs.append(
-                {
-                    "name": path.stem,
-                    "title": "dimensions only, no D-H rows (a closed-chain model)",
-                    "paper": "",
-                    "joints": [],
-                    "parameters": {
-                        k: {"value": v["value"], "unit": str(v.get("unit", "")),
-                            "status": str(v.get("status", ""))}
-                        for k, v in (raw.get("parameters") or {}).items()
-                        if isinstance(v, dict) and isinstance(v.get("value"), (int, float))
-                        and not isinstance(v.get("value"), bool) and math.isfinite(v["value"])
-                    },
-                }
-            )
-            continue
-        d = load_description(path.stem)
-        docs.append(
-            {
-                "name": d.name,
-                "title": d.title,
-                "paper": d.paper,
-                "joints": [j.name for j in d.joints],
-                "parameters": {
-                    k: {"value": p.value, "unit": p.unit, "status": p.status}
-                    for k, p in d.parameters.items()
-                },
-            }
-        )
+    docs = list_arms()
     if args.json:
         print(_json(docs))
         return 0
     for d in docs:
+        if "error" in d:
+            print(f"{d['name']:<11} not loadable: {d['error']}")
+            continue
         params = ", ".join(
             f"{k} = {v['value']:g} {v['unit']}" + (" (assumed)" if v["status"] == "assumed" else "")
             for k, v in d["parameters"].items()

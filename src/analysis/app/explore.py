@@ -167,10 +167,12 @@ class Explorer(W.VBox):
                 label = f"{_greek(name)} [°]"
                 sliders.append(self._slider(math.degrees(p[k]), -180, 180, label, 0.01, ".2f"))
         joints = []
-        for j, spec in enumerate(arm.description.joints):
-            lim = arm.limits[j]
-            lo, hi = (-180.0, 180.0) if lim is None else (math.degrees(v) for v in lim)
-            joints.append(self._slider(0.0, lo, hi, f"{_greek(spec.name)} [°]", 0.01, ".2f"))
+        lows, highs = arm.joints_to_user(arm.bounds[:, 0]), arm.joints_to_user(arm.bounds[:, 1])
+        for spec, lo, hi, u in zip(
+            arm.description.joints, lows, highs, arm.joint_user_units, strict=True
+        ):
+            label = f"{_greek(spec.name)} [{'°' if u == 'deg' else u}]"
+            joints.append(self._slider(0.0, float(lo), float(hi), label, 0.01, ".2f"))
         self._syncing = True
         try:
             self.target_sliders, self.joint_sliders = sliders, joints
@@ -227,7 +229,7 @@ class Explorer(W.VBox):
         axis = self.on_axis.value and not self.fk_mode.value
         self.on_axis_deg.layout.display = None if axis else "none"
         if self.fk_mode.value:
-            q = np.radians([s.value for s in self.joint_sliders])
+            q = self.arm.joints_from_user([s.value for s in self.joint_sliders])
             point = arm.fk(q)
             where = ", ".join(num(v, 2) for v in point)
             head = f"FK: gripper at ({where}) mm. "
@@ -240,7 +242,7 @@ class Explorer(W.VBox):
             target = self._target()
             t1 = math.radians(self.on_axis_deg.value) if axis else None
             rep = pose_report(arm, target, self.branch.value, theta1_on_axis=t1)
-            q = np.radians(rep.angles_deg()) if rep.branch_ok else None
+            q = arm.joints_from_user(rep.angles_deg()) if rep.branch_ok else None
             head = ""
         self.report = rep
         if rep is None:
@@ -255,7 +257,13 @@ class Explorer(W.VBox):
         self.table.value = rep.to_html() if rep is not None else ""
         title = f"{arm.description.title} · " + ("FK" if self.fk_mode.value else self.branch.value)
         if q is not None:
-            title += " · θ = (" + ", ".join(num(v, 2) for v in np.degrees(q)) + ")°"
+            if set(arm.joint_user_units) == {"deg"}:
+                title += " · θ = (" + ", ".join(num(v, 2) for v in np.degrees(q)) + ")°"
+            else:
+                title += " · q = (" + ", ".join(
+                    f"{num(v, 2)} {'°' if u == 'deg' else u}"
+                    for v, u in zip(arm.joints_to_user(q), arm.joint_user_units, strict=True)
+                ) + ")"  # fmt: skip
         else:
             title += " · no solution"
         self.figure = arm_figure(arm, q, target, title=title, box=self.box)

@@ -15,10 +15,8 @@ import numpy as np
 import numpy.typing as npt
 import pandas as pd
 
-from analysis.kinematics.arm import DEFAULT_TOL_MM, Arm, as_points, load_arm
-from analysis.kinematics.pulses import angles_to_pulses, pulses_to_angles
+from analysis.kinematics.arm import DEFAULT_TOL_MM, Arm, as_points, load_arm  # noqa: F401
 from analysis.kinematics.status import STATUS_TEXT, Status
-from analysis.paths import data_dir
 
 POSITION_INPUTS = {"px": "x", "py": "y", "pz": "z"}
 """Closed-form inputs that are coordinates of the target point [mm]; every other input of an
@@ -51,25 +49,23 @@ def available_arms() -> tuple[dict[str, str], dict[str, str]]:
 
     The first dict holds every arm that :func:`~analysis.kinematics.arm.load_arm` builds
     (description and closed form), in file-name order; the second the files that do not
-    load, with the error (e.g. a description that is not a D-H chain yet).
+    load, with the error (:func:`analysis.kinematics.catalog.list_arms`).
     """
-    ok, skipped = {}, {}
-    for path in sorted((data_dir() / "arms").glob("*.toml")):
-        try:
-            ok[path.stem] = load_arm(path.stem).description.title
-        except ValueError as exc:
-            skipped[path.stem] = str(exc)
-    return ok, skipped
+    from analysis.kinematics.catalog import list_arms
+
+    docs = list_arms()
+    ok = {d["name"]: d["title"] for d in docs if "error" not in d}
+    return ok, {d["name"]: d["error"] for d in docs if "error" in d}
 
 
-def _position(arm: Arm, p: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
-    """The target point [mm] within an input vector (the inputs named px, py, pz)."""
-    idx = [arm.inputs.index(k) for k in POSITION_INPUTS if k in arm.inputs]
-    if len(idx) != 3:
-        raise ValueError(
-            f"arm {arm.name}: inputs {arm.inputs} do not name the target point (px, py, pz)"
-        )
-    return p[..., idx]
+def _position_error(arm: Arm, q: npt.NDArray[np.float64], p) -> npt.NDArray[np.float64]:
+    """Distance [mm] of the tool point at joint values ``q`` from the target's coordinates
+    (the inputs named px, py, pz that the arm has: a planar arm's px, py compare in-plane)."""
+    idx = [k for k, name in enumerate(POSITION_INPUTS) if name in arm.inputs]
+    if not idx:
+        raise ValueError(f"arm {arm.name}: inputs {arm.inputs} name no coordinate (px, py, pz)")
+    given = p[..., [arm.inputs.index(n) for n in POSITION_INPUTS if n in arm.inputs]]
+    return np.linalg.norm(arm.fk(q)[..., idx] - given, axis=-1)
 
 
 RPY_INPUTS = ("alpha", "beta", "gamma")
@@ -84,17 +80,10 @@ def target_from_joints(arm: Arm, q: npt.ArrayLike) -> npt.NDArray[np.float64] | 
     come from the D-H chain's tool rotation (:func:`analysis.kinematics.rpy.pose_from_transform`).
     None if the arm has an input of another kind (its FK cannot be put as a target).
     """
-    from analysis.kinematics.rpy import pose_from_transform
-
     known = set(POSITION_INPUTS) | set(RPY_INPUTS)
     if not set(arm.inputs) <= known:
         return None
-    q = np.asarray(q, dtype=float)
-    values = dict(zip(("px", "py", "pz"), np.moveaxis(arm.fk(q), -1, 0), strict=True))
-    if set(RPY_INPUTS) & set(arm.inputs):
-        pose = pose_from_transform(arm.table.fk(q))
-        values |= dict(zip(RPY_INPUTS, np.moveaxis(pose[..., 3:], -1, 0), strict=True))
-    return np.stack([values[k] for k in arm.inputs], axis=-1)
+    return arm.target(q)
 
 
 def default_target(arm: Arm, *, seed: int = 0) -> npt.NDArray[np.float64]:
@@ -105,7 +94,7 @@ def default_target(arm: Arm, *, seed: int = 0) -> npt.NDArray[np.float64]:
     inner joints bent by +-30, +-60 deg, then 256 seeded draws within the joint limits;
     coordinates cleaned of round-off below 1 nm.
     """
-    lim = np.array([lim if lim is not None else (-np.pi, np.pi) for lim in arm.limits])
+    lim = arm.bounds
     mid = lim.mean(axis=1)
     bends = np.zeros((4, arm.n_joints))
     k = min(arm.n_joints, 3)
@@ -113,6 +102,7 @@ def default_target(arm: Arm, *, seed: int = 0) -> npt.NDArray[np.float64]:
     rng = np.random.default_rng(seed)
     drawn = lim[:, 0] + rng.random((256, arm.n_joints)) * (lim[:, 1] - lim[:, 0])
     q = np.concatenate([np.clip(mid + bends, lim[:, 0], lim[:, 1]), drawn])
+    q = q[arm.valid_q(q)]  # a closed chain: configurations that assemble
     p = target_from_joints(arm, q)
     if p is None:
         raise ValueError(
@@ -145,7 +135,8 @@ class PoseReport:
         The exception's class name for a bad target (``"UnreachableError"``,
         ``"BaseAxisError"``, ``"ValueError"``), else None.
     table : pandas.DataFrame
-        Index = every branch of the arm. Columns ``theta<j>_deg`` [deg] and ``c<j>`` (whole
+        Index = every branch of the arm. Columns ``Arm.joint_labels`` (``theta<j>_deg``
+        [deg]; a prismatic joint's ``<name>_mm`` [mm]) and ``c<j>`` (whole
         pulses) per joint, ``error_mm`` (distance of FK(whole-pulse angles) from the target
         point), ``w_mm3`` (manipulability sqrt(det(J J^T)) [mm^3/rad^3]; for three joints
         |det J|) and ``status`` (a word of ``STATUS_TEXT``: "ok", or why the branch has no
@@ -181,10 +172,15 @@ class PoseReport:
         return self.table.loc[self.branch]
 
     def joint_columns(self) -> list[str]:
-        return [c for c in self.table.columns if c.startswith("theta")]
+        """The joint value columns (``Arm.joint_labels``: ``<joint>_deg`` or ``_mm``), which
+        come before the pulse counts ``c1 .. cn``."""
+        cols = list(self.table.columns)
+        n = sum(c.startswith("c") and c[1:].isdigit() for c in cols)
+        return cols[:n]
 
     def angles_deg(self) -> npt.NDArray[np.float64]:
-        """The chosen branch's joint angles [deg] (KeyError for a bad target)."""
+        """The chosen branch's joint values in user units (KeyError for a bad target):
+        angles [deg], a prismatic joint's value [mm] (``Arm.joint_user_units``)."""
         return self.row()[self.joint_columns()].to_numpy(float)
 
     def formatted(self) -> pd.DataFrame:
@@ -198,7 +194,13 @@ class PoseReport:
         def col(values, fmt):
             return [fmt(v) if good else "—" for v, good in zip(values, ok, strict=True)]
 
-        out = {f"{greek(c[:-4])} [°]": col(t[c], lambda v: num(v, 2)) for c in joints}
+        unit = {"deg": "°", "mm": "mm"}
+        out = {
+            f"{greek(c.rsplit('_', 1)[0])} [{unit[c.rsplit('_', 1)[1]]}]": col(
+                t[c], lambda v: num(v, 2)
+            )
+            for c in joints
+        }
         for j in range(1, len(joints) + 1):
             out[f"c{j} [pulses]"] = col(t[f"c{j}"], lambda v: str(int(v)))
         out["pulse error [mm]"] = col(t["error_mm"], lambda v: num(v, 3))
@@ -292,10 +294,12 @@ def pose_report(
             f"pose_report takes one target of shape ({len(arm.inputs)},), got {p.shape}"
         )
     key = tuple(float(v) + 0.0 for v in p)
+    if "theta1_on_axis" not in arm.closed_form.options:
+        theta1_on_axis = None  # an arm whose waist angle on the axis cannot be chosen
     sol = arm.solve(p, names, theta1_on_axis=theta1_on_axis, tol=tol)
     status, outside = Status(int(sol.status)), float(sol.outside_mm)
     n = arm.n_joints
-    cols = [f"theta{j}_deg" for j in range(1, n + 1)] + [f"c{j}" for j in range(1, n + 1)]
+    cols = [*arm.joint_labels, *(f"c{j}" for j in range(1, n + 1))]
     cols += ["error_mm", "w_mm3", "status"]
     if status != Status.OK:
         try:
@@ -308,18 +312,17 @@ def pose_report(
         return PoseReport(key, branch, False, outside, message, error, empty, status, arm.name)
     ok = sol.ok
     q = np.where(ok[:, None], sol.theta, 0.0)  # (B, n) rad; 0 stands in where no solution
-    ppr = np.asarray(arm.params.pulses_per_rev, dtype=float)
-    c = angles_to_pulses(q, ppr)
-    err = np.linalg.norm(arm.fk(pulses_to_angles(c, ppr)) - _position(arm, p), axis=-1)
+    c = arm.pulses(q)
+    err = _position_error(arm, arm.from_pulses(c), p)
     # why a branch has no solution: that branch solved alone gives its own status
     words = [
         "ok" if ok[i] else STATUS_TEXT[Status(int(arm.solve(p, (b,), tol=tol).status))]
         for i, b in enumerate(names)
     ]
-    deg = np.where(ok[:, None], np.degrees(q), np.nan)
+    deg = np.where(ok[:, None], arm.joints_to_user(q), np.nan)  # degrees | mm
     table = pd.DataFrame(
         {
-            **{f"theta{j + 1}_deg": deg[:, j] for j in range(n)},
+            **{label: deg[:, j] for j, label in enumerate(arm.joint_labels)},
             **{f"c{j + 1}": pd.array(np.where(ok, c[:, j], 0), dtype="Int64") for j in range(n)},
             "error_mm": np.where(ok, err, np.nan),
             "w_mm3": np.where(ok, _manipulability(arm, q), np.nan),
@@ -333,10 +336,16 @@ def pose_report(
     if r["status"] != "ok":
         message = f"{branch}: no solution on this branch ({r['status']}); pick another branch"
     else:
-        angles = ", ".join(num(r[f"theta{j}_deg"], 2) for j in range(1, n + 1))
+        if set(arm.joint_user_units) == {"deg"}:
+            angles = "θ = (" + ", ".join(num(r[label], 2) for label in arm.joint_labels) + ")°"
+        else:  # prismatic joints: each value with its unit
+            angles = "q = (" + ", ".join(
+                num(r[label], 2) + ("°" if u == "deg" else f" {u}")
+                for label, u in zip(arm.joint_labels, arm.joint_user_units, strict=True)
+            ) + ")"  # fmt: skip
         pulses = ", ".join(str(int(r[f"c{j}"])) for j in range(1, n + 1))
         message = (
-            f"{branch}: θ = ({angles})° -> pulses ({pulses}); whole pulses put the gripper "
+            f"{branch}: {angles} -> pulses ({pulses}); whole pulses put the gripper "
             f"{num(r['error_mm'], 3)} mm off the target; reach margin "
             f"{num(max(-outside, 0.0), 1)} mm (the largest over the branches' wrists)"
         )

@@ -241,10 +241,11 @@ def _companions_verdict() -> Verdict:
         verdict=(
             "The same treatment for seeds 001, 002 and 004: the paper as data, every printed "
             "formula, listing and claim in one register schema with a test per row, the "
-            "kinematics against Pinocchio, and (001, 004) a generated PLC program run on "
-            "awlsim. Where the text extraction lost a paper's numbers, the values used are "
-            "assumed and marked so on every figure, table and generated program (seed 001: "
-            "every length; seed 002: 19 of 21 dimensions; seed 004: d1 and the joint limits)."
+            "kinematics against Pinocchio, and a generated PLC program run on awlsim (002's "
+            "from the reconstruction's inverse kinematics: the paper has none). Where the "
+            "text extraction lost a paper's numbers, the values used are assumed and marked "
+            "so on every figure, table and generated program (seed 001: every length; seed "
+            "002: 19 of 21 dimensions; seed 004: d1 and the joint limits)."
         ),
         evidence=(
             ("register", "the registers"),

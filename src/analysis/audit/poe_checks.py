@@ -5,7 +5,7 @@ The picker paper (seed 002) builds its forward kinematics as a product of expone
 twists. :mod:`analysis.kinematics.poe` is that formula, written once. Here it is held,
 arm by arm, against routes that share no code with it:
 
-* every D-H arm of ``data/arms/`` (a description with ``[[rows]]``: :func:`dh_arm_names`):
+* every seed arm that is a D-H chain (:func:`dh_arm_names`):
   screws read off the D-H frames at q = 0 only (:func:`~analysis.kinematics.poe.
   screws_from_dh`), then the pose at seeded q by POE, by the D-H product
   (:meth:`~analysis.kinematics.dh.DHTable.fk`), by Pinocchio built from the D-H rows
@@ -29,7 +29,6 @@ import numpy as np
 from analysis.kinematics import poe
 from analysis.kinematics.arm import load_arm
 from analysis.kinematics.description import load_description
-from analysis.paths import data_dir
 
 __all__ = ["ATOL_MM", "ATOL_ROT", "cross_check", "dh_arm_names"]
 
@@ -37,16 +36,14 @@ ATOL_MM = 1e-9
 ATOL_ROT = 1e-12
 
 
+SEED_DH_ARMS = ("gr1", "grabber", "palletizer")
+"""The seed papers' arms that are D-H chains (sorted): the register checks these, not
+whatever other description a user adds to ``data/arms`` (the picker is a closed chain)."""
+
+
 def dh_arm_names() -> tuple[str, ...]:
-    """Names of the arms described by D-H rows in ``data/arms/*.toml`` (sorted)."""
-    out = []
-    for path in sorted((data_dir() / "arms").glob("*.toml")):
-        try:
-            load_description(path.stem)
-        except (ValueError, KeyError):
-            continue  # not a D-H description (the picker: parameters only)
-        out.append(path.stem)
-    return tuple(out)
+    """Names of the seed arms described by D-H rows (:data:`SEED_DH_ARMS`)."""
+    return tuple(n for n in SEED_DH_ARMS if load_description(n).has_rows)
 
 
 def _errors(T, ref) -> tuple[float, float]:

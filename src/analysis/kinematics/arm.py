@@ -5,9 +5,15 @@
 (:mod:`analysis.kinematics.arms`). Nothing here is specific to an arm:
 
 - forward kinematics and frame origins come from the D-H chain (:func:`chain_frames`, the
-  one formula of :mod:`analysis.kinematics.dh` composed in a math namespace);
+  one formula of :mod:`analysis.kinematics.dh` composed in a math namespace), or, for an
+  arm that is not a D-H chain (the picker's closed chain), from its closed form's ``fk``
+  (:func:`chain_points`: the one place that chooses);
 - the Jacobian is that chain differentiated by forward-mode duals
   (:class:`~analysis.kinematics.ops.DualOps`), not written by hand;
+- joint values are radians (revolute) or millimetres (prismatic, :attr:`Arm.joint_units`);
+  :meth:`Arm.pulses` converts both to drive pulses (eqs. 20-22; a screw's lead);
+- :meth:`Arm.sample_q` draws valid configurations (:mod:`analysis.kinematics.sampling`),
+  :meth:`Arm.target` gives the closed form's inputs that a configuration reaches;
 - :meth:`Arm.solve` runs the closed form and the shared solver body (:func:`solve_body`:
   statuses, joint limits, NaN where no solution) with numpy, or the compiled kernel
   generated from the very same body (:mod:`analysis.kinematics.compiled`). The body, the
@@ -20,16 +26,16 @@ Angles in radians, lengths in mm; joint arrays have shape ``(..., n)``, targets
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
-from functools import cached_property
-from types import ModuleType
+from functools import cached_property, lru_cache
 
 import numpy as np
 import numpy.typing as npt
 
 from analysis import validate
-from analysis.kinematics.arms import closed_form
+from analysis.kinematics.arms import ClosedForm, closed_form
 from analysis.kinematics.description import (
     MAX_PULSES_PER_REV,
     ArmDescription,
@@ -40,6 +46,7 @@ from analysis.kinematics.ops import DualOps, numpy_ops
 from analysis.kinematics.solution import (
     DEFAULT_TOL_MM,
     MAX_JOINT_DEG,
+    MAX_JOINT_MM,
     MAX_TOL_MM,
     BaseAxisError,
     IKSolutions,
@@ -57,7 +64,10 @@ __all__ = [
     "BRANCHES",
     "DEFAULT_TOL_MM",
     "MAX_JOINT_DEG",
+    "MAX_JOINT_MM",
     "MAX_TOL_MM",
+    "POSITION_INPUTS",
+    "RPY_INPUTS",
     "Arm",
     "BaseAxisError",
     "IKSolutions",
@@ -66,6 +76,7 @@ __all__ = [
     "Status",
     "UnreachableError",
     "as_points",
+    "chain_points",
     "check_joints",
     "check_tol",
     "load_arm",
@@ -75,6 +86,36 @@ __all__ = [
 
 BRANCHES: tuple[str, ...] = ("front-up", "front-down", "back-up", "back-down")
 """The paper's arm's branches (``analysis.kinematics.arms.grabber.BRANCHES``)."""
+POSITION_INPUTS = ("px", "py", "pz")
+"""Closed-form inputs that are the tool point's coordinates x, y, z [mm]."""
+RPY_INPUTS = ("alpha", "beta", "gamma")
+"""Closed-form inputs that are the tool's orientation as RPY angles [rad], in the convention
+of :mod:`analysis.kinematics.rpy` (a pose: the GR-1's and the picker's inputs)."""
+
+
+def chain_points(m, desc: ArmDescription, cf: ClosedForm, P, qs: Sequence) -> dict:
+    """The arm's forward kinematics in namespace ``m``: ``frames`` (points ``(x, y, z)``,
+    the tool point last) and ``rotation`` (the tool's 3x3 rows, or None), for joint values
+    ``qs`` (one ``m`` value per joint).
+
+    The D-H chain of the description (:func:`chain_frames`), or the closed form's ``fk``
+    for an arm that is not a D-H chain (the picker). Every backend's FK comes from here:
+    numpy (:meth:`Arm.fk`), duals (:meth:`Arm.jacobian`), the compiled kernel
+    (:func:`analysis.kinematics.compiled.fk`).
+    """
+    if cf.fk is not None:
+        out = cf.fk(m, list(qs), P)
+        return {"frames": list(out["frames"]), "rotation": out.get("rotation"),
+                "valid": out.get("valid", True)}  # fmt: skip
+    return {"frames": chain_frames(m, desc.dh_table(dict(P)), list(qs)), "rotation": None,
+            "valid": True}  # fmt: skip
+
+
+@lru_cache(maxsize=256)
+def _probe(cf: ClosedForm, names: tuple[str, ...], n_joints: int) -> None:
+    """Record the closed form once per parameter set (names only: values are recorded as
+    inputs, as in the compiled kernel) and check its joint count."""
+    cf.probe(names, n_joints)
 
 
 @dataclass(frozen=True)
@@ -118,7 +159,19 @@ class Params(Mapping):
                 f"1 .. {MAX_PULSES_PER_REV:,}, one per joint"
             ) from None
         object.__setattr__(self, "pulses_per_rev", ppr)
-        closed_form(desc.closed_form).check(self)
+        cf = closed_form(desc.closed_form)
+        if not desc.has_rows and cf.fk is None:
+            raise ValueError(
+                f"arm {self.arm}: the description has no [[rows]] and its closed form "
+                f"{cf.name!r} gives no fk: no forward kinematics"
+            )
+        if desc.has_rows and cf.fk is not None:
+            raise ValueError(
+                f"arm {self.arm}: both D-H [[rows]] and closed form {cf.name!r} with its own "
+                "fk describe the chain; keep one"
+            )
+        cf.check(self)
+        _probe(cf, tuple(vals), n)
 
     @classmethod
     def from_description(cls, desc: ArmDescription) -> Params:
@@ -183,24 +236,77 @@ class Arm:
         return self.params.description
 
     @cached_property
-    def closed_form(self) -> ModuleType:
+    def closed_form(self) -> ClosedForm:
+        """The closed form, checked against the contract (:mod:`analysis.kinematics.arms`)."""
         return closed_form(self.description.closed_form)
 
     @property
     def branches(self) -> tuple[str, ...]:
         """Branch names; the first is the default (the paper's choice)."""
-        return tuple(self.closed_form.BRANCHES)
+        return self.closed_form.branches
 
     @property
     def inputs(self) -> tuple[str, ...]:
         """Names of the closed form's inputs (the target: px, py, pz; more for a pose)."""
-        return tuple(self.closed_form.INPUTS)
+        return self.closed_form.inputs
 
     @property
     def input_units(self) -> tuple[str, ...]:
         """Units of the inputs: "mm" for a coordinate, "rad" for an angle (the closed form's
-        ``INPUT_UNITS``; a point when it has none)."""
-        return tuple(getattr(self.closed_form, "INPUT_UNITS", ("mm",) * len(self.inputs)))
+        ``INPUT_UNITS``)."""
+        return self.closed_form.input_units
+
+    @property
+    def joint_names(self) -> tuple[str, ...]:
+        """The joints' names, in order (the description's ``[[joints]]``)."""
+        return tuple(j.name for j in self.description.joints)
+
+    @property
+    def joint_units(self) -> tuple[str, ...]:
+        """Units of the joint values: "rad" (revolute) or "mm" (prismatic)."""
+        return tuple(j.unit for j in self.description.joints)
+
+    @property
+    def joint_labels(self) -> tuple[str, ...]:
+        """Column names of the joint values in user units: ``<joint>_deg`` (revolute) or
+        ``<joint>_mm`` (prismatic), e.g. ``theta1_deg`` (batch CSV, the explorer's table).
+
+        >>> load_arm("picker").joint_labels
+        ('theta1_deg', 'theta2_mm', 'theta6_deg', 'theta7_deg', 'theta8_deg', 'theta9_mm')
+        """
+        return tuple(f"{n}_{u}" for n, u in zip(self.joint_names, self.joint_user_units,
+                                               strict=True))  # fmt: skip
+
+    @property
+    def joint_user_units(self) -> tuple[str, ...]:
+        """Units a user gives joint values in (``fk`` on the command line): "deg" or "mm"."""
+        return tuple("deg" if u == "rad" else u for u in self.joint_units)
+
+    def joints_from_user(self, values: npt.ArrayLike) -> np.ndarray:
+        """``(..., n)`` joint values in :attr:`joint_user_units` -> :attr:`joint_units`."""
+        v = np.asarray(values, dtype=float)
+        angle = np.array([u == "rad" for u in self.joint_units])
+        if v.shape[-1:] != angle.shape:
+            raise ValueError(f"{self.name} has {len(angle)} joints, got {v.shape}")
+        return np.where(angle, np.radians(v), v)
+
+    def joints_to_user(self, q: npt.ArrayLike) -> np.ndarray:
+        """``(..., n)`` joint values in :attr:`joint_units` -> :attr:`joint_user_units`."""
+        q = np.asarray(q, dtype=float)
+        return np.where(np.array([u == "rad" for u in self.joint_units]), np.degrees(q), q) + 0.0
+
+    @property
+    def statuses(self) -> tuple[Status, ...]:
+        """Every status a target of this arm can get: ok, the closed form's refusals, the
+        joint limits where some joint has them."""
+        limited = any(lim is not None for lim in self.limits)
+        return (Status.OK, *self.closed_form.statuses, *((Status.JOINT_LIMITS,) * limited))
+
+    @property
+    def startup_target(self) -> tuple[float, ...] | None:
+        """The target a generated PLC program writes on its first scan (the closed form's
+        ``STARTUP_TARGET``, in :attr:`input_units`), or None."""
+        return self.closed_form.startup_target(self.params)
 
     @property
     def user_units(self) -> tuple[str, ...]:
@@ -250,23 +356,95 @@ class Arm:
 
     @cached_property
     def limits(self) -> tuple[tuple[float, float] | None, ...]:
-        """Joint limits [rad] per joint, None where unrestricted."""
+        """Joint limits [rad | mm] per joint, None where unrestricted."""
         return tuple(None if j.unlimited else (j.lower, j.upper) for j in self.description.joints)
 
+    @cached_property
+    def bounds(self) -> npt.NDArray[np.float64]:
+        """(n, 2) lower and upper bound of every joint [rad | mm]: its limits, or one turn
+        (-pi, pi) where unrestricted (where :meth:`sample_q` draws)."""
+        return np.array([lim if lim is not None else (-np.pi, np.pi) for lim in self.limits])
+
+    @cached_property
+    def lead_mm(self) -> npt.NDArray[np.float64]:
+        """Per joint the lead [mm per motor revolution] of a prismatic joint, NaN for a
+        revolute one (:func:`~analysis.kinematics.pulses.angles_to_pulses`)."""
+        return np.array(
+            [np.nan if j.lead_mm is None else j.lead_mm for j in self.description.joints]
+        )
+
+    # --- drive pulses (eqs. 20-22) --------------------------------------------------------
+    def pulses(self, q: npt.ArrayLike, *, rounding: str = "half-away") -> npt.NDArray[np.int64]:
+        """Whole drive pulses (..., n) for joint values (..., n) [rad | mm]: eqs. 20-22 for
+        a revolute joint, ``q / lead * pulses_per_rev`` for a prismatic one.
+
+        >>> paper_arm().pulses(np.radians([45.0, 10.2087, -155.1291])).tolist()
+        [500, 113, -1724]
+        """
+        from analysis.kinematics.pulses import angles_to_pulses
+
+        return angles_to_pulses(
+            q, self.params.pulses_per_rev, rounding=rounding, lead_mm=self.lead_mm
+        )
+
+    def pulse_values(self, q: npt.ArrayLike) -> npt.NDArray[np.float64]:
+        """Unrounded pulse counts (..., n) for joint values (..., n) [rad | mm]."""
+        from analysis.kinematics.pulses import _per_joint, pulse_value
+
+        q = np.asarray(q, dtype=float)
+        ppr = np.asarray(self.params.pulses_per_rev, dtype=float)
+        return _per_joint(pulse_value, q, ppr, self.lead_mm)
+
+    def from_pulses(self, c: npt.ArrayLike) -> npt.NDArray[np.float64]:
+        """Joint values (..., n) [rad | mm] commanded by whole pulse counts (..., n)."""
+        from analysis.kinematics.pulses import pulses_to_angles
+
+        return pulses_to_angles(c, self.params.pulses_per_rev, lead_mm=self.lead_mm)
+
     # --- forward kinematics, from the chain ----------------------------------------------
+    def _q(self, q: npt.ArrayLike) -> npt.NDArray[np.float64]:
+        """Joint values checked (shape, finite, magnitude per unit) and, for a closed chain,
+        that the closed form has a configuration for them (its ``fk_refusal``)."""
+        q = check_joints(q, self.n_joints, units=self.joint_units)
+        cf = self.closed_form
+        if cf.fk is not None and hasattr(cf.module, "fk_refusal"):
+            bad = ~self.valid_q(q)
+            if bad.any():
+                first = q[tuple(np.argwhere(bad)[0])]
+                raise ValueError(cf.fk_refusal(first, self.params))
+        return q
+
+    def valid_q(self, q: npt.ArrayLike) -> npt.NDArray[np.bool_]:
+        """Mask (...,) of joint values the arm has a configuration for (always True for a
+        D-H chain; the picker's sliders must let link 5 close)."""
+        q = check_joints(q, self.n_joints, units=self.joint_units)
+        if self.closed_form.fk is None:
+            return np.ones(q.shape[:-1], dtype=bool)
+        with np.errstate(invalid="ignore"):
+            valid = self._points(numpy_ops, q)["valid"]
+        return np.broadcast_to(np.asarray(valid, dtype=bool), q.shape[:-1]).copy()
+
+    def _points(self, m, q: npt.NDArray[np.float64] | list) -> dict:
+        qs = list(np.moveaxis(q, -1, 0)) if isinstance(q, np.ndarray) else q
+        if self.closed_form.fk is None:  # chain_points' D-H case, with the table built once
+            return {"frames": chain_frames(m, self.table, qs), "rotation": None, "valid": True}
+        return chain_points(m, self.description, self.closed_form, self.params, qs)
+
     def frames(self, q: npt.ArrayLike) -> npt.NDArray[np.float64]:
-        """Origins of the chain's frames 0..n [mm], shape (..., n_rows + 1, 3): the base,
-        each link's end (D-H), the tool. For drawing the arm."""
-        q = check_joints(q, self.n_joints)
-        origins = chain_frames(numpy_ops, self.table, list(np.moveaxis(q, -1, 0)))
+        """Points of the arm [mm], shape (..., k, 3), in drawing order: for a D-H chain the
+        origins of its frames 0..n (the base, each link's end, the tool); for a closed
+        chain the closed form's points (the picker's linkage). The tool point is last."""
+        q = self._q(q)
+        origins = self._points(numpy_ops, q)["frames"]
         shape = q.shape[:-1]
         return np.stack(
             [np.stack([np.broadcast_to(c, shape) for c in o], axis=-1) for o in origins], axis=-2
-        )
+        ).astype(float)
 
     def fk(self, q: npt.ArrayLike) -> npt.NDArray[np.float64]:
-        """End point [mm], shape (..., 3), for joint angles (..., n) [rad]: the position
-        column of the chain's product of link transforms (for the paper's arm, eq. 2).
+        """End point [mm], shape (..., 3), for joint values (..., n) [rad | mm]: the position
+        column of the chain's product of link transforms (for the paper's arm, eq. 2; for
+        the picker the product of exponentials of its main chain).
 
         Examples
         --------
@@ -275,23 +453,76 @@ class Arm:
         >>> paper_arm().fk(np.radians([45.0, 10.2087, -155.1291])).round(2).tolist()
         [100.0, 100.0, 600.0]
         """
-        q = check_joints(q, self.n_joints)
-        end = chain_frames(numpy_ops, self.table, list(np.moveaxis(q, -1, 0)))[-1]
+        q = self._q(q)
+        end = self._points(numpy_ops, q)["frames"][-1]
         return np.stack([np.broadcast_to(c, q.shape[:-1]) for c in end], axis=-1).astype(float)
+
+    def tool_transform(self, q: npt.ArrayLike) -> npt.NDArray[np.float64]:
+        """The tool's pose (..., 4, 4) [mm] in the base frame for joint values (..., n)."""
+        q = self._q(q)
+        if self.closed_form.fk is None:
+            return self.table.fk(q)
+        out = self._points(numpy_ops, q)
+        shape = q.shape[:-1]
+        T = np.zeros((*shape, 4, 4))
+        for i, row in enumerate(out["rotation"]):
+            for j, v in enumerate(row):
+                T[..., i, j] = v
+        for i, v in enumerate(out["frames"][-1]):
+            T[..., i, 3] = v
+        T[..., 3, 3] = 1.0
+        return T
+
+    def target(self, q: npt.ArrayLike) -> npt.NDArray[np.float64]:
+        """The closed form's inputs (..., k) that joint values (..., n) reach, in
+        :attr:`input_units`: the tool point for ``px, py, pz``, its orientation's RPY angles
+        (:func:`analysis.kinematics.rpy.pose_from_transform`) for ``alpha, beta, gamma``.
+
+        Raises ValueError for an input of another kind (the arm's FK cannot name it).
+
+        >>> paper_arm().target(np.radians([45.0, 10.2087, -155.1291])).round(2).tolist()
+        [100.0, 100.0, 600.0]
+        """
+        other = [k for k in self.inputs if k not in POSITION_INPUTS + RPY_INPUTS]
+        if other:
+            raise ValueError(
+                f"arm {self.name}: inputs {other} are neither the tool point {POSITION_INPUTS} "
+                f"nor RPY angles {RPY_INPUTS}: no target follows from joint values"
+            )
+        q = np.asarray(q, dtype=float)
+        values = dict(zip(POSITION_INPUTS, np.moveaxis(self.fk(q), -1, 0), strict=True))
+        if set(RPY_INPUTS) & set(self.inputs):
+            from analysis.kinematics.rpy import rpy_from_matrix
+
+            rpy = rpy_from_matrix(self.tool_transform(q)[..., :3, :3])
+            values |= dict(zip(RPY_INPUTS, np.moveaxis(rpy, -1, 0), strict=True))
+        return np.stack([values[k] for k in self.inputs], axis=-1)
+
+    def sample_q(
+        self, rng: np.random.Generator, n: int, *, branch: str | None = None, **margins
+    ) -> npt.NDArray[np.float64]:
+        """``n`` seeded configurations (n, n_joints) [rad | mm] that the closed form solves
+        back: within the joint limits, outside every refusal band, each one of the IK
+        solutions of its own target (of ``branch`` if given). See
+        :func:`analysis.kinematics.sampling.sample_q` (``margin_mm``, ``margin_rad``).
+        """
+        from analysis.kinematics.sampling import sample_q
+
+        return sample_q(self, rng, n, branch=branch, **margins)
 
     def elbow(self, q: npt.ArrayLike) -> npt.NDArray[np.float64]:
         """Origin of frame 2 (the paper's arm: the elbow) [mm], shape (..., 3)."""
         return self.frames(q)[..., 2, :]
 
     def jacobian(self, q: npt.ArrayLike) -> npt.NDArray[np.float64]:
-        """Positional Jacobian dP/dq [mm/rad], shape (..., 3, n); column j is dP/dq_j.
+        """Positional Jacobian dP/dq [mm/rad | mm/mm], shape (..., 3, n); column j is dP/dq_j.
 
         The chain of :meth:`fk` differentiated by forward-mode duals (exact to round-off).
         """
-        q = check_joints(q, self.n_joints)
+        q = self._q(q)
         m = DualOps(numpy_ops)
         qs = m.seed(list(np.moveaxis(q, -1, 0)))
-        end = chain_frames(m, self.table, qs)[-1]
+        end = self._points(m, qs)["frames"][-1]
         shape = q.shape[:-1]
         cols = [
             np.stack(
@@ -495,9 +726,13 @@ class Arm:
         if status == Status.OK:
             return
         if status == Status.JOINT_LIMITS:
+            values = ", ".join(
+                f"{name} = {math.degrees(v) if u == 'rad' else v:g} {'deg' if u == 'rad' else u}"
+                for name, v, u in zip(self.inputs, map(float, p), self.input_units, strict=True)
+            )
             raise ValueError(
-                f"target {tuple(float(v) for v in p)} mm is reachable, but no requested branch "
-                f"is within the joint limits of {self.name}"
+                f"target ({values}) is reachable, but no requested branch is within the joint "
+                f"limits of {self.name}"
             )
         message, limit = self.closed_form.refusal(status, p, self.params, tol=tol, distance=outside)
         if status in (Status.OUT_OF_REACH, Status.INSIDE_REACH):
@@ -521,7 +756,8 @@ def check_theta1_on_axis(value) -> float | npt.NDArray[np.float64]:
 
 
 def load_arm(name: str = "grabber", tables: dict | None = None) -> Arm:
-    """The arm described by ``data/arms/<name>.toml`` (see :func:`load_description`)."""
+    """The arm described by ``data/arms/<name>.toml``, or by the description file at path
+    ``name`` (anywhere on disk; see :func:`load_description`)."""
     return Arm(Params.from_description(load_description(name, tables)))
 
 

@@ -41,10 +41,9 @@ import numpy.typing as npt
 
 from analysis.kinematics import pool
 from analysis.kinematics.arms import closed_form as load_cf
-from analysis.kinematics.dh import chain_frames
 from analysis.kinematics.ops import OPS
 from analysis.kinematics.printing import Printer
-from analysis.kinematics.solution import IKSolutions, as_points, check_joints, solve_body
+from analysis.kinematics.solution import IKSolutions, as_points, solve_body
 from analysis.kinematics.trace import Graph, Node, TraceOps
 
 try:  # pragma: no cover - depends on the environment
@@ -401,12 +400,7 @@ def ik_kernel(closed_form: str, params: tuple, names: tuple, limits: tuple) -> K
         P = {k: v[k] for k in params}
         return solve_body(m, cf, p, P, names, tol=v["tol"], limits=limits)
 
-    probe = Graph()
-    n_joints = len(
-        cf.ik(TraceOps(probe), (0.0,) * len(cf.INPUTS), dict.fromkeys(params, 1.0), tol=0.0)[
-            "branches"
-        ][names[0]]
-    )
+    n_joints = cf.probe(params)
     outputs = {"status": "i1", "outside": "f8"}
     outputs.update({f"ok:{b}": "b1" for b in names})
     outputs.update({f"q:{b}:{j}": "f8" for b in names for j in range(n_joints)})
@@ -489,20 +483,25 @@ def solve(arm, p: npt.NDArray[np.float64], names, *, tol: float, limits, out=Non
 # --------------------------------------------------------------------------------------------
 @cache
 def fk_kernel(description, params: tuple) -> Kernel:
-    """The kernel of the chain's end point (:func:`~analysis.kinematics.dh.chain_frames`)."""
+    """The kernel of the arm's end point (:func:`analysis.kinematics.arm.chain_points`: the
+    D-H chain, or the closed form's own FK for a closed chain)."""
+    from analysis.kinematics.arm import chain_points
+
     nq = len(description.joints)
+    cf = load_cf(description.closed_form)
 
     def body(m, v):
-        table = description.dh_table({k: v[k] for k in params})
-        end = chain_frames(m, table, [v[f"q{j}"] for j in range(nq)])[-1]
+        P = {k: v[k] for k in params}
+        end = chain_points(m, description, cf, P, [v[f"q{j}"] for j in range(nq)])["frames"][-1]
         return {"x": end[0], "y": end[1], "z": end[2]}
 
     return build(body, tuple(f"q{j}" for j in range(nq)), params, dict.fromkeys("xyz", "f8"))
 
 
 def fk(arm, q: npt.ArrayLike, out: npt.NDArray[np.float64] | None = None):
-    """:meth:`Arm.fk` with the compiled kernel: end points (..., 3) [mm] for (..., n) [rad]."""
-    q = check_joints(q, arm.n_joints)
+    """:meth:`Arm.fk` with the compiled kernel: end points (..., 3) [mm] for (..., n)
+    [rad | mm] (a closed chain's joint values are checked as :meth:`Arm.fk` does)."""
+    q = arm._q(q)
     if not HAVE_NUMBA:  # pragma: no cover
         return arm.fk(q)
     kern = fk_kernel(arm.description, tuple(arm.params))

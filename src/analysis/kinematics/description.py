@@ -1,27 +1,40 @@
 """Arm descriptions: one TOML file per arm in ``data/arms/``, the single source of its geometry.
 
-A description holds the D-H rows as the paper prints them (numbers or parameter names),
-the parameters' values with their provenance (``printed``, ``derived`` or ``assumed``; a
-value may be read from a table of the paper kept verbatim in ``data/``), and the joints'
-drive (pulses per revolution, limits). Everything numeric in the project about an arm
-comes from here: the closed form (:mod:`analysis.kinematics.arms`) receives the parameter
-values, the chain (:class:`~analysis.kinematics.dh.DHTable`) is built from the rows, and
-Pinocchio is built from that chain.
+A description holds the D-H rows as the paper prints them (numbers or parameter names), the
+parameters' values with their provenance (``printed``, ``derived``, ``assumed`` or
+``measured``; a value may be read from a table of the paper kept verbatim in ``data/``, or
+next to the description), and the joints' drive (pulses per revolution, limits). Everything
+numeric in the project about an arm comes from here: the closed form
+(:mod:`analysis.kinematics.arms`) receives the parameter values, the chain
+(:class:`~analysis.kinematics.dh.DHTable`) is built from the rows, and Pinocchio is built
+from that chain.
 
 Format (``data/arms/grabber.toml`` is the commented example)::
 
     name = "grabber"; title = "..."; paper = "..."
-    closed_form = "grabber"            # module analysis.kinematics.arms.<closed_form>
+    closed_form = "grabber"            # module analysis.kinematics.arms.<closed_form>, or
+                                       # "my_arm.py": a file next to the description
     convention = "standard"            # or "modified" (Craig)
     [parameters]
     L1 = { value = 660.0, unit = "mm", status = "printed", source = "Table 3" }
     L2 = { table = "table3.csv", match = { link = "shoulder" }, column = "a_mm", ... }
     [[rows]]                           # one per D-H row, in chain order
     link = "waist"; joint = "theta1"; alpha_deg = 90; a = 0; d = "L1"; theta_offset_deg = 0
-    kind = "revolute"                  # or "fixed" (a tool row without a joint)
+    kind = "revolute"                  # "prismatic" (the joint value adds to d [mm]) or
+                                       # "fixed" (a tool row without a joint)
     [[joints]]                         # one per joint variable, in chain order
     name = "theta1"; pulses_per_rev = 4000; limits_deg = [-180, 180]
     # or pulses_per_rev = { value = 3200, status = "assumed" } (provenance as for parameters)
+    # a prismatic joint: kind = "prismatic"; limits_mm = [lo, hi] (required);
+    #   lead_mm = 5.0 (travel per motor revolution; pulses = mm / lead_mm * pulses_per_rev)
+    [axes]                             # optional: axis directions of a screw model
+    vertical_guide = { value = [0, 0, 1], status = "printed", note = "..." }
+
+A description without ``[[rows]]`` names a closed form that gives the forward kinematics
+itself (``fk``: a closed chain such as the picker's, by POE); the arm checks that when it
+loads (:class:`analysis.kinematics.arm.Arm`). A table file named by a parameter is looked
+for next to the description first, then in ``data/``, so a description kept in a user's own
+folder can carry its own tables.
 
 Why hand-written: the format is the project's own (TOML read by the standard library's
 ``tomllib``); no robot-description library (URDF, MJCF) keeps a paper's symbols and the
@@ -42,15 +55,22 @@ from analysis.kinematics.dh import DHRow, DHTable
 from analysis.paths import data_dir
 
 __all__ = [
+    "JOINT_KINDS",
     "MAX_PULSES_PER_REV",
+    "STATUSES",
     "ArmDescription",
+    "AxisSpec",
     "JointSpec",
     "ParamSpec",
     "check_pulses_per_rev",
     "load_description",
 ]
 
-STATUSES = ("printed", "derived", "assumed")
+STATUSES = ("printed", "derived", "assumed", "measured")
+"""Provenance of a value: printed in the paper, derived from printed values, assumed (not
+printed: every figure and table that uses it says so), or measured (on the robot, for a
+user's own arm)."""
+JOINT_KINDS = ("revolute", "prismatic")
 MAX_PULSES_PER_REV = validate.MAX_PULSES_PER_REV
 
 
@@ -66,8 +86,23 @@ class ParamSpec:
 
 
 @dataclass(frozen=True)
+class AxisSpec:
+    """One axis direction of a screw model (unit ``-``), with its provenance."""
+
+    name: str
+    value: tuple[float, float, float]
+    status: str
+    note: str
+
+
+@dataclass(frozen=True)
 class JointSpec:
-    """One joint variable: drive resolution and limits [rad]."""
+    """One joint variable: its kind, drive resolution and limits [rad | mm].
+
+    A revolute joint's pulse count is ``theta_deg / 360 * pulses_per_rev`` (eqs. 20-22 of
+    seed 000); a prismatic joint's is ``q_mm / lead_mm * pulses_per_rev`` (a screw of lead
+    ``lead_mm`` per motor revolution).
+    """
 
     name: str
     pulses_per_rev: int
@@ -75,12 +110,22 @@ class JointSpec:
     upper: float
     limits_status: str = ""
     pulses_status: str = "printed"
-    """Provenance of ``pulses_per_rev`` ("printed", "derived" or "assumed")."""
+    """Provenance of ``pulses_per_rev`` ("printed", "derived", "assumed" or "measured")."""
+    kind: str = "revolute"
+    lead_mm: float | None = None
+    """Travel per motor revolution [mm] of a prismatic joint (None for a revolute one)."""
+    lead_status: str = ""
+
+    @property
+    def unit(self) -> str:
+        """The joint value's unit: "rad" (revolute) or "mm" (prismatic)."""
+        return "rad" if self.kind == "revolute" else "mm"
 
     @property
     def unlimited(self) -> bool:
-        """True if the limits allow every angle (a full turn or more)."""
-        return self.lower <= -math.pi and self.upper >= math.pi
+        """True if the limits allow every angle (a revolute joint turning a full turn or
+        more; a prismatic joint always has a stroke)."""
+        return self.kind == "revolute" and self.lower <= -math.pi and self.upper >= math.pi
 
 
 @dataclass(frozen=True, eq=False)
@@ -99,6 +144,18 @@ class ArmDescription:
     rows: tuple[dict, ...]
     joints: tuple[JointSpec, ...]
     path: Path | None = field(default=None, compare=False)
+    axes: dict[str, AxisSpec] = field(default_factory=dict)
+
+    @property
+    def has_rows(self) -> bool:
+        """True if the description gives D-H rows (else its closed form gives the FK)."""
+        return bool(self.rows)
+
+    @property
+    def statuses(self) -> dict[str, str]:
+        """Provenance of every parameter and axis, by name."""
+        return {**{k: p.status for k, p in self.parameters.items()},
+                **{k: a.status for k, a in self.axes.items()}}  # fmt: skip
 
     @property
     def values(self) -> dict[str, float]:
@@ -113,6 +170,11 @@ class ArmDescription:
     def dh_table(self, values: dict | None = None, symbolic: bool = False) -> DHTable:
         """The chain with parameter ``values`` (default: the description's), or with SymPy
         symbols of the parameter names (positive reals) if ``symbolic``."""
+        if not self.rows:
+            raise ValueError(
+                f"arm {self.name} has no D-H rows: its closed form {self.closed_form!r} gives "
+                "its forward kinematics"
+            )
         vals = dict(self.values if values is None else values)
         angle = math.radians
         if symbolic:
@@ -155,9 +217,15 @@ def check_pulses_per_rev(value, where: str) -> int:
         raise ValueError(f"{where}: {exc}") from None
 
 
+def _table_path(name: str, folder: Path) -> Path:
+    """A table named by a description: next to the description, else in ``data/``."""
+    near = folder / name
+    return near if near.is_file() else data_dir() / name
+
+
 def _table_value(spec: dict, base: Path, tables: dict, where: str) -> float:
     name = spec["table"]
-    path = Path(tables.get(name, base / name))
+    path = Path(tables.get(name, _table_path(name, base)))
     try:
         with path.open(newline="", encoding="utf-8") as fh:
             reader = csv.DictReader(fh)
@@ -224,8 +292,8 @@ def _check_rows(rows: list[dict], path: Path) -> tuple[dict, ...]:
     for i, r in enumerate(rows, start=1):
         where = f"{path.name} row {i}"
         kind = r.get("kind", "revolute")
-        if kind not in ("revolute", "fixed"):
-            raise ValueError(f"{where}: kind {kind!r} is not 'revolute' or 'fixed'")
+        if kind not in ("revolute", "prismatic", "fixed"):
+            raise ValueError(f"{where}: kind {kind!r} is not 'revolute', 'prismatic' or 'fixed'")
         for key in ("link", "joint"):
             _text(r, key, where, "")
         row = dict(r)
@@ -239,42 +307,35 @@ def _check_rows(rows: list[dict], path: Path) -> tuple[dict, ...]:
     return tuple(out)
 
 
-def _joint(j: dict, base: Path, tables: dict, path: Path, index: int) -> JointSpec:
-    name = j.get("name")
-    if not isinstance(name, str) or not name:
-        raise ValueError(f"{path.name} joint {index}: needs a name (a string), got {name!r}")
-    where = f"{path.name} joint {name}"
-    if "pulses_per_rev" not in j:
-        raise ValueError(f"{where}: needs pulses_per_rev (a whole number, or a table)")
-    spec = j["pulses_per_rev"]
-    ppr = check_pulses_per_rev(_number(spec, base, tables, where), where)
-    pstatus = spec.get("status", "printed") if isinstance(spec, dict) else "printed"
-    if pstatus not in STATUSES:
-        raise ValueError(f"{where}: pulses_per_rev status {pstatus!r} is not one of {STATUSES}")
-    limits = j.get("limits_deg", [-180.0, 180.0])
-    if not isinstance(limits, list) or len(limits) != 2:
-        raise ValueError(f"{where}: limits_deg = {limits!r} must be [lower, upper] in degrees")
-    lo, hi = (_row_angle(v, where, "limits_deg") for v in limits)
-    if not lo < hi:
-        raise ValueError(f"{where}: limits_deg [{lo:g}, {hi:g}] must have lower < upper")
-    return JointSpec(
-        name,
-        ppr,
-        math.radians(lo),
-        math.radians(hi),
-        _text(j, "limits_status", where, ""),
-        pstatus,
-    )
+def description_path(name: str | Path) -> Path:
+    """The file of arm ``name``: ``data/arms/<name>.toml`` for a name, or ``name`` itself
+    for the path of a description file (anything ending in ``.toml`` or holding a folder
+    separator), anywhere on disk.
 
-
-def load_description(name: str, tables: dict | None = None) -> ArmDescription:
-    """Read ``data/arms/<name>.toml`` once per version of it and of its tables; see
-    :func:`_load` for the arguments."""
-    path = Path(name) if name.endswith(".toml") else data_dir() / "arms" / f"{name}.toml"
+    Raises ValueError naming the arms that exist, or the file that does not.
+    """
+    text = str(name)
+    if isinstance(name, Path) or text.endswith(".toml") or "/" in text or "\\" in text:
+        path = Path(text).expanduser()
+        if not path.is_file():
+            raise ValueError(f"no arm description {text!r}: no such file")
+        return path
+    path = data_dir() / "arms" / f"{text}.toml"
     if not path.is_file():
         known = sorted(p.stem for p in (data_dir() / "arms").glob("*.toml"))
-        raise ValueError(f"no arm {name!r}: expected one of {', '.join(known)}")
-    files = [path, *(Path(v) for v in (tables or {}).values()), *path.parent.parent.glob("*.csv")]
+        raise ValueError(
+            f"no arm {text!r}: expected one of {', '.join(known)}, or the path of a "
+            "description file (*.toml)"
+        )
+    return path
+
+
+def load_description(name: str | Path, tables: dict | None = None) -> ArmDescription:
+    """Read ``data/arms/<name>.toml`` (or the description file at path ``name``) once per
+    version of it and of its tables; see :func:`_load` for the arguments."""
+    path = description_path(name)
+    near = [*path.parent.glob("*.csv"), *data_dir().glob("*.csv")]
+    files = [path, *(Path(v) for v in (tables or {}).values()), *near]
     stamp = tuple((str(f.resolve()), *_version(f)) for f in files)
     return _load(str(path), tuple(sorted((tables or {}).items())), stamp)
 
@@ -309,35 +370,66 @@ def _load(name: str, tables: tuple, stamp: tuple) -> ArmDescription:
     except (OSError, UnicodeDecodeError) as exc:
         raise ValueError(f"{path}: cannot read ({exc})") from None
     tables = dict(tables or {})
-    base = path.parent.parent
+    base = path.parent
     params = {}
     raw_params = d.get("parameters", {})
     if not isinstance(raw_params, dict):
         raise ValueError(f"{path.name}: [parameters] must be a table, not {raw_params!r}")
     for key, spec in raw_params.items():
         where = f"{path.name} parameter {key}"
+        status = _status(spec, where)
         if isinstance(spec, dict):
-            status = _text(spec, "status", where, "printed")
             unit = _text(spec, "unit", where, "mm")
             source = _text(spec, "source", where, _text(spec, "note", where, ""))
         else:
-            status, unit, source = "printed", "mm", ""
-        if status not in STATUSES:
-            raise ValueError(f"{where}: status {status!r} is not one of {STATUSES}")
+            unit, source = "mm", ""
         value = _number(spec, base, tables, where)
         if unit == "mm":
             value = validate.length_mm(value, where)
         params[key] = ParamSpec(key, value, unit, status, source)
+    raw_axes = d.get("axes", {})
+    if not isinstance(raw_axes, dict):
+        raise ValueError(f"{path.name}: [axes] must be a table, not {raw_axes!r}")
+    axes = {}
+    for key, spec in raw_axes.items():
+        where = f"{path.name} axis {key}"
+        value = spec.get("value") if isinstance(spec, dict) else spec
+        ok = isinstance(value, list) and len(value) == 3
+        ok = ok and all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in value)
+        if not ok or not all(math.isfinite(v) for v in value) or not any(value):
+            raise ValueError(f"{where}: {value!r} is not a direction (three finite numbers)")
+        note = _text(spec, "note", where, _text(spec, "source", where, "")) if isinstance(
+            spec, dict) else ""  # fmt: skip
+        axes[key] = AxisSpec(key, tuple(float(v) for v in value), _status(spec, where), note)
     rows = _check_rows(_tables(d, "rows", path.name), path)
-    if not rows:
-        raise ValueError(f"{path}: no [[rows]]")
-    joints = [
-        _joint(j, base, tables, path, i)
+    if "rows" in d and not rows:
+        raise ValueError(f"{path}: [[rows]] is empty")
+    joints = tuple(
+        _joint(j, path, base, tables, i)
         for i, j in enumerate(_tables(d, "joints", path.name), start=1)
-    ]
-    n_rev = sum(r.get("kind", "revolute") == "revolute" for r in rows)
-    if len(joints) != n_rev:
-        raise ValueError(f"{path}: {len(joints)} [[joints]] for {n_rev} revolute rows")
+    )
+    if not joints:
+        raise ValueError(f"{path}: no [[joints]] (one per joint variable)")
+    names = [j.name for j in joints]
+    if len(set(names)) != len(names):
+        raise ValueError(f"{path}: [[joints]] repeat a name ({names})")
+    if rows:
+        moving = [r.get("kind", "revolute") for r in rows if r.get("kind", "revolute") != "fixed"]
+        if len(joints) != len(moving):
+            raise ValueError(
+                f"{path}: {len(joints)} [[joints]] for {len(moving)} moving rows "
+                "(revolute or prismatic)"
+            )
+        for j, kind in zip(joints, moving, strict=True):
+            if j.kind != kind:
+                raise ValueError(
+                    f"{path} joint {j.name}: kind {j.kind!r}, but its D-H row is {kind!r}"
+                )
+    cf_name = _text(d, "closed_form", path.name, path.stem)
+    if not cf_name:
+        raise ValueError(f"{path}: closed_form = {cf_name!r} must name a closed form")
+    if cf_name.endswith(".py"):  # a closed form kept next to the description
+        cf_name = str((path.parent / cf_name).resolve())
     convention = _text(d, "convention", path.name, "standard")
     if convention not in ("standard", "modified"):
         raise ValueError(f"{path.name}: convention {convention!r} is not 'standard' or 'modified'")
@@ -345,12 +437,79 @@ def _load(name: str, tables: tuple, stamp: tuple) -> ArmDescription:
         _text(d, "name", path.name, path.stem),
         _text(d, "title", path.name, path.stem),
         _text(d, "paper", path.name, ""),
-        _text(d, "closed_form", path.name, path.stem),
+        cf_name,
         convention,
         params,
         rows,
-        tuple(joints),
+        joints,
         path,
+        axes,
     )
-    desc.dh_table()  # every row resolves
+    if rows:
+        desc.dh_table()  # every row resolves
     return desc
+
+
+def _status(spec, where: str) -> str:
+    status = spec.get("status", "printed") if isinstance(spec, dict) else "printed"
+    if status not in STATUSES:
+        raise ValueError(f"{where}: status {status!r} is not one of {', '.join(STATUSES)}")
+    return status
+
+
+def _limits(j: dict, key: str, default, where: str, unit: str) -> tuple[float, float]:
+    raw = j.get(key, default)
+    if raw is None:
+        raise ValueError(f"{where}: a prismatic joint needs its stroke, {key} = [lower, upper]")
+    if not isinstance(raw, (list, tuple)) or len(raw) != 2:
+        raise ValueError(f"{where}: {key} = {raw!r} must be two numbers [lower, upper]")
+    if unit == "deg":
+        lo, hi = (_row_angle(v, where, key) for v in raw)
+    else:
+        lo, hi = (validate.length_mm(v, f"{where} {key}") for v in raw)
+    if not lo < hi:
+        raise ValueError(f"{where}: {key} [{lo:g}, {hi:g}] must have lower < upper")
+    return lo, hi
+
+
+def _joint(j: dict, path: Path, base: Path, tables: dict, index: int) -> JointSpec:
+    """One [[joints]] entry (the ``index``-th)."""
+    name = j.get("name")
+    if not isinstance(name, str) or not name:
+        raise ValueError(f"{path.name} joint {index}: needs a name (a string), got {name!r}")
+    where = f"{path.name} joint {name}"
+    if "pulses_per_rev" not in j:
+        raise ValueError(f"{where}: needs pulses_per_rev (a whole number, or a table)")
+    kind = _text(j, "kind", where, "revolute")
+    if kind not in JOINT_KINDS:
+        raise ValueError(f"{where}: kind {kind!r} is not one of {', '.join(JOINT_KINDS)}")
+    ppr = check_pulses_per_rev(_number(j["pulses_per_rev"], base, tables, where), where)
+    pstatus = _status(j["pulses_per_rev"], f"{where} pulses_per_rev")
+    lead = lead_status = None
+    if kind == "revolute":
+        if "limits_mm" in j or "lead_mm" in j:
+            raise ValueError(f"{where}: limits_mm and lead_mm are for prismatic joints")
+        lo, hi = (math.radians(v) for v in _limits(j, "limits_deg", [-180.0, 180.0], where, "deg"))
+    else:
+        if "limits_deg" in j:
+            raise ValueError(f"{where}: a prismatic joint's stroke is limits_mm, not limits_deg")
+        lo, hi = _limits(j, "limits_mm", None, where, "mm")
+        if "lead_mm" not in j:
+            raise ValueError(
+                f"{where}: a prismatic joint needs lead_mm (travel per motor revolution)"
+            )
+        lead = _number(j["lead_mm"], base, tables, f"{where} lead_mm")
+        lead_status = _status(j["lead_mm"], f"{where} lead_mm")
+        if not lead > 0:
+            raise ValueError(f"{where}: lead_mm = {lead:g} must be > 0 mm")
+    return JointSpec(
+        name,
+        ppr,
+        lo,
+        hi,
+        _text(j, "limits_status", where, ""),
+        pstatus,
+        kind,
+        lead,
+        lead_status or "",
+    )

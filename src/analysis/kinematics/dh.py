@@ -15,9 +15,10 @@ Modified D-H (Craig; seed 001's palletizer, its eq. 8), each row holding
 
     A_i = Rx(alpha_{i-1}) Tx(a_{i-1}) Rz(theta_i) Tz(d_i)
 
-A row's joint angle is ``theta_i = q_i + theta_offset_i`` for a revolute row; a ``fixed``
-row (a tool frame) has no joint variable and uses ``theta_offset`` alone. Angles are in
-radians, lengths in millimetres.
+A row's joint angle is ``theta_i = q_i + theta_offset_i`` for a revolute row; a
+``prismatic`` row moves along its z axis, ``d_i + q_i`` [mm], at the fixed angle
+``theta_offset``; a ``fixed`` row (a tool frame) has no joint variable and uses
+``theta_offset`` alone. Angles are in radians, lengths in millimetres.
 
 SymPy is imported inside the symbolic functions only: it takes half a second to import,
 which the numeric paths (the command line among them) should not pay. Frames are named
@@ -41,7 +42,8 @@ if TYPE_CHECKING:
     import sympy as sp
 
 Convention = Literal["standard", "modified"]
-JointKind = Literal["revolute", "fixed"]
+JointKind = Literal["revolute", "prismatic", "fixed"]
+MOVING = ("revolute", "prismatic")
 CONVENTIONS: tuple[Convention, ...] = ("standard", "modified")
 
 __all__ = [
@@ -140,14 +142,17 @@ def chain_frames(m, table: DHTable, q: Sequence) -> list[tuple]:
     T = None
     origins: list[tuple] = [(0.0, 0.0, 0.0)]
     for row in table.rows:
+        d = row.d
         if row.kind == "revolute":
             qi = next(it)
             theta = _add(qi, row.theta_offset) if row.theta_offset else qi
             ct, st = m.cos(theta), m.sin(theta)
         else:
             ct, st = exact_cos_sin(row.theta_offset)
+            if row.kind == "prismatic":
+                d = _add(next(it), d)
         ca, sa = exact_cos_sin(row.alpha)
-        A = _link_elements(ct, st, ca, sa, row.a, row.d, table.convention)
+        A = _link_elements(ct, st, ca, sa, row.a, d, table.convention)
         T = A if T is None else _compose(T, A)
         origins.append((T[0][3], T[1][3], T[2][3]))
     return origins
@@ -241,9 +246,10 @@ class DHRow:
             value = getattr(self, label)
             if isinstance(value, (int, float)) and not math.isfinite(value):
                 raise ValueError(f"D-H row {self.name or '?'}: {label} = {value} is not finite")
-        if self.kind not in ("revolute", "fixed"):
+        if self.kind not in ("revolute", "prismatic", "fixed"):
             raise ValueError(
-                f"D-H row {self.name or '?'}: kind {self.kind!r} is not 'revolute' or 'fixed'"
+                f"D-H row {self.name or '?'}: kind {self.kind!r} is not 'revolute', "
+                "'prismatic' or 'fixed'"
             )
 
 
@@ -270,24 +276,40 @@ class DHTable:
 
     @property
     def n_joints(self) -> int:
-        """Number of joint variables (revolute rows)."""
-        return sum(row.kind == "revolute" for row in self.rows)
+        """Number of joint variables (revolute and prismatic rows)."""
+        return sum(row.kind in MOVING for row in self.rows)
 
-    def joint_angles(self, q: npt.ArrayLike) -> npt.NDArray[np.float64]:
-        """Per-row theta for joint values ``q`` of shape (..., n_joints) -> (..., n_rows)."""
+    @property
+    def joint_kinds(self) -> tuple[str, ...]:
+        """ "revolute" or "prismatic" per joint variable, in chain order."""
+        return tuple(row.kind for row in self.rows if row.kind in MOVING)
+
+    def _rows_of(self, q: npt.ArrayLike, kind: str, base: str) -> npt.NDArray[np.float64]:
         q = np.asarray(q, dtype=float)
         if q.ndim == 0 or q.shape[-1] != self.n_joints:
             raise ValueError(f"joint array has shape {q.shape}; expected (..., {self.n_joints})")
-        offsets = np.array([row.theta_offset for row in self.rows])
-        revolute = np.array([row.kind == "revolute" for row in self.rows])
-        theta = np.broadcast_to(offsets, (*q.shape[:-1], len(self.rows))).copy()
-        theta[..., revolute] += q
-        return theta
+        out = np.broadcast_to(
+            np.array([getattr(row, base) for row in self.rows]), (*q.shape[:-1], len(self.rows))
+        ).copy()
+        moving = [i for i, row in enumerate(self.rows) if row.kind in MOVING]
+        for j, i in enumerate(moving):
+            if self.rows[i].kind == kind:
+                out[..., i] += q[..., j]
+        return out
+
+    def joint_angles(self, q: npt.ArrayLike) -> npt.NDArray[np.float64]:
+        """Per-row theta for joint values ``q`` of shape (..., n_joints) -> (..., n_rows)."""
+        return self._rows_of(q, "revolute", "theta_offset")
+
+    def joint_offsets(self, q: npt.ArrayLike) -> npt.NDArray[np.float64]:
+        """Per-row d [mm] for joint values ``q`` (..., n_joints) -> (..., n_rows): a
+        prismatic row's d plus its joint value."""
+        return self._rows_of(q, "prismatic", "d")
 
     def transforms(self, q: npt.ArrayLike) -> npt.NDArray[np.float64]:
         """Link transforms A_1..A_n, shape (..., n_rows, 4, 4), for joints (..., n_joints)."""
         theta = self.joint_angles(q)
-        d = np.array([r.d for r in self.rows])
+        d = self.joint_offsets(q)
         a = np.array([r.a for r in self.rows])
         alpha = np.array([r.alpha for r in self.rows])
         return link_transform(theta, d, a, alpha, self.convention)
@@ -319,11 +341,10 @@ class DHTable:
             alpha = _exact_angle(row.alpha) if exact else row.alpha
             offset = _exact_angle(row.theta_offset) if exact else row.theta_offset
             theta = offset + next(it) if row.kind == "revolute" else offset
-            out.append(
-                link_transform_sym(
-                    theta, _exact(row.d, exact), _exact(row.a, exact), alpha, self.convention
-                )
-            )
+            d = _exact(row.d, exact)
+            if row.kind == "prismatic":
+                d = d + next(it)
+            out.append(link_transform_sym(theta, d, _exact(row.a, exact), alpha, self.convention))
         return out
 
     @classmethod

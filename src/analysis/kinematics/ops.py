@@ -354,13 +354,31 @@ class Dual:
     def __neg__(self):
         return Dual(-self.v, [-a for a in self.d])
 
+    def __rtruediv__(self, o):
+        q = o / self.v
+        return Dual(q, [-q * a / self.v for a in self.d])
+
+    def __abs__(self):
+        s = np.sign(self.v)
+        return Dual(abs(self.v), [s * a for a in self.d])
+
+    def __pow__(self, k):
+        if isinstance(k, bool) or not isinstance(k, (int, float)) or k != int(k) or k < 0:
+            raise TypeError(f"** {k!r}: a dual takes whole exponents >= 0")
+        out = 1.0
+        for _ in range(int(k)):
+            out = self * out
+        return out
+
 
 class DualOps(Ops):
     """Forward-mode differentiation on top of another namespace (numpy by default).
 
     Used to derive Jacobians from the D-H chain (:meth:`analysis.kinematics.arm.Arm.jacobian`)
-    instead of writing derivatives by hand. Only the smooth operations the chains need are
-    provided (``sin``, ``cos``, ``sqrt`` and arithmetic).
+    instead of writing derivatives by hand. The operations the chains need are provided:
+    arithmetic, ``sin``, ``cos``, ``sqrt``, ``atan2`` and ``acos`` (the picker's passive
+    joints), ``abs``; comparisons act on the values and ``select`` carries the chosen
+    derivatives.
     """
 
     def __init__(self, base: Ops = numpy_ops) -> None:
@@ -392,3 +410,59 @@ class DualOps(Ops):
             return self.base.sqrt(x)
         r = self.base.sqrt(x.v)
         return Dual(r, [a / (2.0 * r) for a in x.d])
+
+    def atan2(self, y, x):
+        if not isinstance(y, Dual) and not isinstance(x, Dual):
+            return self.base.atan2(y, x)
+        yv, xv = (a.v if isinstance(a, Dual) else a for a in (y, x))
+        yd, xd = (a.d if isinstance(a, Dual) else None for a in (y, x))
+        r2 = xv * xv + yv * yv
+        k = len(yd or xd)
+        d = [((xv * (yd[i] if yd else 0.0)) - yv * (xd[i] if xd else 0.0)) / r2 for i in range(k)]
+        return Dual(self.base.atan2(yv, xv), d)
+
+    def acos(self, c):
+        if not isinstance(c, Dual):
+            return self.base.acos(c)
+        s = self.base.sqrt((1.0 - c.v) * (1.0 + c.v))
+        return Dual(self.base.acos(c.v), [-a / s for a in c.d])
+
+    # conditions and selections act on the values; a selection carries the chosen derivatives
+    def _v(self, x):
+        return x.v if isinstance(x, Dual) else x
+
+    def lt(self, a, b):
+        return self.base.lt(self._v(a), self._v(b))
+
+    def le(self, a, b):
+        return self.base.le(self._v(a), self._v(b))
+
+    def gt(self, a, b):
+        return self.base.gt(self._v(a), self._v(b))
+
+    def ge(self, a, b):
+        return self.base.ge(self._v(a), self._v(b))
+
+    def eq(self, a, b):
+        return self.base.eq(self._v(a), self._v(b))
+
+    def and_(self, a, b):
+        return self.base.and_(a, b)
+
+    def or_(self, a, b):
+        return self.base.or_(a, b)
+
+    def not_(self, a):
+        return self.base.not_(a)
+
+    def abs(self, x):
+        return abs(x)
+
+    def select(self, cond, a, b):
+        if not isinstance(a, Dual) and not isinstance(b, Dual):
+            return self.base.select(cond, a, b)
+        k = len(a.d if isinstance(a, Dual) else b.d)
+        da = a.d if isinstance(a, Dual) else [0.0] * k
+        db = b.d if isinstance(b, Dual) else [0.0] * k
+        v = self.base.select(cond, self._v(a), self._v(b))
+        return Dual(v, [self.base.select(cond, x, y) for x, y in zip(da, db, strict=True)])

@@ -1,47 +1,22 @@
-"""The 2P4R camellia-fruit picker of seed 002 (Yang, Li, Gao 2016), reconstructed.
+"""The picker of seed 002 for the audit: its dimensions with their statuses, the mechanism
+at any dimensions, and the sec. 4 experiment replayed.
 
-What is printed (``analysis.papers.picker``): the topology of section 2 (waist revolute; a
-horizontal and a vertical slider on the rotating seat; fore-arm, main-arm link 5, back-arm,
-back small-arm, triangle connector, lower and upper small-arms; a parallelogram "fore-arm
-parallel to back-arm, link 5 parallel to lower small-arm"; a 3R wrist), the two chains of
-section 3.2 (main: vertical slider, back-arm l_AD, lower small-arm l_DF; secondary:
-horizontal slider, back small-arm l_C'E'', triangle b_EE'E'', upper small-arm l_E'F'; the
-wrist base b_FF' as moving platform), the joint numbering (active beta = [theta2, theta9]
-with theta2 = z on xi2 and theta9 = x on xi9; passive alpha = [theta3, theta4, theta5,
-theta10..theta13]; theta3, theta5 mapped from x, z by eqs. 15-16) and that the FK is a POE
-of the main chain with those mappings substituted (eqs. 20-22, called "(18)" in sec. 3.4).
+The mechanism's formulas are :mod:`analysis.kinematics.arms.picker` (the closed form: the
+passive joints, the twists of both chains, the POE, the inverse kinematics), and the picker
+as an arm like the others is ``load_arm("picker")`` (:class:`~analysis.kinematics.arm.Arm`:
+``fk``, ``ik``, batch, the compiled kernel, PLC programs, the explorer). This module
+writes no formula of its own; it gives the audit (:mod:`analysis.audit.picker_checks`,
+notebook 12) what an :class:`Arm` does not:
 
-What is inferred here (Figure 3, Table 1 and eqs. 10-22 are lost; every dimension is in
-``data/arms/picker.toml`` with ``status = "assumed"`` and a reason)::
-
-    arm plane XZ at theta1 = 0 (x forward, z up); all passive axes along +Y
-    A  = (x_A, z_A + z)            back-arm hinge on the vertical slider (theta2 = z)
-    G  = A + g u(theta3)           link 5's hinge on the back-arm, u(p) = (sin p, cos p)
-    D  = A + l_AD u(theta3)        back-arm top = lower small-arm hinge
-    B  = (x_A + b + x, z_A + g)    fore-arm hinge on the horizontal slider (theta9 = x)
-    |B - G| = b                    link 5 (the loop that fixes theta3)
-    C  = B + (D - G) = D + (B - G) fore-arm top on the lower small-arm (parallelogram BGDC)
-    F  = D + (l_DF / b)(C - D)     lower small-arm end = wrist-base hinge
-    wrist base kept parallel to itself by the second parallelogram pair: C'E''EB and
-    EE'F'F (E coaxial with C, C' = B - (d_s, 0) on the slider, E' = E + (0, e_t))
-    wrist: xi6 (Z), xi7 (Y), xi8 (X) through W = F + (f, 0); tool marker P = W + (e_tool, 0)
-
-At the reference pose (all theta = 0, Figure 3) the back-arm and fore-arm are vertical,
-link 5 and the lower small-arm horizontal. Closed form of the passive joints (the role of
-eqs. 15-16), with d = B - A = (b + x, g - z)::
-
-    theta3 = atan2(d_x, d_z) - acos((|d|^2 + g^2 - b^2) / (2 g |d|))   (reference branch)
-    psi    = atan2(-(B - G)_z, (B - G)_x)                               (lower small-arm)
-    theta4 = psi - theta3,  theta5 = -psi                               (wrist base level)
-    theta10 = theta3, theta11 = -theta3, theta12 = psi, theta13 = -psi  (secondary chain)
-
-With l_AD / g = l_DF / b = k (the assumed pantograph) F = (1 - k) A + k B + const: the end
-point moves k x horizontally and -(k - 1) z vertically ("small stroke, large travel").
-
-Checks: :meth:`Picker.loop_residuals` closes the secondary chain (POE of theta1, theta9,
-theta10..theta13) onto the wrist base of the main chain, and link 5 and the fore-arm onto
-their hinges; :meth:`Picker.open_chain` feeds Pinocchio
-(:func:`analysis.kinematics.pinocchio_model.build_poe_model`).
+- :class:`PickerParams`: every dimension of ``data/arms/picker.toml`` as one table (the
+  lengths, the slider strokes of its ``[[joints]]``, the ``[axes]``), each with its status
+  and note, and copies with a value changed (:meth:`PickerParams.with_`) *also* outside the
+  pantograph proportion that the closed-form IK needs (the audit mutates single lengths);
+- :class:`Picker`: the mechanism at such dimensions: the passive joints (raising
+  :class:`UnreachableSliders` where link 5 cannot close), both chains' twists as arrays
+  (for Pinocchio), the POE pose, the loop-closure residuals, the drawn points;
+- the joint laws of sec. 4 (:data:`READINGS`, :func:`law_active`,
+  :func:`replay_experiment`).
 
 Units: mm and rad; active joint arrays are (..., 6) in the order :data:`ACTIVE`.
 """
@@ -49,8 +24,8 @@ Units: mm and rad; active joint arrays are (..., 6) in the order :data:`ACTIVE`.
 from __future__ import annotations
 
 import math
-import tomllib
 from dataclasses import dataclass, field
+from functools import cached_property
 from pathlib import Path
 from types import MappingProxyType
 
@@ -58,41 +33,32 @@ import numpy as np
 import numpy.typing as npt
 
 from analysis.kinematics import poe
+from analysis.kinematics.arms import picker as cf
+from analysis.kinematics.arms.picker import ACTIVE, PASSIVE
+from analysis.kinematics.description import STATUSES, load_description
+from analysis.kinematics.ops import numpy_ops
 from analysis.kinematics.params import data_dir
 
 __all__ = [
     "ACTIVE",
     "ACTIVE_UNITS",
     "PASSIVE",
+    "PLAUSIBLE_MAX_TURN",
     "READINGS",
     "Parameter",
     "Picker",
     "PickerParams",
     "UnreachableSliders",
+    "data_dir",
+    "law_active",
     "load_picker",
     "load_picker_params",
     "replay_experiment",
 ]
 
-ACTIVE = ("theta1", "theta2", "theta6", "theta7", "theta8", "theta9")
-"""Active joints in array order: waist, vertical slider z, wrist 6-8, horizontal slider x
-(paper numbering; beta = [theta2, theta9] are the sliders)."""
 ACTIVE_UNITS = ("rad", "mm", "rad", "rad", "rad", "mm")
-PASSIVE = ("theta3", "theta4", "theta5", "theta10", "theta11", "theta12", "theta13")
-"""Passive joints (the paper's alpha), in that order."""
-
-_LENGTHS = ("x_A", "z_A", "g", "l_AD", "b", "l_DF", "d_s", "e_t", "f", "e_tool")
-_STROKES = ("x_min", "x_max", "z_min", "z_max")
-_AXES = ("vertical_guide", "horizontal_guide", "arm_axes", "wrist_axis6", "wrist_axis7")
-_EXPECTED_AXES = {
-    "vertical_guide": (0.0, 0.0, 1.0),
-    "horizontal_guide": (1.0, 0.0, 0.0),
-    "arm_axes": (0.0, 1.0, 0.0),
-    "wrist_axis6": (0.0, 0.0, 1.0),
-    "wrist_axis7": (0.0, 1.0, 0.0),
-    "wrist_axis8": (1.0, 0.0, 0.0),
-}
-STATUSES = ("printed", "assumed")
+_STROKES = {"x_min": ("theta9", 0), "x_max": ("theta9", 1),
+            "z_min": ("theta2", 0), "z_max": ("theta2", 1)}  # fmt: skip
 
 
 class UnreachableSliders(ValueError):
@@ -101,7 +67,7 @@ class UnreachableSliders(ValueError):
 
 @dataclass(frozen=True)
 class Parameter:
-    """One dimension of ``data/arms/picker.toml``: value, unit, ``printed``/``assumed``, note."""
+    """One dimension: value, unit, status (``printed``/``assumed``/...), note."""
 
     name: str
     value: float | tuple[float, ...]
@@ -120,7 +86,9 @@ class Parameter:
 
 @dataclass(frozen=True)
 class PickerParams:
-    """All dimensions of the reconstruction with their statuses (``data/arms/picker.toml``)."""
+    """Every dimension of the reconstruction with its status (``data/arms/picker.toml``):
+    the lengths and the jaw opening, the slider strokes (``x_min`` .. ``z_max``, from the
+    joints' ``limits_mm``), the axis directions."""
 
     parameters: MappingProxyType
     source: str = ""
@@ -128,8 +96,11 @@ class PickerParams:
     def __getitem__(self, name: str) -> float:
         return self.parameters[name].value
 
+    def __contains__(self, name: str) -> bool:
+        return name in self.parameters
+
     def statuses(self) -> dict[str, str]:
-        """``{name: "printed" | "assumed"}`` for every parameter."""
+        """``{name: status}`` for every parameter."""
         return {k: p.status for k, p in self.parameters.items()}
 
     def assumed(self) -> tuple[str, ...]:
@@ -148,43 +119,44 @@ class PickerParams:
 
 
 def load_picker_params(path: str | Path | None = None) -> PickerParams:
-    """Read ``data/arms/picker.toml`` (``[parameters] name = {value, unit, status, note}``).
+    """The dimensions of ``data/arms/picker.toml`` (or the description at ``path``).
 
-    Raises ``ValueError`` naming the file and the entry for a missing field, an unknown
-    status, a missing parameter, a non-finite or non-positive length, or an axis other
-    than the modelled one (the model's formulas assume these directions).
+    Raises ``ValueError`` naming the file and the entry for anything the description
+    loader refuses, a missing length or stroke, a non-finite or non-positive length, or an
+    axis other than the modelled one (the formulas assume these directions).
     """
-    path = Path(path) if path is not None else data_dir() / "arms" / "picker.toml"
-    with path.open("rb") as fh:
-        raw = tomllib.load(fh)
-    table = raw.get("parameters")
-    if not isinstance(table, dict):
-        raise ValueError(f"{path}: no [parameters] table")
-    params = {}
-    for name, entry in table.items():
-        missing = {"value", "unit", "status", "note"} - set(entry)
-        if missing:
-            raise ValueError(f"{path}: parameter {name} lacks {sorted(missing)}")
-        value = entry["value"]
-        value = tuple(float(v) for v in value) if isinstance(value, list) else float(value)
-        try:
-            params[name] = Parameter(name, value, entry["unit"], entry["status"], entry["note"])
-        except ValueError as exc:
-            raise ValueError(f"{path}: {exc}") from None
-    need = set(_LENGTHS) | set(_STROKES) | set(_EXPECTED_AXES) | {"jaw_opening"}
-    missing = need - set(params)
+    desc = load_description(str(path) if path is not None else "picker")
+    params: dict[str, Parameter] = {}
+    for name, p in desc.parameters.items():
+        if not p.source.strip():
+            raise ValueError(f"{desc.path}: parameter {name} has no note (its reason or location)")
+        params[name] = Parameter(name, p.value, p.unit, p.status, p.source)
+        if name in cf.LENGTHS and not (
+            math.isfinite(p.value) and (p.value > 0 or name in ("x_A", "z_A"))
+        ):
+            raise ValueError(f"{desc.path}: {name} = {p.value} mm must be finite and > 0")
+    missing = [k for k in (*cf.LENGTHS, "jaw_opening") if k not in params]
+    joints = {j.name: j for j in desc.joints}
+    for name, (joint, end) in _STROKES.items():
+        j = joints.get(joint)
+        if j is None or j.kind != "prismatic":
+            missing.append(f"{name} (the stroke of prismatic joint {joint})")
+            continue
+        status, _, note = j.limits_status.partition(":")
+        status = status.strip() if status.strip() in STATUSES else "assumed"
+        side = ("lower", "upper")[end]
+        params[name] = Parameter(
+            name, (j.lower, j.upper)[end], "mm", status, f"{note.strip()} ({side} end)"
+        )
     if missing:
-        raise ValueError(f"{path}: missing parameter(s) {sorted(missing)}")
-    for name in _LENGTHS:
-        v = params[name].value
-        if not (math.isfinite(v) and (v > 0 or name in ("x_A", "z_A"))):
-            raise ValueError(f"{path}: {name} = {v} mm must be finite and > 0")
-    for name, expected in _EXPECTED_AXES.items():
-        if params[name].value != expected:
-            raise ValueError(
-                f"{path}: {name} = {params[name].value}; the reconstruction models {expected}"
-            )
-    return PickerParams(MappingProxyType(params), str(path))
+        raise ValueError(f"{desc.path}: missing parameter(s) {missing}")
+    for name, expected in cf.AXES.items():
+        a = desc.axes.get(name)
+        if a is None or a.value != expected:
+            got = None if a is None else list(a.value)
+            raise ValueError(f"{desc.path}: {name} = {got}; the reconstruction models {expected}")
+        params[name] = Parameter(name, a.value, "-", a.status, a.note)
+    return PickerParams(MappingProxyType(params), str(desc.path))
 
 
 def _as_active(active: npt.ArrayLike) -> npt.NDArray[np.float64]:
@@ -196,38 +168,36 @@ def _as_active(active: npt.ArrayLike) -> npt.NDArray[np.float64]:
     return a
 
 
+def _array(vectors) -> npt.NDArray[np.float64]:
+    return np.array([[float(v) for v in (*w, *v_)] for w, v_ in vectors]) + 0.0
+
+
 @dataclass(frozen=True)
 class Picker:
-    """The reconstructed picker: screws of both chains at the reference pose, closed-form
-    passive joints, POE forward kinematics, loop closure. Every length comes from
-    :class:`PickerParams` (``assumed`` unless printed: see :meth:`statuses`)."""
+    """The reconstructed picker at dimensions ``params`` (any, the pantograph proportion
+    included or not): passive joints, screws of both chains, POE pose, loop closure. Every
+    formula is :mod:`analysis.kinematics.arms.picker`'s."""
 
     params: PickerParams
     points: dict = field(init=False, repr=False)
 
     def __post_init__(self) -> None:
-        p = self.params
-        xA, zA, g, lAD, b, lDF = (p[k] for k in ("x_A", "z_A", "g", "l_AD", "b", "l_DF"))
-
-        def at(x, z):  # a point of the arm plane (y = 0) [mm]
-            return np.array([x, 0.0, z])
-
-        pts = {
-            "A": at(xA, zA),
-            "G": at(xA, zA + g),
-            "D": at(xA, zA + lAD),
-            "B": at(xA + b, zA + g),
-            "C": at(xA + b, zA + lAD),
-            "F": at(xA + lDF, zA + lAD),
-        }
-        pts["C'"] = pts["B"] - at(p["d_s"], 0.0)
-        pts["E"] = pts["C"].copy()
-        pts["E''"] = pts["C"] - at(p["d_s"], 0.0)
-        pts["E'"] = pts["C"] + at(0.0, p["e_t"])
-        pts["F'"] = pts["F"] + at(0.0, p["e_t"])
-        pts["W"] = pts["F"] + at(p["f"], 0.0)
-        pts["P"] = pts["W"] + at(p["e_tool"], 0.0)
+        pts = {k: np.array(v, dtype=float) for k, v in cf.points(self._P).items()}
         object.__setattr__(self, "points", MappingProxyType(pts))
+
+    @cached_property
+    def _P(self) -> dict:
+        return {k: self.params[k] for k in cf.LENGTHS}
+
+    @cached_property
+    def arm(self):
+        """The picker as an :class:`~analysis.kinematics.arm.Arm` with these lengths (the
+        closed-form IK needs the pantograph proportion: ValueError otherwise)."""
+        from analysis.kinematics.arm import Arm, Params
+
+        base = Params.from_description(load_description("picker"))
+        values = {k: self.params[k] for k in base.data}
+        return Arm(base.with_(**values))
 
     # ----------------------------------------------------------------------- screws
     def open_chain(self) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
@@ -237,85 +207,41 @@ class Picker:
         Joint order theta1 (waist, Z), theta2 (vertical slider), theta3 (A), theta4 (D),
         theta5 (F), theta6 (Z at W), theta7 (Y at W), theta8 (X at W).
         """
-        pt, y = self.points, self.params["arm_axes"]
-        S = np.array(
-            [
-                poe.revolute_screw([0, 0, 1], [0, 0, 0]),
-                poe.prismatic_screw(self.params["vertical_guide"]),
-                poe.revolute_screw(y, pt["A"]),
-                poe.revolute_screw(y, pt["D"]),
-                poe.revolute_screw(y, pt["F"]),
-                poe.revolute_screw(self.params["wrist_axis6"], pt["W"]),
-                poe.revolute_screw(self.params["wrist_axis7"], pt["W"]),
-                poe.revolute_screw(self.params["wrist_axis8"], pt["W"]),
-            ]
-        )
+        ch = cf.chains(self._P)
         M = np.eye(4)
-        M[:3, 3] = pt["P"]
-        return S, M
+        M[:3, 3] = ch["main_home"]
+        return _array(ch["main"]), M
 
     def secondary_chain(self) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
         """Secondary chain (副運動鏈) to the wrist base: screws xi1, xi9..xi13 (6, 6) and the
         home pose of a frame at F' on the wrist base (4, 4)."""
-        pt, y = self.points, self.params["arm_axes"]
-        S = np.array(
-            [
-                poe.revolute_screw([0, 0, 1], [0, 0, 0]),
-                poe.prismatic_screw(self.params["horizontal_guide"]),
-                poe.revolute_screw(y, pt["C'"]),
-                poe.revolute_screw(y, pt["E''"]),
-                poe.revolute_screw(y, pt["E'"]),
-                poe.revolute_screw(y, pt["F'"]),
-            ]
-        )
+        ch = cf.chains(self._P)
         M = np.eye(4)
-        M[:3, 3] = pt["F'"]
-        return S, M
+        M[:3, 3] = ch["secondary_home"]
+        return _array(ch["secondary"]), M
 
     # ----------------------------------------------------------------------- passive joints
     def passive(self, z: npt.ArrayLike, x: npt.ArrayLike) -> npt.NDArray[np.float64]:
         """Passive joints (..., 7) = :data:`PASSIVE` [rad] from the sliders (eqs. 15-16's role).
 
-        Parameters
-        ----------
-        z, x : array_like, broadcastable
-            Vertical slider theta2 and horizontal slider theta9 [mm].
-
-        Raises
-        ------
-        UnreachableSliders
-            If link 5 cannot close: |B - A| outside [|g - b|, g + b] [mm] (names the first
-            offending pair and the limit).
+        Raises :class:`UnreachableSliders` if link 5 cannot close (names the first
+        offending pair and the limit).
         """
-        p = self.params
         z, x = np.broadcast_arrays(np.asarray(z, float), np.asarray(x, float))
-        g, b = p["g"], p["b"]
-        dx, dz = b + x, g - z
-        R = np.hypot(dx, dz)
-        lo, hi = abs(g - b), g + b
-        bad = (R > hi) | (R < lo) | (R == 0)
-        if np.any(bad):
+        with np.errstate(invalid="ignore", divide="ignore"):
+            pas = cf.passive(numpy_ops, z, x, self._P)
+        bad = ~np.broadcast_to(pas["valid"], z.shape)
+        if bad.any():
             k = tuple(np.argwhere(np.atleast_1d(bad))[0])
-            zz, xx, rr = (float(np.atleast_1d(v)[k]) for v in (z, x, R))
-            raise UnreachableSliders(
-                f"sliders z = {zz:g} mm, x = {xx:g} mm: |B - A| = {rr:.3f} mm is outside "
-                f"[{lo:g}, {hi:g}] mm (link 5, b = {b:g} mm, cannot reach the back-arm at "
-                f"g = {g:g} mm)"
-            )
-        c = np.clip((R**2 + g**2 - b**2) / (2 * g * R), -1.0, 1.0)
-        theta3 = np.arctan2(dx, dz) - np.arccos(c)
-        # B - G in the arm plane (x, z)
-        bg_x = dx - g * np.sin(theta3)
-        bg_z = dz - g * np.cos(theta3)
-        psi = np.arctan2(-bg_z, bg_x)
-        return np.stack([theta3, psi - theta3, -psi, theta3, -theta3, psi, -psi], axis=-1)
+            zz, xx = (float(np.atleast_1d(v)[k]) for v in (z, x))
+            raise UnreachableSliders(cf.fk_refusal([0.0, zz, 0, 0, 0, xx], self._P))
+        return np.stack(np.broadcast_arrays(*(pas[k] for k in PASSIVE)), axis=-1)
 
     def joints(self, active: npt.ArrayLike) -> npt.NDArray[np.float64]:
         """All thirteen joints theta1..theta13 (..., 13) [rad | mm] for active (..., 6)."""
         a = _as_active(active)
         t1, z, t6, t7, t8, x = np.moveaxis(a, -1, 0)
-        pas = self.passive(z, x)
-        t3, t4, t5, t10, t11, t12, t13 = np.moveaxis(pas, -1, 0)
+        t3, t4, t5, t10, t11, t12, t13 = np.moveaxis(self.passive(z, x), -1, 0)
         cols = (t1, z, t3, t4, t5, t6, t7, t8, x, t10, t11, t12, t13)
         return np.stack(np.broadcast_arrays(*cols), axis=-1)
 
@@ -324,11 +250,23 @@ class Picker:
         return self.joints(active)[..., :8]
 
     # ----------------------------------------------------------------------- kinematics
+    def _fk(self, active) -> tuple[dict, tuple]:
+        a = _as_active(active)
+        self.passive(a[..., 1], a[..., 5])  # raises where link 5 cannot close
+        with np.errstate(invalid="ignore"):
+            return cf.fk(numpy_ops, list(np.moveaxis(a, -1, 0)), self._P), a.shape[:-1]
+
     def fk(self, active: npt.ArrayLike) -> npt.NDArray[np.float64]:
         """Tool pose (..., 4, 4) [mm] by POE of the main chain with the passive joints solved
         (the paper's p_e(theta), eq. 22 / "(18)"), for active joints (..., 6)."""
-        S, M = self.open_chain()
-        return poe.fk(S, M, self.main_q(active))
+        out, shape = self._fk(active)
+        T = np.zeros((*shape, 4, 4))
+        for i in range(3):
+            for j in range(3):
+                T[..., i, j] = out["rotation"][i][j]
+            T[..., i, 3] = out["frames"][-1][i]
+        T[..., 3, 3] = 1.0
+        return T
 
     def position(self, active: npt.ArrayLike) -> npt.NDArray[np.float64]:
         """Tool marker position (..., 3) [mm] in frame S."""
@@ -349,8 +287,7 @@ class Picker:
         x, t10, t11, t12, t13 = (q[..., i] for i in range(8, 13))
         S_main, _ = self.open_chain()
         S_sec, M_f = self.secondary_chain()
-        main5 = np.stack([t1, z, t3, t4, t5], axis=-1)
-        T_main = poe.fk(S_main[:5], M_f, main5)
+        T_main = poe.fk(S_main[:5], M_f, np.stack([t1, z, t3, t4, t5], axis=-1))
         T_sec = poe.fk(S_sec, M_f, np.stack([t1, x, t10, t11, t12, t13], axis=-1))
         pt = self.points
 
@@ -361,9 +298,8 @@ class Picker:
         G = carry(S_main[:3], np.stack([t1, z, t3], -1), pt["G"])
         B = carry(S_sec[:2], np.stack([t1, x], -1), pt["B"])
         C_main = carry(S_main[:4], np.stack([t1, z, t3, t4], -1), pt["C"])
-        fore = np.array([poe.revolute_screw(self.params["arm_axes"], pt["B"])])
-        S_fore = np.concatenate([S_sec[:2], fore])
-        C_fore = carry(S_fore, np.stack([t1, x, t3], -1), pt["C"])
+        fore = np.array([poe.revolute_screw(cf.AXES["arm_axes"], pt["B"])])
+        C_fore = carry(np.concatenate([S_sec[:2], fore]), np.stack([t1, x, t3], -1), pt["C"])
         return {
             "secondary_position": np.linalg.norm(T_main[..., :3, 3] - T_sec[..., :3, 3], axis=-1),
             "secondary_rotation": np.abs(T_main[..., :3, :3] - T_sec[..., :3, :3]).max((-2, -1)),
@@ -374,23 +310,13 @@ class Picker:
     def points_at(self, active: npt.ArrayLike) -> dict[str, npt.NDArray[np.float64]]:
         """The named points of the arm (A, G, D, B, C, F, W, P) in frame S [mm], each
         (..., 3), for active joints (..., 6): each carried by the POE of the joints before
-        its link (main chain; B by the secondary chain's waist and horizontal slider). For
-        drawing the linkage."""
-        q = self.joints(active)
-        S_main, _ = self.open_chain()
-        S_sec, _ = self.secondary_chain()
-        pt = self.points
-        main_q = q[..., :8]
-        sec_q = q[..., [0, 8]]
-
-        def carry(S, qq, point):
-            T = poe.fk(S, np.eye(4), qq)
-            return np.einsum("...ij,j->...i", T[..., :3, :3], point) + T[..., :3, 3]
-
-        link = {"A": 2, "G": 3, "D": 3, "C": 4, "F": 4, "W": 5, "P": 8}
-        out = {k: carry(S_main[:n], main_q[..., :n], pt[k]) for k, n in link.items()}
-        out["B"] = carry(S_sec[:2], sec_q, pt["B"])
-        return out
+        its link (B by the secondary chain's waist and horizontal slider). For drawing."""
+        out, shape = self._fk(active)
+        return {
+            k: np.stack([np.broadcast_to(c, shape) for c in v], axis=-1).astype(float)
+            for k, v in out["points"].items()
+            if k != "O"
+        }
 
     def statuses(self) -> dict[str, str]:
         """Status of every dimension used (``printed``/``assumed``)."""
@@ -401,23 +327,11 @@ class Picker:
         """k = l_AD / g if it equals l_DF / b (to 1e-12), else None."""
         p = self.params
         k1, k2 = p["l_AD"] / p["g"], p["l_DF"] / p["b"]
-        return k1 if math.isclose(k1, k2, rel_tol=1e-12) else None
+        return k1 if math.isclose(k1, k2, rel_tol=cf.PANTOGRAPH_RTOL) else None
 
-    def random_active(self, rng: np.random.Generator, n: int, margin: float = 0.02):
-        """n seeded active configurations (n, 6): joints in [-pi, pi], sliders within the
-        assumed strokes and at least ``margin`` of (g + b) inside link 5's reach (acos
-        well-conditioned)."""
-        p = self.params
-        out = np.empty((0, 6))
-        while len(out) < n:
-            a = rng.uniform(-np.pi, np.pi, (2 * n, 6))
-            a[:, 1] = rng.uniform(p["z_min"], p["z_max"], 2 * n)
-            a[:, 5] = rng.uniform(p["x_min"], p["x_max"], 2 * n)
-            R = np.hypot(p["b"] + a[:, 5], p["g"] - a[:, 1])
-            span = p["g"] + p["b"]
-            ok = (R < (1 - margin) * span) & (R > abs(p["g"] - p["b"]) + margin * span)
-            out = np.concatenate([out, a[ok]])
-        return out[:n]
+    def random_active(self, rng: np.random.Generator, n: int) -> npt.NDArray[np.float64]:
+        """n seeded valid configurations (n, 6): :meth:`Arm.sample_q` of :attr:`arm`."""
+        return self.arm.sample_q(rng, n)
 
 
 def load_picker(path: str | Path | None = None) -> Picker:
@@ -505,14 +419,11 @@ def replay_experiment(
     out = {}
     for name, spec in READINGS.items():
         a = law_active(t, name)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            reach = np.asarray(cf.passive(numpy_ops, a[:, 1], a[:, 5], picker._P)["valid"])
         pos = np.full((len(t), 3), np.nan)
-        reach = np.zeros(len(t), bool)
-        for k in range(len(t)):  # a handful of samples; each may be unreachable
-            try:
-                pos[k] = picker.position(a[k])
-                reach[k] = True
-            except UnreachableSliders:
-                pass
+        if reach.any():
+            pos[reach] = picker.position(a[reach])
         angles = a[:, [i for i, u in enumerate(ACTIVE_UNITS) if u == "rad"]]
         strokes = (
             (a[:, 1] >= p["z_min"]) & (a[:, 1] <= p["z_max"])

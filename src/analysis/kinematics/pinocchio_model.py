@@ -7,13 +7,17 @@ cross-check by an established implementation, not a re-run of the same formula. 
 model is built from the very :class:`~analysis.kinematics.dh.DHTable` rows the rest of the project
 uses: there is no second transcription of the geometry.
 
-Mapping (each revolute row becomes one ``JointModelRZ``; ``M`` is a pending fixed
-placement carried to the next joint or to the tool frame)::
+Mapping (each revolute row becomes one ``JointModelRZ``, each prismatic row one
+``JointModelPZ``; ``M`` is a pending fixed placement carried to the next joint or to the
+tool frame)::
 
     standard  A_i = Rz(theta_i) . [Tz(d) Tx(a) Rx(alpha)]
               joint placement = M . Rz(offset);  then M = Tz(d) Tx(a) Rx(alpha)
+              prismatic: A_i = [Rz(offset) Tz(d)] . Tz(q_i) . [Tx(a) Rx(alpha)]
+              joint placement = M . Rz(offset) Tz(d);  then M = Tx(a) Rx(alpha)
     modified  A_i = [Rx(alpha) Tx(a) Tz(d)] . Rz(theta_i)
               joint placement = M . Rx(alpha) Tx(a) Tz(d) Rz(offset);  then M = I
+              (prismatic: the same placement, the joint Tz(q_i))
 
 A ``fixed`` row (a tool frame) only extends ``M``. The last ``M`` becomes the operational
 frame ``"tool"`` on the last joint, so ``oMf[tool]`` equals ``DHTable.fk``.
@@ -52,14 +56,31 @@ def _modified_fixed(row) -> pin.SE3:  # Rx(alpha) Tx(a) Tz(d)
     return pin.SE3(R, np.array([row.a, 0.0, 0.0]) + R @ np.array([0.0, 0.0, row.d]))
 
 
+def _tz(d: float) -> pin.SE3:
+    return pin.SE3(np.eye(3), np.array([0.0, 0.0, d]))
+
+
 def build_model(table: DHTable) -> pin.Model:
     """Pinocchio model of a D-H chain (paper Table 1; seed 001 eq. 8), one RZ joint per
-    revolute row, with an operational frame ``"tool"`` at the end of the chain."""
+    revolute row and one PZ joint per prismatic row, with an operational frame ``"tool"``
+    at the end of the chain."""
     model = pin.Model()
     model.name = table.name or "dh-chain"
     parent = 0
     pending = pin.SE3.Identity()
     for i, row in enumerate(table.rows):
+        if row.kind == "prismatic":
+            R = pin.utils.rotate("x", row.alpha)
+            if table.convention == "standard":
+                place = pending * _rz(row.theta_offset) * _tz(row.d)
+                after = pin.SE3(R, np.array([row.a, 0.0, 0.0]))
+            else:
+                place = pending * _modified_fixed(row) * _rz(row.theta_offset)
+                after = pin.SE3.Identity()
+            name = row.name or f"joint{i + 1}"
+            parent = model.addJoint(parent, pin.JointModelPZ(), place, name)
+            pending = after
+            continue
         if table.convention == "standard":
             if row.kind == "revolute":
                 parent = model.addJoint(
@@ -81,7 +102,7 @@ def build_model(table: DHTable) -> pin.Model:
             else:
                 pending = pending * fixed
     if parent == 0:
-        raise ValueError(f"D-H table {table.name!r} has no revolute row: nothing to model")
+        raise ValueError(f"D-H table {table.name!r} has no joint row: nothing to model")
     model.addFrame(pin.Frame(TOOL_FRAME, parent, pending, pin.FrameType.OP_FRAME))
     return model
 

@@ -352,15 +352,16 @@ def fk_sym(screws: Sequence[Sequence], M, q: Sequence | None = None) -> sp.Matri
 def screws_from_dh(table: DHTable) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     """Screw axes and home pose of a D-H chain, read off its frames at q = 0.
 
-    Standard D-H (``A_i = Rz(theta_i) Tz Tx Rx``): joint i turns about z of frame i-1 through
-    its origin. Modified D-H (``A_i = Rx Tx Rz(theta_i) Tz``): joint i turns about z of frame
-    i. Only the home configuration uses the D-H transforms, so :func:`fk` with these screws
-    and :meth:`DHTable.fk` are two independent routes to the pose at any other q.
+    Standard D-H (``A_i = Rz(theta_i) Tz Tx Rx``): joint i turns about (a prismatic one
+    slides along) z of frame i-1 through its origin. Modified D-H (``A_i = Rx Tx
+    Rz(theta_i) Tz``): z of frame i. Only the home configuration uses the D-H
+    transforms, so :func:`fk` with these screws and :meth:`DHTable.fk` are two
+    independent routes to the pose at any other q.
 
     Returns
     -------
     S : ndarray, shape (n_joints, 6)
-        Revolute screw axes (omega, v) [-, mm].
+        Revolute and prismatic screw axes (omega, v) [-, mm].
     M : ndarray, shape (4, 4)
         ``table.fk(0)``: the base-to-last-frame transform at q = 0 (tool rows included).
 
@@ -377,8 +378,10 @@ def screws_from_dh(table: DHTable) -> tuple[npt.NDArray[np.float64], npt.NDArray
             frame = T
         if row.kind == "revolute":
             screws.append(revolute_screw(frame[:3, 2], frame[:3, 3]))
+        elif row.kind == "prismatic":
+            screws.append(prismatic_screw(frame[:3, 2]))
     if not screws:
-        raise ValueError(f"D-H table {table.name!r} has no revolute row")
+        raise ValueError(f"D-H table {table.name!r} has no joint row")
     S = np.array(screws)
     S[np.abs(S) < 1e-12] = 0.0  # cos(90 deg) = 6e-17 etc.: round-off, not geometry
     return S + 0.0, T

@@ -1,12 +1,13 @@
 """Joint angle <-> stepper pulse conversion (paper eqs. 20-22), written once.
 
-``c = theta_deg / 360 * pulses_per_rev`` (eqs. 20-22 print ``c = theta / 360 x 4000``),
-rounded to a whole pulse as the S7-200 ``ROUND`` instruction does: to nearest, halves away
-from zero (S7-200 System Manual p.115 confirms "fraction >= 0.5 rounds up"; negative halves
-are not confirmed there). The S7-300 ``RND`` rounds halves to even instead: both rules are
-available. :func:`pulse_count` and :func:`pulse_angle` are the formulas, in a math
-namespace; the numpy functions below, the compiled quantization kernel, the float32 model
-and the PLC program all use them.
+``c = theta_deg / 360 * pulses_per_rev`` (eqs. 20-22 print ``c = theta / 360 x 4000``); for
+a prismatic joint driven through a screw of lead ``lead_mm`` per motor revolution, ``c =
+q_mm / lead_mm * pulses_per_rev``; rounded to a whole pulse as the S7-200 ``ROUND``
+instruction does: to nearest, halves away from zero (S7-200 System Manual p.115 confirms
+"fraction >= 0.5 rounds up"; negative halves are not confirmed there). The S7-300 ``RND``
+rounds halves to even instead: both rules are available. :func:`pulse_count` and
+:func:`pulse_angle` are the formulas, in a math namespace; the numpy functions below, the
+compiled quantization kernel, the float32 model and the PLC program all use them.
 """
 
 from __future__ import annotations
@@ -35,21 +36,45 @@ DINT_MAX = 2**31 - 1
 _HALF_EVEN = NumpyOps("half-even")
 
 
-def pulse_value(m, theta, pulses_per_rev):
+def pulse_value(m, theta, pulses_per_rev, lead_mm=None):
     """Unrounded pulse count for joint angle ``theta`` [rad]: ``theta_deg / 360 * ppr``
-    (eqs. 20-22 print ``c = theta / 360 x 4000``)."""
+    (eqs. 20-22 print ``c = theta / 360 x 4000``); for a prismatic joint (``lead_mm`` given)
+    ``q_mm / lead_mm * ppr``."""
+    if lead_mm is not None:
+        return theta / lead_mm * pulses_per_rev
     return m.degrees(theta) / 360.0 * pulses_per_rev
 
 
-def pulse_count(m, theta, pulses_per_rev):
-    """Whole pulses for joint angle ``theta`` [rad], eqs. 20-22, with the namespace's
-    rounding (``m.round``: ROUND halves away from zero, or RND halves to even)."""
-    return m.round(m.let("count", pulse_value(m, theta, pulses_per_rev)))
+def pulse_count(m, theta, pulses_per_rev, lead_mm=None):
+    """Whole pulses for joint value ``theta`` [rad, or mm with ``lead_mm``], eqs. 20-22,
+    with the namespace's rounding (``m.round``: ROUND halves away from zero, or RND halves
+    to even)."""
+    return m.round(m.let("count", pulse_value(m, theta, pulses_per_rev, lead_mm)))
 
 
-def pulse_angle(m, c, pulses_per_rev):
-    """Joint angle [rad] commanded by ``c`` whole pulses (inverse of eqs. 20-22)."""
+def pulse_angle(m, c, pulses_per_rev, lead_mm=None):
+    """Joint value [rad, or mm with ``lead_mm``] commanded by ``c`` whole pulses (inverse of
+    eqs. 20-22)."""
+    if lead_mm is not None:
+        return c * lead_mm / pulses_per_rev
     return m.radians(c * 360.0 / pulses_per_rev)
+
+
+def _per_joint(fn, values, ppr, lead_mm):
+    """``fn(m, values, ppr, lead)`` with revolute joints (lead NaN or None) and prismatic
+    ones (lead in mm) side by side along the last axis."""
+    if lead_mm is None:
+        return fn(numpy_ops, values, ppr)
+    lead = np.asarray(lead_mm, dtype=float)
+    prismatic = np.isfinite(lead)
+    if not prismatic.any():
+        return fn(numpy_ops, values, ppr)
+    if not (lead[prismatic] > 0).all():
+        raise ValueError(f"lead_mm = {lead_mm!r}: a prismatic joint's lead must be > 0 mm")
+    return np.where(
+        prismatic, fn(numpy_ops, values, ppr, np.where(prismatic, lead, 1.0)),
+        fn(numpy_ops, values, ppr),
+    )  # fmt: skip
 
 
 def round_half_away(x: npt.ArrayLike) -> npt.NDArray[np.float64]:
@@ -62,6 +87,7 @@ def angles_to_pulses(
     pulses_per_rev: npt.ArrayLike = 4000,
     *,
     rounding: Rounding = "half-away",
+    lead_mm: npt.ArrayLike | None = None,
 ) -> npt.NDArray[np.int64]:
     """Whole pulse counts for joint angles (eqs. 20-22).
 
@@ -74,6 +100,10 @@ def angles_to_pulses(
         whole numbers in 1 .. 10^7.
     rounding : {"half-away", "half-even"}
         S7-200 ROUND or S7-300 RND tie rule.
+    lead_mm : array_like, optional
+        Per joint: the lead [mm per revolution] of a prismatic joint (its value in ``theta``
+        is then in mm), NaN for a revolute one (:meth:`analysis.kinematics.arm.Arm.pulses`
+        passes the description's).
 
     Raises ``ValueError`` for NaN/inf angles and for counts beyond a DINT (+-2147483647).
 
@@ -94,7 +124,11 @@ def angles_to_pulses(
         m = _HALF_EVEN
     else:
         raise ValueError(f"unknown rounding {rounding!r}; expected 'half-away' or 'half-even'")
-    c = pulse_count(m, theta, ppr)
+    if lead_mm is None:
+        c = pulse_count(m, theta, ppr)
+    else:
+        value = _per_joint(pulse_value, theta, ppr, lead_mm)
+        c = m.round(value)
     big = np.abs(c) > DINT_MAX
     if big.any():
         i = tuple(int(k) for k in np.argwhere(big)[0])
@@ -106,13 +140,14 @@ def angles_to_pulses(
 
 
 def pulses_to_angles(
-    c: npt.ArrayLike, pulses_per_rev: npt.ArrayLike = 4000
+    c: npt.ArrayLike, pulses_per_rev: npt.ArrayLike = 4000, *, lead_mm=None
 ) -> npt.NDArray[np.float64]:
-    """Joint angles [rad] commanded by whole pulse counts (inverse of eqs. 20-22)."""
+    """Joint angles [rad] commanded by whole pulse counts (inverse of eqs. 20-22); with
+    ``lead_mm`` (as for :func:`angles_to_pulses`) prismatic joints' values [mm]."""
     c = np.asarray(c, dtype=float)
     if not np.isfinite(c).all():
         raise ValueError("pulse counts contain NaN or inf")
-    return pulse_angle(numpy_ops, c, _check_ppr(pulses_per_rev))
+    return _per_joint(pulse_angle, c, _check_ppr(pulses_per_rev), lead_mm)
 
 
 def _check_ppr(pulses_per_rev: npt.ArrayLike) -> npt.NDArray[np.float64]:

@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from types import ModuleType
 from typing import NamedTuple
 
 import numpy as np
@@ -26,6 +25,7 @@ __all__ = [
     "DEFAULT_TOL_MM",
     "JOINT_STOP_SLACK_RAD",
     "MAX_JOINT_DEG",
+    "MAX_JOINT_MM",
     "MAX_TOL_MM",
     "BaseAxisError",
     "IKSolutions",
@@ -36,6 +36,7 @@ __all__ = [
     "check_tol",
     "refusal_options",
     "solve_body",
+    "status_of",
 ]
 
 DEFAULT_TOL_MM = 1e-6
@@ -49,6 +50,10 @@ backends compute the same angle to a few ulps apart (the compiled ``atan2`` is n
 4.4e-16 rad per ulp near pi), so without it a pose exactly on a stop (the GR-1's theta3 =
 -135 deg) could be ok on one backend and "joint-limits" on the other. 1e-12 rad moves a
 point 1 m out by 1e-9 mm. The PLC programs apply the limits as described (no band)."""
+MAX_JOINT_MM = 1e5
+"""Largest accepted |prismatic joint value| [mm] (100 m): beyond it an input is a mistake of
+unit or of digits."""
+
 
 class UnreachableError(ValueError):
     """The target lies outside the reachable set; ``distance_mm`` says how far."""
@@ -161,23 +166,37 @@ def as_points(
     return arr
 
 
-def check_joints(q: npt.ArrayLike, n: int, name: str = "joint array") -> npt.NDArray[np.float64]:
-    """Validate joint angles (..., n) [rad]: real, finite, within +-:data:`MAX_JOINT_DEG`."""
+def check_joints(
+    q: npt.ArrayLike, n: int, name: str = "joint array", units: Sequence[str] | None = None
+) -> npt.NDArray[np.float64]:
+    """Validate joint values (..., n): real, finite, angles [rad] within
+    +-:data:`MAX_JOINT_DEG` and, where ``units`` says "mm" (a prismatic joint), lengths
+    within +-:data:`MAX_JOINT_MM`."""
     q = validate.real_array(q, name, finite=False)
     if q.ndim == 0 or q.shape[-1] != n:
         raise validate.InvalidValue(f"{name} has shape {q.shape}; expected (..., {n})", name)
+    mm = np.array([u == "mm" for u in units]) if units is not None else np.zeros(n, bool)
     limit = math.radians(MAX_JOINT_DEG)
-    if not q.size or (-limit <= q.min() and q.max() <= limit):  # NaN fails both: one pass each
-        return q
-    bad = ~np.isfinite(q) | (np.abs(q) > limit)
-    idx = tuple(int(i) for i in np.argwhere(bad)[0])
-    v = float(q[idx])
-    what = "is not finite" if not math.isfinite(v) else "is beyond"
-    raise validate.InvalidValue(
-        f"{name}: theta{idx[-1] + 1} = {math.degrees(v) if math.isfinite(v) else v:g} deg "
-        f"{what} (accepted: finite, |theta| <= {MAX_JOINT_DEG:g} deg, ten turns)",
-        name,
-    )
+    if not q.size or (not mm.any() and -limit <= q.min() and q.max() <= limit):
+        return q  # NaN fails both comparisons: one pass each
+    bound = np.where(mm, MAX_JOINT_MM, limit)
+    bad = ~np.isfinite(q) | (np.abs(q) > bound)
+    if bad.any():
+        idx = tuple(int(i) for i in np.argwhere(bad)[0])
+        v, j = float(q[idx]), idx[-1]
+        what = "is not finite" if not math.isfinite(v) else "is beyond"
+        if mm[j]:
+            raise validate.InvalidValue(
+                f"{name}: q{j + 1} = {v:g} mm {what} (accepted: finite, |q| <= "
+                f"{MAX_JOINT_MM:g} mm for a prismatic joint)",
+                name,
+            )
+        raise validate.InvalidValue(
+            f"{name}: theta{j + 1} = {math.degrees(v) if math.isfinite(v) else v:g} deg "
+            f"{what} (accepted: finite, |theta| <= {MAX_JOINT_DEG:g} deg, ten turns)",
+            name,
+        )
+    return q
 
 
 def check_tol(tol) -> float:
@@ -221,9 +240,30 @@ def refusal_options(tol: float, margin_mm: float = 0.0, margin_rad: float = 0.0)
     return {"tol": -margin_mm, "axis_tol": max(tol, margin_mm), "margin_rad": margin_rad}
 
 
+def status_of(m: Ops, refusals: Sequence, default=0.0):
+    """The status code of the first refusal whose condition holds, else ``default``.
+
+    ``refusals`` is ``[(Status, condition), ...]`` in priority order (a closed form's, or a
+    branch's); the one function that turns refusals into a status, in any namespace: the
+    shared solver body (Python, the compiled kernel) and the float32 model of the PLC
+    programs (:func:`analysis.plc.model.predict`) call it, and the programs test the
+    conditions in the same order (:mod:`analysis.plc.ir`).
+
+    >>> from analysis.kinematics.ops import numpy_ops
+    >>> import numpy as np
+    >>> x = np.array([0.5, 2.0, -1.0])
+    >>> status_of(numpy_ops, [(Status.OUT_OF_REACH, x > 1), (Status.BASE_AXIS, x < 0)]).tolist()
+    [0.0, 1.0, 3.0]
+    """
+    status = default
+    for code, cond in reversed(tuple(refusals)):
+        status = m.select(cond, float(code), status)
+    return status
+
+
 def solve_body(
     m: Ops,
-    cf: ModuleType,
+    cf,
     p,
     P,
     names: Sequence[str],
@@ -236,33 +276,31 @@ def solve_body(
 
     Written once for every arm and backend: :meth:`Arm.solve` runs it with numpy, the
     compiled kernel is generated from its recording, the PLC program from the closed form
-    it calls. Returns ``status`` (float code), ``outside``, and per branch ``b`` the
-    condition ``ok:b`` and the angles ``q:b:j`` (NaN where not ok).
+    it calls. ``cf`` is a :class:`~analysis.kinematics.arms.ClosedForm`; ``options`` go to
+    its :meth:`~analysis.kinematics.arms.ClosedForm.solve`. Returns ``status`` (float
+    code), ``outside``, and per branch ``b`` the condition ``ok:b`` and the angles ``q:b:j``
+    (NaN where not ok).
 
-    A closed form may also return ``branch_refusals`` {branch: [(Status, condition), ...]}
-    for what only some branches cannot do (the GR-1's front and back wrists lie at
-    different points, so one may be out of reach while the other is not): a branch is ok
-    where none of its own conditions holds. A target that passes the closed form's
-    refusals but has no ok branch gets the first requested branch's reason (its first
-    true condition, else ``JOINT_LIMITS``), which is what a one-branch PLC program reports.
+    A closed form's ``branch_refusals`` hold what only some branches cannot do (the GR-1's
+    front and back wrists lie at different points, so one may be out of reach while the
+    other is not): a branch is ok where none of its own conditions holds. A target that
+    passes the closed form's refusals but has no ok branch gets the first requested
+    branch's reason (its first true condition, else ``JOINT_LIMITS``), which is what a
+    one-branch PLC program reports.
     """
-    sol = cf.ik(m, p, P, tol=tol, **options)
-    status = 0.0
-    for code, cond in reversed(sol["refusals"]):
-        status = m.select(cond, float(code), status)
+    sol = cf.solve(m, p, P, tol=tol, **options)
+    status = status_of(m, sol.refusals)
     good = m.eq(status, 0.0)
-    out = {"outside": sol["outside"]}
-    per_branch = sol.get("branch_refusals", {})
-    has_branch = any(per_branch.get(b) for b in names)
+    out = {"outside": sol.outside}
+    has_branch = any(sol.branch_refusals[b] for b in names)
     any_ok = None
     first_reason = None
     for b in names:
-        q = sol["branches"][b]
+        q = sol.branches[b]
         ok = good
         reason = 0.0
-        if per_branch.get(b):
-            for code, cond in reversed(per_branch[b]):
-                reason = m.select(cond, float(code), reason)
+        if sol.branch_refusals[b]:
+            reason = status_of(m, sol.branch_refusals[b])
             ok = m.and_(ok, m.eq(reason, 0.0))
         within = None
         for qj, lim in zip(q, limits or [None] * len(q), strict=True):

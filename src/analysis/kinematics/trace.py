@@ -49,6 +49,12 @@ class Node:
     def __neg__(self):
         return self.graph.op("neg", self)
 
+    def __abs__(self):  # Python's abs() in a closed form records m.abs
+        return self.graph.op("abs", self)
+
+    def __pow__(self, k):
+        return _power(self, k)
+
     def __bool__(self):
         raise TypeError(
             "a traced value has no truth value: write conditions with m.lt/m.gt/... and "
@@ -176,6 +182,18 @@ class Graph:
             else:
                 val[n.index] = apply(m, n.op, [v(a) for a in n.args])
         return {k: v(x) for k, x in self.outputs.items()}
+
+
+def _power(x, k):
+    """``x ** k`` for a whole exponent 0 <= k <= 8, as repeated multiplication (what ``**``
+    on a traced value means; numpy's ``**`` gives the same to round-off). Other exponents:
+    TypeError (write ``m.sqrt`` or divide)."""
+    if isinstance(k, bool) or not isinstance(k, (int, float)) or k != int(k) or not 0 <= k <= 8:
+        raise TypeError(f"** {k!r}: a traced value takes whole exponents 0..8 (else use m.sqrt)")
+    out = 1.0
+    for _ in range(int(k)):
+        out = x * out
+    return out
 
 
 def apply(m: Ops, op: str, args: list):

@@ -29,8 +29,6 @@ from analysis.plc.motion import MOTION_STARTUP, motion_networks, motion_uses
 
 __all__ = ["generate", "input_units", "status_codes"]
 
-PAPER_STARTUP = (100.0, 100.0, 600.0)
-"""Figure 3's example target [mm] (the default ``STARTUP_TARGET`` of a point arm)."""
 
 
 def input_units(params: Params) -> dict[str, str]:
@@ -61,8 +59,10 @@ def _startup_values(params: Params, startup_target):
     if isinstance(startup_target, str):
         if startup_target != "paper":
             raise ValueError(f"startup_target {startup_target!r}: expected 'paper' or numbers")
-        cf = closed_form(params.description.closed_form)
-        return getattr(cf, "STARTUP_TARGET", PAPER_STARTUP)
+        start = closed_form(params.description.closed_form).startup_target(params)
+        if start is None:
+            raise ValueError(f"arm {params.arm} names no example target (STARTUP_TARGET)")
+        return start
     return tuple(float(v) for v in startup_target)
 
 

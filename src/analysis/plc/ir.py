@@ -483,11 +483,18 @@ def _notes(params, branch: str, trig: str, labels: dict) -> tuple[str, ...]:
         f"{k} = {v:g} mm" + (" (assumed)" if k in assumed else "") for k, v in params.items()
     )
     ppr_assumed = any(j.pulses_status == "assumed" for j in desc.joints)
+    leads = "".join(  # prismatic joints: pulses = mm / lead * ppr
+        f"; {j.name} prismatic, lead {j.lead_mm:g} mm/rev"
+        + (" (assumed)" if j.lead_status == "assumed" else "")
+        for j in desc.joints
+        if j.kind == "prismatic"
+    )
     return (
         f"arm {params.arm}, branch {branch}; {vals}; "
         + "/".join(f"{v:g}" for v in ppr)
         + " pulses/rev"
-        + (" (assumed)" if ppr_assumed else ""),
+        + (" (assumed)" if ppr_assumed else "")
+        + leads,
         {
             "subroutine": "ATAN2/ACOS: generated subroutines",
             "native": "ATAN/ACOS: native instructions",

@@ -20,9 +20,9 @@ import numpy as np
 import numpy.typing as npt
 
 from analysis.kinematics.arms import closed_form
-from analysis.kinematics.ops import Ops
+from analysis.kinematics.ops import Ops, numpy_ops
 from analysis.kinematics.pulses import pulse_count, pulse_value
-from analysis.kinematics.solution import DEFAULT_TOL_MM, refusal_options
+from analysis.kinematics.solution import DEFAULT_TOL_MM, refusal_options, status_of
 from analysis.kinematics.status import Status
 from analysis.plc.approx import PlcFloat32Ops
 
@@ -60,9 +60,9 @@ def program_body(m: Ops, params, p, branch: str, *, theta1_on_axis=None):
     opts = refusal_options(DEFAULT_TOL_MM, PLC_MARGIN_MM, PLC_MARGIN_RAD)
     if theta1_on_axis is not None:
         opts["theta1_on_axis"] = float(theta1_on_axis)
-    sol = cf.ik(m, p, dict(params), **opts)
-    q = sol["branches"][branch]
-    refusals = list(sol["refusals"]) + list(sol.get("branch_refusals", {}).get(branch, ()))
+    sol = cf.solve(m, p, dict(params), **opts)
+    q = sol.branches[branch]
+    refusals = [*sol.refusals, *sol.branch_refusals[branch]]
     joints = params.description.joints
     bounds = [None if j.unlimited else (j.lower, j.upper) for j in joints]
     limited = [(qj, lim) for qj, lim in zip(q, bounds, strict=True) if lim is not None]
@@ -71,9 +71,10 @@ def program_body(m: Ops, params, p, branch: str, *, theta1_on_axis=None):
         for qj, (lo, hi) in limited:
             refusals.append((Status.JOINT_LIMITS, m.or_(m.lt(qj, lo), m.gt(qj, hi))))
     ppr = params.pulses_per_rev
+    lead = [j.lead_mm for j in joints]
     m.section(f"pulses c = ROUND(theta_deg / 360 * {ppr[0]:g}) (eqs. 20-22); reach flag on")
-    c = [pulse_count(m, qj, n) for qj, n in zip(q, ppr, strict=True)]
-    count = [pulse_value(m, qj, n) for qj, n in zip(q, ppr, strict=True)]  # recorded: shared
+    c = [pulse_count(m, qj, n, s) for qj, n, s in zip(q, ppr, lead, strict=True)]
+    count = [pulse_value(m, qj, n, s) for qj, n, s in zip(q, ppr, lead, strict=True)]  # shared
     return {"c": c, "count": count, "theta": q, "refusals": refusals}
 
 
@@ -121,9 +122,7 @@ def predict(
             m, params, tuple(t[:, k] for k in range(t.shape[1])), branch,
             theta1_on_axis=theta1_on_axis,
         )  # fmt: skip
-    status = np.zeros(len(t), dtype=np.int64)
-    for code, cond in reversed(r["refusals"]):
-        status = np.where(np.broadcast_to(cond, status.shape), int(code), status)
+    status = np.broadcast_to(status_of(numpy_ops, r["refusals"]), len(t)).astype(np.int64)
     status = np.where(finite, status, int(Status.INVALID))
     ok = status == 0
     c = np.stack([np.broadcast_to(cj, status.shape) for cj in r["c"]], axis=-1)

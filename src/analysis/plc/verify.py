@@ -25,8 +25,6 @@ import numpy.typing as npt
 import pandas as pd
 
 from analysis.kinematics.arm import Arm
-from analysis.kinematics.ops import numpy_ops
-from analysis.kinematics.pulses import angles_to_pulses, pulse_value
 from analysis.kinematics.status import Status
 from analysis.paths import data_dir
 from analysis.plc.approx import PlcFloat32Ops
@@ -199,9 +197,8 @@ def reference_pulses(
     ok = sol.ok[:, 0] & finite
     status = np.where(finite, sol.status, int(Status.INVALID)).astype(np.int64)
     theta = np.where(ok[:, None], sol.theta[:, 0, :], 0.0)
-    ppr = np.asarray(arm.params.pulses_per_rev, dtype=float)
-    exact = np.where(ok[:, None], pulse_value(numpy_ops, theta, ppr), np.nan)
-    pulses = np.where(ok[:, None], angles_to_pulses(theta, ppr, rounding=rounding), 0)
+    exact = np.where(ok[:, None], arm.pulse_values(theta), np.nan)  # per joint kind
+    pulses = np.where(ok[:, None], arm.pulses(theta, rounding=rounding), 0)
     return pulses, ok, status, exact
 
 

@@ -77,8 +77,10 @@ from analysis.kinematics.status import Status
 __all__ = [
     "BRANCHES",
     "INPUTS",
+    "INPUT_UNITS",
     "ORIENTATION_TOL_RAD",
     "STARTUP_TARGET",
+    "STATUSES",
     "check",
     "geometry",
     "ik",
@@ -89,10 +91,19 @@ BRANCHES = ("front-up", "front-down", "back-up", "back-down")
 INPUTS = ("px", "py", "pz", "alpha", "beta", "gamma")
 """The pose: position [mm] and RPY angles [rad] (eqs. 3.14-3.15), Table 5-3's columns."""
 INPUT_UNITS = ("mm", "mm", "mm", "rad", "rad", "rad")
+"""Units of :data:`INPUTS` (the command line takes the angles in degrees)."""
+STATUSES = (
+    Status.OUT_OF_REACH,
+    Status.INSIDE_REACH,
+    Status.BASE_AXIS,
+    Status.ORIENTATION,
+    Status.DEGENERATE,
+)
+"""Beyond the box or a wrist beyond a2 + a3, a wrist inside |a2 - a3|, on the base axis, an
+approach vector out of the arm plane, a wrist on the shoulder (a2 = a3)."""
 PROJECTION_HINT = "orientation_tol=None gives the nearest reachable orientation"
 """The end of the orientation refusal: how a Python caller gets the nearest orientation (the
 command line replaces it by that orientation, :mod:`analysis.app.cli`)."""
-"""Units of :data:`INPUTS` (the command line takes the angles in degrees)."""
 ORIENTATION_TOL_RAD = 1e-4
 """Largest angle [rad] between the approach vector and the arm plane that is accepted (and
 projected away); beyond it the pose is refused with status ``orientation``."""

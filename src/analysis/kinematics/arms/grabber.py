@@ -53,11 +53,26 @@ from __future__ import annotations
 
 from analysis.kinematics.status import Status
 
-__all__ = ["BRANCHES", "INPUTS", "check", "geometry", "ik", "refusal"]
+__all__ = [
+    "BRANCHES",
+    "INPUTS",
+    "INPUT_UNITS",
+    "STARTUP_TARGET",
+    "STATUSES",
+    "check",
+    "geometry",
+    "ik",
+    "refusal",
+]
 
 BRANCHES = ("front-up", "front-down", "back-up", "back-down")
 INPUTS = ("px", "py", "pz")
 """The target [mm], in the order of the paper's Figure 3 (VD0, VD4, VD8)."""
+INPUT_UNITS = ("mm", "mm", "mm")
+STATUSES = (Status.OUT_OF_REACH, Status.INSIDE_REACH, Status.BASE_AXIS)
+"""Beyond L2 + L3, inside |L2 - L3| (around the shoulder), on the base axis."""
+STARTUP_TARGET = (100.0, 100.0, 600.0)
+"""The example target of the paper's Figure 3 (Table 4 row 1), written on the first scan."""
 
 
 def check(P) -> None:
@@ -78,7 +93,7 @@ def geometry(P) -> dict:
     }
 
 
-def ik(m, p, P, *, tol, axis_tol=None, margin_rad=0.0, theta1_on_axis=None):
+def ik(m, p, P, *, tol, axis_tol=None, theta1_on_axis=None):
     """All four branches for target ``p = (Px, Py, Pz)`` [mm] (corrected eqs. 6-19).
 
     Parameters
@@ -90,9 +105,6 @@ def ik(m, p, P, *, tol, axis_tol=None, margin_rad=0.0, theta1_on_axis=None):
         Distance tolerance [mm] at the reach shell (negative: refuse a band inside it).
     axis_tol : float, optional
         Distance [mm] from the base axis within which theta1 is undefined (default ``tol``).
-    margin_rad : float
-        Unused: this arm has no angular tolerance (the contract's, see
-        :mod:`analysis.kinematics.arms`).
     theta1_on_axis : float, optional
         Waist angle [rad] for targets on the base axis; None refuses them.
 

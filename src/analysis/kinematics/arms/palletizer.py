@@ -41,7 +41,18 @@ from __future__ import annotations
 
 from analysis.kinematics.status import Status
 
-__all__ = ["BRANCHES", "INPUTS", "check", "geometry", "ik", "refusal"]
+__all__ = [
+    "BRANCHES",
+    "INPUTS",
+    "INPUT_UNITS",
+    "STARTUP_TARGET",
+    "STATUSES",
+    "check",
+    "geometry",
+    "ik",
+    "refusal",
+    "sample_q",
+]
 
 BRANCHES = ("front-up", "front-down", "back-up", "back-down")
 """The waist facing the grasp point (front, eqs. 1 and 6) or turned by pi (back: the arm
@@ -49,6 +60,13 @@ reaches over its base); the elbow above the shoulder-wrist line (up, theta3 > 0:
 paper's pose) or below it."""
 INPUTS = ("px", "py", "pz")
 """The grasp point G = (X0, Y0, Z0) [mm] in the base frame."""
+INPUT_UNITS = ("mm", "mm", "mm")
+STATUSES = (Status.OUT_OF_REACH, Status.INSIDE_REACH, Status.BASE_AXIS, Status.DEGENERATE)
+"""The wrist beyond L1 + L2 or inside |L1 - L2|, the grasp point on the base axis, the
+wrist on the shoulder (L1 = L2)."""
+STARTUP_TARGET = (100.0, 100.0, 600.0)
+"""The grabber's Figure 3 target, kept as the first-scan example (out of the assumed
+palletizer's reach: the first scan shows a refusal, status 1)."""
 
 
 def check(P) -> None:
@@ -70,15 +88,14 @@ def geometry(P) -> dict:
     }
 
 
-def ik(m, p, P, *, tol, axis_tol=None, margin_rad=0.0, theta1_on_axis=None):
+def ik(m, p, P, *, tol, axis_tol=None, theta1_on_axis=None):
     """The four solutions for grasp point ``p`` [mm] (corrected eqs. 1-6 and 12).
 
     Returns ``branches`` {name: (theta1..theta4)} [rad], ``refusals`` of the grasp point in
     priority order, ``branch_refusals`` {name: [...]} (the front and back wrists lie at
     different distances from the shoulder), and ``outside`` (signed distance of the nearer
     wrist outside its reach [mm]). ``tol`` is the distance tolerance at the reach shells,
-    ``axis_tol`` (default ``tol``) at the base axis and the shoulder; ``margin_rad`` is
-    unused (no angular tolerance; see :mod:`analysis.kinematics.arms`).
+    ``axis_tol`` (default ``tol``) at the base axis and the shoulder.
 
     Examples
     --------
@@ -164,6 +181,18 @@ def ik(m, p, P, *, tol, axis_tol=None, margin_rad=0.0, theta1_on_axis=None):
         "branch_refusals": branch_refusals,
         "outside": m.select(m.lt(out_f, out_b), out_f, out_b),
     }
+
+
+def sample_q(rng, n: int, P, bounds):
+    """Candidate configurations (n, 4) [rad] for :func:`analysis.kinematics.sampling.sample_q`:
+    theta1..theta3 uniform within ``bounds`` (n_joints, 2), theta4 keeping the gripper
+    level (theta2 + theta3 + theta4 = pi/2, sec. 3), wrapped to (-pi, pi]."""
+    import numpy as np
+
+    b = np.asarray(bounds, dtype=float)
+    q = b[:3, 0] + rng.random((n, 3)) * (b[:3, 1] - b[:3, 0])
+    t4 = np.mod(np.pi / 2 - q[:, 1] - q[:, 2] + np.pi, 2 * np.pi) - np.pi
+    return np.concatenate([q, t4[:, None]], axis=1)
 
 
 def refusal(status: Status, p, P, *, tol: float, distance: float) -> tuple[str, float]:
