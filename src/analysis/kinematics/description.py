@@ -11,7 +11,8 @@ Pinocchio is built from that chain.
 Format (``data/arms/grabber.toml`` is the commented example)::
 
     name = "grabber"; title = "..."; paper = "..."
-    closed_form = "grabber"            # module analysis.kinematics.arms.<closed_form>
+    closed_form = "grabber"            # module analysis.kinematics.arms.<closed_form>; without
+                                       # it, one derived from the rows (analysis.kinematics.derive)
     convention = "standard"            # or "modified" (Craig)
     [parameters]
     L1 = { value = 660.0, unit = "mm", status = "printed", source = "Table 3" }
@@ -101,6 +102,9 @@ class ArmDescription:
     rows: tuple[dict, ...]
     joints: tuple[JointSpec, ...]
     path: Path | None = field(default=None, compare=False)
+    derive: dict = field(default_factory=dict, compare=False)
+    """The ``[derive]`` table: decisions for a closed form derived from the rows
+    (:mod:`analysis.kinematics.derive.families`)."""
 
     @property
     def values(self) -> dict[str, float]:
@@ -285,12 +289,17 @@ def _load(name: str, tables: tuple, stamp: tuple) -> ArmDescription:
         d.get("name", path.stem),
         d.get("title", path.stem),
         d.get("paper", ""),
-        d.get("closed_form", path.stem),
+        d.get("closed_form") or "derived",
         d.get("convention", "standard"),
         params,
         rows,
         tuple(joints),
         path,
+        dict(d.get("derive", {})),
     )
     desc.dh_table()  # every row resolves
+    if desc.closed_form == "derived":  # none named: derived from the rows where it can be
+        from analysis.kinematics.derive import attach
+
+        desc = attach(desc)
     return desc

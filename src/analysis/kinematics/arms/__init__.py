@@ -31,7 +31,13 @@ _REQUIRED = ("BRANCHES", "INPUTS", "check", "geometry", "ik", "refusal")
 
 
 def closed_form(name: str) -> ModuleType:
-    """The closed-form module ``analysis.kinematics.arms.<name>``, checked for its names."""
+    """The closed-form module ``analysis.kinematics.arms.<name>``, checked for its names, or
+    the closed form derived from a description's D-H table (``derived:...``: what a
+    description without ``closed_form`` gets, :mod:`analysis.kinematics.derive`)."""
+    if name.startswith("derived:"):
+        from analysis.kinematics.derive import lookup
+
+        return lookup(name)
     if not name.isidentifier():
         raise ValueError(f"closed form {name!r} is not a module name")
     try:
