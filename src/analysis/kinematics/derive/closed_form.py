@@ -147,19 +147,28 @@ class DerivedClosedForm:
         )
         self.bend_zero = zero(lambda q: q["axb"]) and float(g["ab"]) > 0
         self.global_reach = st.family == "3R" and self.shoulder_on_axis
-        # the forward direction: the description's, else where the tool points from the
-        # waist axis at q = 0 (its component along g1 = e x w1)
+        # the forward direction (its sign along g1 = e x w1): the description's; else where
+        # the tool points from the waist axis at q = 0; else (a tool on the plane of the
+        # waist and the parallel axes, an arm upright at q = 0) the x axis of D-H frame 1,
+        # the common normal of axes 1 and 2 (theta1 = 0 faces it)
+        scale = max(1.0, float(np.sqrt(g["la2"] + g["lb2"])))
         if st.forward is not None:
             f = float(np.dot(st.forward, self._g1))
             where = f"[derive] forward = {list(st.forward)}"
         else:
-            f = float(sp.dot(sp.sub(g["p0"], g["q1"]), self._g1))
+            f = float(sp.dot(sp.sub(g["p0"], g["q1"]), self._g1)) / scale
             where = "the tool at q = 0"
-        if abs(f) < 1e-9 * max(1.0, float(np.sqrt(g["la2"] + g["lb2"]))):
+            if abs(f) < 1e-9:
+                from analysis.kinematics.dh import chain_transforms
+
+                T1 = chain_transforms(numpy_ops, self.description.dh_table())[0]
+                f = float(np.dot([T1[i][0] for i in range(3)], self._g1))
+                where = "the tool at q = 0 and the x axis of D-H frame 1"
+        if abs(f) < 1e-9:
             from analysis.kinematics.derive.families import NotDerivable
 
             raise NotDerivable(
-                f"{where} has no component along the arm's forward axis {_fmt(self._g1)} "
+                f"{where}: no component along the arm's forward axis {_fmt(self._g1)} "
                 "(across the waist and the parallel axes): say which way is front with "
                 "[derive] forward = [x, y, z]"
             )
