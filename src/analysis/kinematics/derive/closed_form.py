@@ -235,7 +235,7 @@ class DerivedClosedForm:
         g = self._points(numpy_ops, P)
         la, lb = float(g["la"]), float(g["lb"])
         centre, half = self._box(numpy_ops, g)
-        return {
+        out = {
             "shoulder": tuple(float(v) for v in g["S"]),
             "reach_outer": la + lb,
             "reach_inner": abs(la - lb),
@@ -243,6 +243,9 @@ class DerivedClosedForm:
             "box_centre": tuple(float(v) for v in centre),
             "box_half": tuple(float(v) for v in half),
         }
+        if "tool" in g:  # 5R: the tool point's distance from the roll axis
+            out["tool_offset"] = float(np.sqrt(float(sp.norm_sq(g["tool"]))))
+        return out
 
     def _box(self, m, g):
         """Centre and half-sizes [mm] per base coordinate of a box the tool never leaves:
