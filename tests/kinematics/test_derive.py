@@ -286,3 +286,21 @@ def test_eaik_same_solution_sets(seed_pairs, user_arms, rng):
         assert a.max_residual_mm < 1e-6
         solved[a.family] += a.all_equal
     assert min(solved.values()) >= 2, solved  # of 8 per family
+
+
+def test_kept_pitch_sampler_hook(user_arms, rng):
+    """A 4R-kept arm's candidate configurations (the contract's sample_q hook) hold its
+    pitch: each solves back on one of its branches."""
+    arm = user_arms[("4R-kept", "standard", 0)]
+    cf = arm.closed_form
+    assert not hasattr(user_arms[("3R", "standard", 0)].closed_form, "sample_q")
+    q = cf.sample_q(rng, 200, arm.params, np.array([[-np.pi, np.pi]] * 4))
+    sol = arm.solve(_targets(arm, q), limits=False)
+    dq = np.abs(np.angle(np.exp(1j * (sol.theta - q[:, None, :])))).max(axis=-1)
+    assert (np.nan_to_num(dq, nan=9.0) < 1e-7).any(axis=1).all()
+    assert set(cf.STATUSES) == {
+        Status.OUT_OF_REACH,
+        Status.INSIDE_REACH,
+        Status.BASE_AXIS,
+        Status.DEGENERATE,
+    }

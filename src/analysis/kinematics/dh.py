@@ -147,14 +147,17 @@ def chain_transforms(m, table: DHTable, q: Sequence | None = None) -> list[list[
     T = None
     out: list[list[list]] = []
     for row in table.rows:
+        d = row.d
         if row.kind == "revolute" and q is not None:
             qi = next(it)
             theta = _add(qi, row.theta_offset) if row.theta_offset else qi
             ct, st = m.cos(theta), m.sin(theta)
         else:
             ct, st = exact_cos_sin(row.theta_offset)
+            if row.kind == "prismatic" and q is not None:  # the joint value adds to d [mm]
+                d = _add(next(it), d)
         ca, sa = exact_cos_sin(row.alpha)
-        A = _link_elements(ct, st, ca, sa, row.a, row.d, table.convention)
+        A = _link_elements(ct, st, ca, sa, row.a, d, table.convention)
         T = A if T is None else _compose(T, A)
         out.append(T)
     return out

@@ -63,9 +63,20 @@ class DerivedClosedForm:
         self.family = st.family
         self.INPUTS = _POSE if st.family == "5R" else ("px", "py", "pz")
         self.INPUT_UNITS = ("mm",) * 3 + (("rad",) * 3 if st.family == "5R" else ())
+        self.STATUSES = (
+            Status.OUT_OF_REACH,
+            Status.INSIDE_REACH,
+            Status.BASE_AXIS,
+            Status.DEGENERATE,
+            *((Status.ORIENTATION,) if st.family == "5R" else ()),
+        )
+        """The refusals ``ik`` can give (joint limits and non-finite inputs are the shared
+        solver's)."""
         if st.family == "5R":
             self.ORIENTATION_TOL_RAD = st.orientation_tol
             self.PROJECTION_HINT = PROJECTION_HINT
+        if st.family == "4R-kept":
+            self.sample_q = self._sample_kept
         w1, u = st.waist, st.u
         self._w1, self._u = tuple(w1), tuple(u)
         self._uw1 = float(np.dot(u, w1))
@@ -180,6 +191,16 @@ class DerivedClosedForm:
         )
 
     # --- the contract ---------------------------------------------------------------------
+    def _sample_kept(self, rng, n: int, P, bounds):
+        """Candidate configurations (n, 4) [rad] of a 4R-kept arm (the contract's
+        ``sample_q`` hook): joints 1-3 uniform within ``bounds`` (n_joints, 2), joint 4 the
+        kept pitch, ``q4 = s4 (psi - s2 q2 - s3 q3)``, wrapped to (-pi, pi]."""
+        b = np.asarray(bounds, dtype=float)
+        q = b[:3, 0] + rng.random((n, 3)) * (b[:3, 1] - b[:3, 0])
+        s, psi = self.structure.sigma, self.structure.keep[0]
+        q4 = s[2] * (psi - s[0] * q[:, 1] - s[1] * q[:, 2])
+        return np.concatenate([q, (np.mod(q4 + np.pi, 2 * np.pi) - np.pi)[:, None]], axis=1)
+
     @property
     def STARTUP_TARGET(self):
         """The example target a generated PLC program writes on its first scan: the tool
