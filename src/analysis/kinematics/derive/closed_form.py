@@ -92,8 +92,7 @@ class DerivedClosedForm:
             n5 = np.cross(r, u)
             self._n5 = tuple(n5 / np.linalg.norm(n5))
             self._R0T = st.rotation.T
-        # the structure, read off a recording of the home geometry (parameters as inputs:
-        # only the zeros of the table fold) and signs from the description's values
+        # structural zeros of the home geometry and signs of the description's values
         self._decide()
 
     # --- the home geometry, in any namespace --------------------------------------------
@@ -136,7 +135,9 @@ class DerivedClosedForm:
         (a shoulder on the waist axis because the table's offsets are 0, not because a
         parameter happens to be): it is evaluated at three seeded random sets of parameter
         values, and an expression in the lengths that is not identically zero vanishes at
-        random points with probability 0 (the Schwartz-Zippel test). Signs (which way is
+        random points with probability 0 (the Schwartz-Zippel test); below 1e-6 mm at
+        parameters of +-1000 mm counts as zero (literal numbers of the rows are not drawn:
+        an offset written as 1e-7 mm is taken as 0). Signs (which way is
         forward, whether the forearm continues the upper arm) come from the description's
         values."""
         from analysis.kinematics.ops import numpy_ops
