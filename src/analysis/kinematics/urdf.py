@@ -395,8 +395,8 @@ def arm_urdf(name: str) -> str:
         d = tomllib.loads(path.read_text(encoding="utf-8"))
     except tomllib.TOMLDecodeError as exc:
         raise ValueError(f"{path}: not valid TOML ({exc})") from None
-    if not d.get("rows") and "vertical_guide" in d.get("parameters", {}):
-        return _picker_urdf(path)
+    if not d.get("rows") and "vertical_guide" in {**d.get("parameters", {}), **d.get("axes", {})}:
+        return _picker_urdf(path)  # the closed chain (its guides: parameters, or [axes])
     desc = load_description(str(path))
     links, joints = dh_joints(desc)
     try:

@@ -82,6 +82,7 @@ DERIVED = "derived"
 """The ``closed_form`` of a description that asks for a derived one (also what a missing
 ``closed_form`` means)."""
 _REGISTRY: dict[str, DerivedClosedForm | NotDerivable] = {}
+_CHECKED: dict = {}
 
 
 def _digest(*parts) -> str:
@@ -140,7 +141,20 @@ def lookup(name: str) -> DerivedClosedForm:
         raise ValueError(
             f"no derived closed form {name!r}: load the description that derives it first"
         )
-    return got
+    return _checked(got)
+
+
+def _checked(cf: DerivedClosedForm):
+    """The closed form as the arm contract wraps a module (the typed contract's
+    ``check_module`` where the contract has one; the object itself otherwise)."""
+    try:
+        from analysis.kinematics.arms import check_module
+    except ImportError:
+        return cf
+    wrapped = _CHECKED.get(cf.__name__)
+    if wrapped is None:
+        wrapped = _CHECKED[cf.__name__] = check_module(cf.__name__, cf)
+    return wrapped
 
 
 def derived_arm(desc):

@@ -75,6 +75,7 @@ class DerivedClosedForm:
         if st.family == "5R":
             self.ORIENTATION_TOL_RAD = st.orientation_tol
             self.PROJECTION_HINT = PROJECTION_HINT
+            self.ik = self.ik_pose
         if st.family == "4R-kept":
             self.sample_q = self._sample_kept
         w1, u = st.waist, st.u
@@ -214,7 +215,7 @@ class DerivedClosedForm:
     def _find_startup(self):
         from analysis.kinematics.ops import numpy_ops
         from analysis.kinematics.rpy import pose_from_transform
-        from analysis.kinematics.solution import DEFAULT_TOL_MM, solve_body
+        from analysis.kinematics.solution import DEFAULT_TOL_MM
 
         desc = self.description
         lo = np.array([max(j.lower, -math.pi) for j in desc.joints])
@@ -229,11 +230,15 @@ class DerivedClosedForm:
             p = np.concatenate([np.round(pose[:, :3], 1), np.round(pose[:, 3:], 6)], axis=1)
         else:
             p = np.round(T[:, :3, 3], 1)
-        limits = [None if j.unlimited else (j.lower, j.upper) for j in desc.joints]
         with np.errstate(all="ignore"):
-            r = solve_body(numpy_ops, self, tuple(p.T), desc.values, BRANCHES[:1],
-                           tol=DEFAULT_TOL_MM, limits=limits)  # fmt: skip
-        good = np.flatnonzero(np.asarray(r[f"ok:{BRANCHES[0]}"]))
+            r = self.ik(numpy_ops, tuple(p.T), desc.values, tol=DEFAULT_TOL_MM)
+        b = BRANCHES[0]
+        refused = np.zeros(len(p), dtype=bool)
+        for _, cond in (*r["refusals"], *r.get("branch_refusals", {}).get(b, ())):
+            refused |= np.broadcast_to(np.asarray(cond, dtype=bool), refused.shape)
+        q = np.stack([np.broadcast_to(v, refused.shape) for v in r["branches"][b]], axis=-1)
+        inside = np.all((q >= lo - 1e-12) & (q <= hi + 1e-12), axis=-1)
+        good = np.flatnonzero(~refused & inside)
         return tuple(float(v) for v in p[good[0]]) if good.size else None
 
     def check(self, P) -> None:
@@ -302,7 +307,32 @@ class DerivedClosedForm:
         )  # fmt: skip
         return centre, half
 
-    def ik(
+    def ik(self, m, p, P, *, tol, axis_tol=None, margin_rad=0.0, theta1_on_axis=None):
+        """The closed form of a point arm (3R, 4R-kept): :meth:`solve` (a 5R arm's ``ik`` is
+        :meth:`ik_pose`, set in ``__init__``: the contract reads an arm's options off the
+        signature of its ``ik``). ``margin_rad`` has no angular tolerance to narrow here."""
+        return self.solve_target(m, p, P, tol=tol, axis_tol=axis_tol,
+                                 theta1_on_axis=theta1_on_axis)  # fmt: skip
+
+    def ik_pose(
+        self,
+        m,
+        p,
+        P,
+        *,
+        tol,
+        axis_tol=None,
+        margin_rad=0.0,
+        theta1_on_axis=None,
+        orientation_tol="default",
+    ):
+        """The closed form of a 5R arm (a pose): :meth:`solve`."""
+        return self.solve_target(
+            m, p, P, tol=tol, axis_tol=axis_tol, margin_rad=margin_rad,
+            theta1_on_axis=theta1_on_axis, orientation_tol=orientation_tol,
+        )  # fmt: skip
+
+    def solve_target(
         self,
         m,
         p,
@@ -587,7 +617,7 @@ class DerivedClosedForm:
             ), 0.0
         if status == Status.ORIENTATION:
             with np.errstate(all="ignore"):
-                sol = self.ik(numpy_ops, pose, dict(P), tol=tol, orientation_tol=None)
+                sol = self.solve_target(numpy_ops, pose, dict(P), tol=tol, orientation_tol=None)
             off = abs(float(sol["off_plane"]))
             return (
                 f"{where} asks for a roll axis {math.degrees(math.asin(min(1.0, off))):.3f} deg "
