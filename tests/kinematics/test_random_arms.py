@@ -19,7 +19,8 @@ arm then goes through:
   model of the program agrees with Python (status, pulses within a half-pulse tie);
 - the explorer's model (``explore_logic``): a default target, and its report solves back;
 - URDF: Pinocchio reads ``urdf --arm PATH`` back and its FK is ours;
-- the PLC sweep on awlsim: three fixed arms (one per family), ``test_random_arms_on_awlsim``.
+- the PLC sweep on awlsim (S7-300) and the ST engine (IEC 61131-3 ST): three fixed arms,
+  one per family, ``test_random_arms_on_awlsim``.
 
 Arms outside the families are refused with the reason (tests/kinematics/test_derive.py).
 """
@@ -192,9 +193,9 @@ def test_random_arm_through_every_path(family, convention, seed):
 @pytest.mark.slow
 @pytest.mark.parametrize("family", FAMILIES)
 def test_random_arms_on_awlsim(family, tmp_path):
-    """The S7-300 program of a random arm of each family executed on awlsim: the float32
-    model is the PLC bit for bit, statuses agree with Python's, pulses within a half-pulse
-    tie (analysis.plc.verify.compare)."""
+    """The S7-300 program of a random arm of each family executed on awlsim, and its ST
+    program on the ST engine: the float32 model is the PLC bit for bit, statuses agree with
+    Python's, pulses within a half-pulse tie (analysis.plc.verify.compare)."""
     pytest.importorskip("awlsim")
     from analysis.plc.generate import generate
     from analysis.plc.memmap import MemoryMap
@@ -223,3 +224,20 @@ def test_random_arms_on_awlsim(family, tmp_path):
     assert cmp.model_exact and cmp.status_mismatch == 0 and cmp.unsafe == 0
     assert cmp.flag_mismatch == 0 and cmp.unchanged_ok and cmp.all_explained
     assert cmp.n_reachable >= 15 and len(set(res.status.tolist())) >= 3  # ok, refusals, NaN
+    # the same targets through the IEC 61131-3 ST program on the ST engine (where built)
+    from analysis.plc import st_engine
+    from analysis.plc.ir import build_program
+    from analysis.plc.st import block_name, emit_st
+
+    try:
+        engine = st_engine.engine_path()
+    except st_engine.EngineMissing:
+        return  # make st-engine builds it (g++); test_st_engine.py says so where it skips
+    prog = build_program(arm.params, branch, "function")
+    text = emit_st(prog, units=arm.input_units, default_branch=arm.branches[0])
+    res_st, run = st_engine.sweep(text, block_name(prog, arm.branches[0]), prog.inputs,
+                                  len(prog.outputs), t, -999_999, engine)  # fmt: skip
+    assert (run.faults == 0).all()
+    cmp = compare(res_st, frame, arm, branch, "st", -999_999, "function")
+    assert cmp.model_exact and cmp.status_mismatch == 0 and cmp.unsafe == 0
+    assert cmp.flag_mismatch == 0 and cmp.unchanged_ok and cmp.all_explained
