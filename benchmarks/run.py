@@ -23,6 +23,11 @@ Cold calls: the first compiled call after a second of idling, with fresh outputs
 whole process, median of 5. Vectorization: packed (ymm/zmm) divide and square-root
 instructions counted in the IK kernel's assembly.
 
+Derived closed forms (benchmarks/derived.py): EAIK's solution sets against the derived
+ones on the seed arms and 120 random arms (20 per family and D-H convention, 50
+configurations each), and the derived seed arms' compiled kernels against numpy and against
+the hand-written kernels.
+
 Usage: ``python benchmarks/run.py --out build/bench.json [--n 2000000] [--rounds 4]``
 """
 
@@ -204,6 +209,10 @@ def main(argv=None) -> int:
     from plc_scan import plc_scan_times  # benchmarks/ is the script's folder
 
     plc_scan = plc_scan_times()
+    # the derived closed forms: EAIK's solution sets, and their kernels (benchmarks/derived.py)
+    from derived import derived_kernels, eaik_agreement
+
+    derived = {"eaik_agreement": eaik_agreement(), "kernels": derived_kernels()}
     load_after = os.getloadavg()
 
     def ratio(a, b):
@@ -239,6 +248,7 @@ def main(argv=None) -> int:
         "targets": {k: _verdict(k, v, lim) for k, (v, lim) in targets.items()},
         "cli_seconds_median_of_5": cli,
         "plc_scan_us": plc_scan,
+        "derived_closed_forms": derived,
         "vectorization": vec,
         "machine": {
             "cpu_count": os.cpu_count(),
@@ -266,6 +276,20 @@ def main(argv=None) -> int:
         print(f"S7-200   {k:<10} awlsim {v['awlsim_s7200_translated_us_per_scan']:9.1f} us "
               f"(translated), evaluator {v['s7200_evaluator_us_per_scan']:7.1f} us "
               f"({v['awlsim_s7200 / evaluator']:.1f}x)")
+    for k, v in derived["eaik_agreement"].items():
+        if isinstance(v, dict):
+            print(
+                f"EAIK {k:<17} {v['equal']}/{v['configurations']} equal sets, "
+                f"{v['eaik_empty']} EAIK empty, {v['disagree']} disagree "
+                f"({v['arms_all_equal']}/{v['arms']} arms all equal)"
+            )
+        else:
+            print(f"EAIK: {v}")
+    for k, v in derived["kernels"].items():
+        print(
+            f"derived kernel {k:<10} = numpy to {v['max_angle_diff_rad']:.1e} rad, "
+            f"{v['derived / hand-written (rate)']:.2f} x the hand-written kernel's rate"
+        )
     print(f"load {load_before[0]:.2f} -> {load_after[0]:.2f}; wrote {path}")
     _plot(doc, path.with_suffix(".svg"))
     return 0

@@ -738,6 +738,9 @@ def build_parser() -> argparse.ArgumentParser:
     _add_errata(sub)
     _add_arms(sub)
     _add_report(sub)
+    from analysis.app.cli_urdf import add_urdf  # the command's body: app/cli_urdf.py
+
+    add_urdf(sub, _Help)
     return parser
 
 

@@ -13,7 +13,8 @@ Format (``data/arms/grabber.toml`` is the commented example)::
 
     name = "grabber"; title = "..."; paper = "..."
     closed_form = "grabber"            # module analysis.kinematics.arms.<closed_form>, or
-                                       # "my_arm.py": a file next to the description
+                                       # "my_arm.py": a file next to the description; without
+                                       # it, one derived from the rows (analysis.kinematics.derive)
     convention = "standard"            # or "modified" (Craig)
     [parameters]
     L1 = { value = 660.0, unit = "mm", status = "printed", source = "Table 3" }
@@ -156,6 +157,9 @@ class ArmDescription:
         """Provenance of every parameter and axis, by name."""
         return {**{k: p.status for k, p in self.parameters.items()},
                 **{k: a.status for k, a in self.axes.items()}}  # fmt: skip
+    derive: dict = field(default_factory=dict, compare=False)
+    """The ``[derive]`` table: decisions for a closed form derived from the rows
+    (:mod:`analysis.kinematics.derive.families`)."""
 
     @property
     def values(self) -> dict[str, float]:
@@ -264,6 +268,14 @@ def _text(d: dict, key: str, where: str, default: str) -> str:
     v = d.get(key, default)
     if not isinstance(v, str):
         raise ValueError(f"{where}: {key} = {v!r} must be a string")
+    return v
+
+
+def _table(d: dict, key: str, where: str) -> dict:
+    """``[key]``: a table (a missing key is an empty one)."""
+    v = d.get(key, {})
+    if not isinstance(v, dict):
+        raise ValueError(f"{where}: [{key}] must be a table, not {v!r}")
     return v
 
 
@@ -425,7 +437,8 @@ def _load(name: str, tables: tuple, stamp: tuple) -> ArmDescription:
                 raise ValueError(
                     f"{path} joint {j.name}: kind {j.kind!r}, but its D-H row is {kind!r}"
                 )
-    cf_name = _text(d, "closed_form", path.name, path.stem)
+    # none named: derived from the D-H rows (a description without rows names its own)
+    cf_name = _text(d, "closed_form", path.name, "derived" if rows else path.stem)
     if not cf_name:
         raise ValueError(f"{path}: closed_form = {cf_name!r} must name a closed form")
     if cf_name.endswith(".py"):  # a closed form kept next to the description
@@ -444,9 +457,14 @@ def _load(name: str, tables: tuple, stamp: tuple) -> ArmDescription:
         joints,
         path,
         axes,
+        dict(_table(d, "derive", path.name)),
     )
     if rows:
         desc.dh_table()  # every row resolves
+    if desc.closed_form == "derived":  # none named: derived from the rows where it can be
+        from analysis.kinematics.derive import attach
+
+        desc = attach(desc)
     return desc
 
 

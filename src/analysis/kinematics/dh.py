@@ -50,6 +50,9 @@ __all__ = [
     "CONVENTIONS",
     "DHRow",
     "DHTable",
+    "chain_frames",
+    "chain_transforms",
+    "exact_cos_sin",
     "inverse_transform",
     "link_transform",
     "link_transform_sym",
@@ -128,34 +131,45 @@ def _compose(T: list[list], A: list[list]) -> list[list]:
     return out
 
 
-def chain_frames(m, table: DHTable, q: Sequence) -> list[tuple]:
-    """Origins of the frames 0..n_rows of a chain, as ``(x, y, z)`` values of namespace ``m``.
+def chain_transforms(m, table: DHTable, q: Sequence | None = None) -> list[list[list]]:
+    """The 3x4 blocks of ``T_0_i`` for the frames 1..n_rows of a chain, in namespace ``m``.
 
     The chain's product of link transforms (eq. 1 for the paper's arm, T_3 = A_1 A_2 A_3)
     composed element by element in ``m`` (numpy, duals, SymPy, the tracer): the one
-    forward kinematics every backend derives from. ``q`` holds one value per joint.
+    forward kinematics every backend derives from. ``q`` holds one value per joint; None is
+    the home configuration q = 0, whose rotations are then plain numbers, exact at multiples
+    of 90 deg (:func:`exact_cos_sin`): the joint axes and the home pose of
+    :mod:`analysis.kinematics.derive` are read off them, the positions stay values of ``m``
+    (the lengths may be symbols or traced parameters).
     """
-    q = list(q)
-    if len(q) != table.n_joints:
+    q = None if q is None else list(q)
+    if q is not None and len(q) != table.n_joints:
         raise ValueError(f"{len(q)} joint values given; the chain has {table.n_joints} joints")
-    it = iter(q)
+    it = iter(q or ())
     T = None
-    origins: list[tuple] = [(0.0, 0.0, 0.0)]
+    out: list[list[list]] = []
     for row in table.rows:
         d = row.d
-        if row.kind == "revolute":
+        if row.kind == "revolute" and q is not None:
             qi = next(it)
             theta = _add(qi, row.theta_offset) if row.theta_offset else qi
             ct, st = m.cos(theta), m.sin(theta)
         else:
             ct, st = exact_cos_sin(row.theta_offset)
-            if row.kind == "prismatic":
+            if row.kind == "prismatic" and q is not None:  # the joint value adds to d [mm]
                 d = _add(next(it), d)
         ca, sa = exact_cos_sin(row.alpha)
         A = _link_elements(ct, st, ca, sa, row.a, d, table.convention)
         T = A if T is None else _compose(T, A)
-        origins.append((T[0][3], T[1][3], T[2][3]))
-    return origins
+        out.append(T)
+    return out
+
+
+def chain_frames(m, table: DHTable, q: Sequence) -> list[tuple]:
+    """Origins of the frames 0..n_rows of a chain, as ``(x, y, z)`` values of namespace ``m``
+    (:func:`chain_transforms`' translations, the base origin first)."""
+    frames = chain_transforms(m, table, list(q))
+    return [(0.0, 0.0, 0.0), *((T[0][3], T[1][3], T[2][3]) for T in frames)]
 
 
 def link_transform(

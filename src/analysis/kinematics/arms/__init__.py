@@ -437,10 +437,18 @@ def _load_file(path: str, stamp: tuple) -> ClosedForm:
 
 def closed_form(name: str | ClosedForm) -> ClosedForm:
     """The closed form ``analysis.kinematics.arms.<name>``, or the one in the Python file
-    ``name`` (a path ending in ``.py``: a user's own, next to their description), checked
-    against the contract (module docstring); a :class:`ClosedForm` is returned as it is."""
+    ``name`` (a path ending in ``.py``: a user's own, next to their description), or the one
+    derived from a description's D-H table (``derived:...``, :mod:`analysis.kinematics.derive`),
+    checked against the contract (module docstring); a :class:`ClosedForm` is returned as it
+    is."""
     if isinstance(name, ClosedForm):
         return name
+    if isinstance(name, str) and name.startswith("derived:"):
+        # derived from a description's D-H table (what a description without closed_form
+        # gets): analysis.kinematics.derive
+        from analysis.kinematics.derive import lookup
+
+        return lookup(name)
     if isinstance(name, str) and name.endswith(".py"):
         from pathlib import Path
 

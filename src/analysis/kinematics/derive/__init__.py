@@ -1,0 +1,169 @@
+"""A closed form derived from the D-H table, for the families the seed papers belong to.
+
+A description without ``closed_form`` (``data/arms/*.toml`` or a user's file) gets one
+derived here: :func:`attach` names it ``"derived:<family>-<digest>"`` and
+:func:`analysis.kinematics.arms.closed_form` finds it by that name. The result is the same
+kind of closed form as the hand-written ones (:mod:`analysis.kinematics.arms`): one body
+written against the math namespace ``m``, so the derived arm gets the numpy solver, the
+compiled kernel, the float32 model, SymPy and the PLC programs without further code.
+Outside the families the description still loads (its FK, Pinocchio model and URDF need no
+closed form) and :func:`analysis.kinematics.arms.closed_form` raises the reason, naming the
+family rule it breaks; a hand-written closed form (``closed_form = "<module>"``) is the
+route for any other arm.
+
+Method: subproblem decomposition (Paden-Kahan, :mod:`.subproblems`) on the chain's screws at
+q = 0 (:mod:`.chain`). Every family has a waist (axis 1, direction ``w1``) and a set of
+parallel axes (2 || 3 [|| 4], direction ``u``), so the decomposition is the same:
+
+1. **the waist**. The solved point ``w`` (the target; a 5R arm: the point of the roll axis
+   nearest the tool, where the pose puts it) keeps its component along ``u`` whatever the
+   parallel joints do. With ``x = w - q1`` in the basis ``g1 = e x w1`` (forward), ``e``
+   (``u`` across ``w1``, normalised) and ``w1``, the waist must turn ``x`` to the lateral
+   offset ``l`` of the arm plane: PK3 against a plane, ``F = +-sqrt(rho^2 - l^2)`` forward,
+   ``theta1 = atan2(F x_e - l x_g, F x_g + l x_e)``. Without a lateral offset (every seed
+   arm: ``l = 0`` structurally) this is PK1, ``theta1 = atan2(x_e, x_g)`` and ``+ pi``, the
+   seeds' ``atan2(Py, Px)`` (seed 000 eq. 6, seed 001 eqs. 1 and 6, seed 004 sec. 4.2).
+   The point turned back to the arm plane at ``theta1 = 0`` is
+   ``q1 + F g1 + l e + (w1 . x) w1``: no trigonometry.
+2. **the kept pitch** (4R, 5R). The rotation of the last parallel link about ``u`` is the
+   sum ``psi = sum sigma_i q_i`` (``sigma_i = +-1``: the axis along or against ``u``). 4R:
+   ``psi`` is the description's decision (``[derive] keep``, PK1 at load: seed 001's
+   "gripper kept level", eq. 12 corrected, is ``psi = pi/2``). 5R: PK1 turning the roll axis
+   at q = 0 onto where the pose puts it; a roll axis out of the set the arm can reach is
+   refused (``orientation``, as seed 004's closed form) or, with ``orientation_tol=None``,
+   projected onto the nearest. The solved point of the plane is then axis 4's point,
+   ``w - R(u, psi)(w_home - q4_home)``.
+3. **the elbow**: PK3, the law of cosines of the two links across the parallel axes
+   (lengths ``La``, ``Lb``), ``cos(bend) = (d^2 - La^2 - Lb^2) / (2 La Lb)``, the bend
+   ``+-acos``: seed 000 eqs. 9-10, seed 001 eq. 3, seed 004's c3.
+4. **the shoulder**: PK1 about axis 2 from the arm at q2 = 0 (upper arm plus the bent
+   forearm) onto the solved point: seed 000 eqs. 15-19, seed 001 eq. 3, seed 004's theta2.
+5. the last parallel joint ``q4 = sigma_4 (psi - sigma_2 q2 - sigma_3 q3)`` (seed 001
+   eq. 12, seed 004's theta4); 5R: the roll by PK1 about axis 5 (seed 004's theta5).
+
+Branches, named as the seeds name them: the waist "front" (the forward direction faces
+the target) or "back" (turned by about pi), the elbow "up" or "down". Which way is forward
+and how "up" is seen on the back branches are decisions of the description (``[derive]``,
+:mod:`.families`); the defaults reproduce seeds 000 and 004 and ``elbow = "arm"``
+reproduces seed 001 (``tests/kinematics/test_derive.py`` holds each derived closed form
+against the hand-written one, branch by branch).
+
+Refusals, in the order computed (the PLC program jumps at the first that holds): out of the
+reach box; for a 3R arm whose shoulder is on the waist axis, beyond or inside the reach
+shells; inside the cylinder a lateral offset keeps the target out of; on the waist axis
+(``base-axis``; ``theta1_on_axis`` chooses the waist angle); a 5R roll axis out of reach
+(``orientation``); then per branch where the front and back solutions differ (4R, 5R): the
+solved point beyond or inside its reach, on the shoulder axis (``degenerate``).
+
+Angles: theta1, theta2 and the pitch joints are wrapped to (-pi, pi]; theta3 is not wrapped
+where the forearm continues the upper arm at q = 0 (the seeds' case: ``-/+acos`` by branch,
+continuous at the folded elbow), else wrapped.
+
+Why derived here rather than by a library: EAIK (the ``bench`` extra) derives and solves
+such decompositions in C++, but yields numbers, not a closed form the project's backends can
+record (compiled kernel, float32 model, PLC programs); it is the oracle instead
+(:mod:`.oracle`). IKFast generates C++ and needs OpenRAVE.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import hashlib
+import json
+
+from analysis.kinematics.derive.chain import home
+from analysis.kinematics.derive.closed_form import DerivedClosedForm
+from analysis.kinematics.derive.families import FAMILIES, NotDerivable, classify
+
+__all__ = ["DERIVED", "FAMILIES", "DerivedClosedForm", "NotDerivable", "attach", "derive",
+           "derived_arm", "lookup"]  # fmt: skip
+
+DERIVED = "derived"
+"""The ``closed_form`` of a description that asks for a derived one (also what a missing
+``closed_form`` means)."""
+_REGISTRY: dict[str, DerivedClosedForm | NotDerivable] = {}
+_CHECKED: dict = {}
+
+
+def _digest(*parts) -> str:
+    text = json.dumps(parts, sort_keys=True, default=str)
+    return hashlib.sha256(text.encode()).hexdigest()[:16]
+
+
+def _key(desc) -> tuple:
+    return (desc.convention, [dict(r) for r in desc.rows], sorted(desc.parameters), desc.derive)
+
+
+def derive(desc) -> DerivedClosedForm:
+    """The derived closed form of description ``desc`` (whatever its ``closed_form``), or
+    NotDerivable with the reason. The same structure gives the same object."""
+    table = desc.dh_table()
+    if any(r.get("kind", "revolute") not in ("revolute", "fixed") for r in desc.rows):
+        raise NotDerivable("the chain has a joint that is neither revolute nor fixed")
+    from analysis.kinematics.ops import numpy_ops
+
+    h = home(numpy_ops, table)
+    structure = classify(h.axes, h.rotation, desc.derive)
+    probe = DerivedClosedForm("derived:probe", desc, structure)
+    flags = (probe.kappa, probe.bend_zero, probe.lateral_zero, probe.h_zero)
+    name = f"{DERIVED}:{structure.family}-{_digest(_key(desc), flags)}"
+    known = _REGISTRY.get(name)
+    if isinstance(known, DerivedClosedForm):
+        return known
+    probe.__name__ = name
+    _REGISTRY[name] = probe
+    return probe
+
+
+def attach(desc):
+    """``desc`` with ``closed_form`` set to the name of its derived closed form (registered
+    for :func:`lookup`); a chain outside the families gets a name whose lookup raises the
+    reason."""
+    try:
+        name = derive(desc).__name__
+    except NotDerivable as exc:
+        name = f"{DERIVED}:refused-{_digest(_key(desc))}"
+        _REGISTRY[name] = NotDerivable(
+            f"arm {desc.name} names no closed_form and none can be derived from its D-H "
+            f"table: {exc}. Write one (analysis.kinematics.arms) and name it with "
+            'closed_form = "<module>"'
+        )
+    return dataclasses.replace(desc, closed_form=name)
+
+
+def lookup(name: str) -> DerivedClosedForm:
+    """The derived closed form registered as ``name`` (ValueError: the reason it could not
+    be derived, or that no description registered it)."""
+    got = _REGISTRY.get(name)
+    if isinstance(got, NotDerivable):
+        raise NotDerivable(str(got))
+    if got is None:
+        raise ValueError(
+            f"no derived closed form {name!r}: load the description that derives it first"
+        )
+    return _checked(got)
+
+
+def _checked(cf: DerivedClosedForm):
+    """The closed form as the arm contract wraps a module (the typed contract's
+    ``check_module`` where the contract has one; the object itself otherwise)."""
+    try:
+        from analysis.kinematics.arms import check_module
+    except ImportError:
+        return cf
+    wrapped = _CHECKED.get(cf.__name__)
+    if wrapped is None:
+        wrapped = _CHECKED[cf.__name__] = check_module(cf.__name__, cf)
+    return wrapped
+
+
+def derived_arm(desc):
+    """An :class:`~analysis.kinematics.arm.Arm` of description ``desc`` (or a name or path)
+    on its derived closed form, whatever its ``closed_form`` (the seed arms' oracle)."""
+    from analysis.kinematics.arm import Arm, Params
+    from analysis.kinematics.description import load_description
+
+    if isinstance(desc, str):
+        desc = load_description(desc)
+    d = dataclasses.replace(desc, closed_form=derive(desc).__name__)
+    return Arm(Params.from_description(d))
