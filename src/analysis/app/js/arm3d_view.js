@@ -2,7 +2,7 @@
 // whose arm and target traces are redrawn in place. Shared by the JupyterLab widget
 // (analysis.app.arm3d.Arm3DWidget) and the static report page (analysis.app.site_content).
 // Drawing only: the kinematics is printed from the closed form (analysis.app.explore_js).
-// Every redraw is logged once it is on screen (two animation frames after plotly returns):
+// Every redraw is logged once it is on screen (the next frame painted after plotly returns):
 // element.arm3dDraws and window.arm3dDraws hold {t, source, frames, target, title}, what the
 // browser tests read (time from a control's change to the new pose on screen, the drawn
 // joint positions against forward kinematics).
@@ -30,8 +30,14 @@
     return /^-0\.?0*$/.test(s) ? s.slice(1) : s;
   }
 
+  // resolves just after the next frame is painted: an animation frame callback runs before
+  // the paint, a message posted from it runs after (the usual "next paint" measure)
   function onScreen() {
-    return new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
+    return new Promise((r) => requestAnimationFrame(() => {
+      const ch = new MessageChannel();
+      ch.port1.onmessage = () => r();
+      ch.port2.postMessage(0);
+    }));
   }
 
   class View {
@@ -60,6 +66,7 @@
     /** Redraw the arm through `frames` ([[x, y, z], ...] mm, or null: no solution), the
      * target cross at `target` and the title; resolves once it is on screen. */
     draw(frames, target, title, source) {
+      const asked = performance.now();
       const key = JSON.stringify([frames, target, title]);
       if (key === this.last) return this.queue;
       this.last = key;
@@ -74,11 +81,16 @@
         data.z.push(t.map((p) => p[2]));
         idx.push(this.target);
       }
+      let started, plotted;
       this.queue = this.queue
+        .then(() => { started = performance.now(); })
         .then(() => this.Plotly.update(this.div, data, {"title.text": title}, idx))
+        .then(() => { plotted = performance.now(); })
         .then(onScreen)
         .then(() => {
-          const rec = {t: performance.now(), source, frames, target, title};
+          // asked: draw() called; started: plotly began (after earlier draws); plotted: it
+          // returned; t: the next frame painted
+          const rec = {t: performance.now(), asked, started, plotted, source, frames, target, title};
           this.el.arm3dDraws.push(rec);
           (globalThis.arm3dDraws = globalThis.arm3dDraws || []).push(rec);
           this.el.dispatchEvent(new CustomEvent("arm3d-drawn", {detail: rec, bubbles: true}));

@@ -21,6 +21,13 @@ function fetchPlotly(model) {
   });
 }
 
+// a control's value: selection widgets (the branch buttons) sync an index into their labels
+function value(m) {
+  if (!m) return null;
+  const labels = m.get("_options_labels");
+  return labels ? labels[m.get("index")] : m.get("value");
+}
+
 function sameKey(a, b) {
   if (!a || !b || a.length !== b.length) return false;
   return a.every((v, i) => (typeof v === "number" && typeof b[i] === "number"
@@ -59,8 +66,8 @@ async function render({model, el}) {
     for (const m of [...c.inputs, ...c.joints, c.branch, c.fk, c.axis, c.axisDeg]) {
       if (!m) continue;
       const cb = () => local();
-      m.on("change:value", cb);
-      unhook.push(() => m.off("change:value", cb));
+      m.on("change:value change:index", cb);
+      unhook.push(() => m.off("change:value change:index", cb));
     }
     ctl = c;
   }
@@ -68,21 +75,21 @@ async function render({model, el}) {
   // the controls' values, in the order of Explorer.pose_key() (Python)
   function key() {
     if (!ctl) return null;
-    const v = (m) => (m ? m.get("value") : null);
+    const v = value;
     return [v(ctl.fk), v(ctl.branch), ...ctl.inputs.map(v), ...ctl.joints.map(v), v(ctl.axis), v(ctl.axisDeg)];
   }
 
   function local() {
-    if (!arm || !ctl) return;
-    const fk = ctl.fk && ctl.fk.get("value");
-    if (!fk && ctl.axis && ctl.axis.get("value")) return; // theta1 chosen on the axis: the kernel's
+    if (!arm || !ctl || ctl.inputs.length !== arm.inputs.length) return;
+    const fk = value(ctl.fk);
+    if (!fk && value(ctl.axis)) return; // theta1 chosen on the axis: the kernel draws
     const rad = Math.PI / 180;
     let r;
     if (fk) {
-      r = A.pose(arm, {q: ctl.joints.map((m) => m.get("value") * rad)});
+      r = A.pose(arm, {q: ctl.joints.map((m) => value(m) * rad)});
     } else {
-      const p = ctl.inputs.map((m, i) => m.get("value") * (ctl.units[i] === "rad" ? rad : 1));
-      r = A.pose(arm, {branch: ctl.branch.get("value"), p});
+      const p = ctl.inputs.map((m, i) => value(m) * (ctl.units[i] === "rad" ? rad : 1));
+      r = A.pose(arm, {branch: value(ctl.branch), p});
     }
     view.draw(r.frames, r.target, r.title, "local");
   }
