@@ -105,8 +105,11 @@ $(BENCH_STAMP): $(STAMP) requirements-bench.lock
 bench: $(BENCH_STAMP) $(ST_ENGINE)
 	$(PY) benchmarks/run.py --out build/bench.json
 
+# JupyterLab on copies of the notebooks in build/lab/ (analysis/app/lab.py): the stored ones are
+# nbval's references, which Lab's autosave would change (the explorer moved, widget state);
+# --allow-root when run as root. LAB_ARGS: more options (e.g. LAB_ARGS=--no-browser).
 lab: $(STAMP)
-	MPLBACKEND=$(NB_BACKEND) $(VENV)/bin/jupyter lab notebooks
+	MPLBACKEND=$(NB_BACKEND) $(PY) -m analysis.app.lab $(LAB_ARGS)
 
 # Re-executes notebooks in place (all, or NB="notebooks/03_table4.ipynb ...") and stores their
 # outputs, the reference nbval compares against: commit them with the change that moved them.

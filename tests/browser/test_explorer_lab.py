@@ -29,12 +29,15 @@ from urllib.parse import urlsplit
 import nbformat
 import pytest
 
+from analysis.app.lab import command as lab_command
+from analysis.app.lab import prepare
 from analysis.app.report import CHROMIUM_FLAGS, NB_BACKEND
 
 from .conftest import LOCAL_HOSTS, PROJECT
 
 NOTEBOOK = PROJECT / "notebooks" / "09_explore.ipynb"
-JUPYTER = Path(sys.executable).with_name("jupyter")
+STORED = NOTEBOOK.read_bytes()  # what nbval compares: the Lab session must leave it as it is
+JUPYTER = Path(sys.executable).with_name("jupyter")  # lab_command runs this one
 START_TIMEOUT_S = 90  # JupyterLab's first start builds nothing, but loads ~100 extensions
 
 
@@ -50,8 +53,9 @@ def lab(chromium, tmp_path_factory):
     if not JUPYTER.exists():
         pytest.skip(f"no jupyter at {JUPYTER}: make venv installs JupyterLab")
     root = tmp_path_factory.mktemp("lab")
-    nb = nbformat.read(NOTEBOOK, as_version=4)
-    for cell in nb.cells:
+    prepare(root, NOTEBOOK.parent)  # make lab's copies
+    nb = nbformat.read(root / NOTEBOOK.name, as_version=4)
+    for cell in nb.cells:  # every output on the page comes from this run
         if cell.cell_type == "code":
             cell.outputs, cell.execution_count = [], None
     nb.metadata.pop("widgets", None)
@@ -76,21 +80,17 @@ def lab(chromium, tmp_path_factory):
         "MPLBACKEND": NB_BACKEND,
     }
     port = _free_port()
-    cmd = [
-        str(JUPYTER),
-        "lab",
+    cmd = lab_command(
+        root,  # what make lab runs, on a copy in a temporary folder here
         "--no-browser",
         "--ServerApp.ip=127.0.0.1",
         f"--ServerApp.port={port}",
         "--ServerApp.port_retries=0",
         "--IdentityProvider.token=",
         "--ServerApp.password=",
-        f"--ServerApp.root_dir={root}",
         "--LabApp.extension_manager=readonly",
         "--ServerApp.terminals_enabled=False",
-        # CI runs as root
-        *(["--allow-root"] if hasattr(os, "geteuid") and os.geteuid() == 0 else []),
-    ]
+    )
     log = (root / "lab.log").open("w")
     proc = subprocess.Popen(cmd, cwd=root, env=env, stdout=log, stderr=subprocess.STDOUT)
     url = f"http://127.0.0.1:{port}/"
@@ -289,10 +289,10 @@ def _drawn_after_change(page, timeout_ms: float = 20_000) -> tuple[dict, float]:
     ms = page.evaluate(
         """() => { const t0 = window.arm3dChangeAt;
         const d = document.querySelector('.arm3d-widget').arm3dDraws.find(d => d.t > t0);
-        return [d.asked - t0, d.started - t0, d.plotted - t0, d.t - t0]; }"""
+        return [d.asked - t0, d.started - t0, d.plotted - t0, d.t - t0, d.source]; }"""
     )
     PHASES.append(ms)
-    return _drawn(page), ms[-1]
+    return _drawn(page), ms[-2]
 
 
 def _settled(page, expect, timeout_s: float = 20) -> dict:
@@ -451,6 +451,18 @@ def test_explorer_in_jupyterlab(lab, lab_page, shots):
     assert "FK" in drawn["title"]
 
     assert not page.blocked or all("127.0.0.1" not in u for u in page.blocked)
+    # make lab never changes the stored notebook: saved, the copy changed, notebooks/ did not
+    saved = root / NOTEBOOK.name
+    before_save = saved.stat().st_mtime
+    page.get_by_role("menuitem", name="File", exact=True).click()
+    page.get_by_role("menuitem", name=re.compile(r"^Save( Notebook)?(\s|$)")).first.click()
+    deadline = time.monotonic() + 20
+    while saved.stat().st_mtime == before_save and time.monotonic() < deadline:
+        time.sleep(0.2)
+    if saved.stat().st_mtime <= before_save:
+        page.screenshot(path=shots / "lab-explorer-save-failed.png")
+    assert saved.stat().st_mtime > before_save, "JupyterLab did not save the notebook"
+    assert NOTEBOOK.read_bytes() == STORED, "the stored notebook changed"
     # the browser's own frame interval with nothing changing (context for the latency)
     frame = page.evaluate(
         """() => new Promise(r => { const ts = []; const f = t => { ts.push(t);
@@ -462,7 +474,8 @@ def test_explorer_in_jupyterlab(lab, lab_page, shots):
         "latency_ms": [round(v, 1) for v in latencies],
         "median_ms": round(float(np.median(latencies)), 1),
         "max_ms": round(max(latencies), 1),
-        "phases_ms": [[round(v, 1) for v in p] for p in PHASES],
+        "phases_ms": [[round(v, 1) for v in p[:-1]] for p in PHASES],
+        "first_draw_from": sorted({p[-1] for p in PHASES}),
         "idle_frame_ms": round(frame, 1),
         "loadavg": [round(v, 2) for v in load],
         "cpus": os.cpu_count(),
@@ -470,6 +483,9 @@ def test_explorer_in_jupyterlab(lab, lab_page, shots):
     (shots / "lab-latency.json").write_text(json.dumps(report, indent=1) + "\n")
     print(f"JupyterLab explorer: {time.perf_counter() - t0:.1f} s; change -> pose on screen "
           f"{report}")
-    # the budget (50 ms) is checked on an idle machine (make bench reads this file); here a
-    # gross regression fails: a pose that waits for the kernel takes 100+ ms
-    assert report["median_ms"] < (50 if load[0] < 1.0 else 250), report
+    # every change is drawn first from the printed kinematics, not after a kernel round trip
+    assert report["first_draw_from"] == ["local"], report
+    # the budget: at most 50 ms from the change to the new pose on screen, on an idle machine
+    # (on a loaded one the number is recorded, with the load, in build/browser/lab-latency.json)
+    if load[0] < 0.5 * (os.cpu_count() or 1):
+        assert report["max_ms"] <= 50, report
