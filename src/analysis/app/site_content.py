@@ -46,6 +46,7 @@ __all__ = [
     "prepare_notebook",
     "register_md",
     "saved_stems",
+    "static_explorer_html",
     "write_downloads",
 ]
 
@@ -56,9 +57,14 @@ MISSING_CAPTION = "Caption missing: pass caption=... to save_figure() for"
 WIDGET_MIME = "application/vnd.jupyter.widget-view+json"
 WIDGET_NOTE = (
     "*Interactive controls (sliders, branch picker, FK mode). A static page has no Python "
-    "kernel to drive them: run `make lab` and open `notebooks/{name}` to use them. A 3D view "
-    "below them (if the cell has one) shows the starting pose: drag it to rotate, scroll to "
-    "zoom.*"
+    "kernel to drive them: run `make lab` and open `notebooks/{name}` to use them.*"
+)
+EXPLORER_NOTE = (
+    "The explorer, here without a kernel: the same controls drive the arm through its "
+    "closed form printed as JavaScript (`analysis.app.explore_js`, from the recording that "
+    "the numpy and compiled solvers run; the browser tests hold it to Python within 1e-9). "
+    "Drag the 3D view to rotate it, scroll to zoom. With a kernel (`make lab`, "
+    "`notebooks/{name}`) it also shows the pulse error and the manipulability."
 )
 # what ``print(save_figure(fig, stem))`` prints: ['05-workspace-xz.svg', '05-workspace-xz.png']
 _SAVED = re.compile(r"^\['(?P<stem>\d\d-[^'\s/]+)\.svg', '(?P=stem)\.png'\]\s*$", re.M)
@@ -163,8 +169,14 @@ def prepare_notebook(
         if cell.cell_type != "code":
             continue
         for o in cell.get("outputs", []):
-            if WIDGET_MIME in o.get("data", {}):
-                o["data"] = {"text/markdown": WIDGET_NOTE.format(name=name)}
+            data = o.get("data", {})
+            if WIDGET_MIME in data:
+                explorer = "Explorer of the" in "".join(data.get("text/plain", ""))
+                o["data"] = (
+                    {"text/html": static_explorer_html(name), "text/plain": "explorer"}
+                    if explorer
+                    else {"text/markdown": WIDGET_NOTE.format(name=name)}
+                )
                 o.pop("metadata", None)
         stems = [s for s in saved_stems(cell) if s in captions and s not in placed]
         if not stems:
@@ -206,6 +218,53 @@ def prepare_notebook(
         cells.insert(0, nbformat.v4.new_markdown_cell(box))
     nb.cells = cells
     return nb, placed
+
+
+def static_explorer_html(name: str, arms: Iterable[str] | None = None) -> str:
+    """The explorer for a page without a kernel: a ``div.static-explorer`` that
+    ``js/static_explorer.js`` (served from ``_static``) fills with the controls and the 3D
+    view, and every arm that loads (:func:`~analysis.app.explore_logic.available_arms`) printed
+    as JavaScript (:func:`~analysis.app.explore_js.arm_module_js`), each with its figure
+    (:func:`~analysis.app.arm3d.arm_figure`) and start target
+    (:func:`~analysis.app.explore_logic.default_target`; Table 4 row 1 for the paper's arm)."""
+    import numpy as np
+
+    from analysis.app.arm3d import arm_figure, workspace_box
+    from analysis.app.explore_js import arm_module_js
+    from analysis.app.explore_logic import available_arms, default_target
+    from analysis.kinematics.arm import load_arm
+
+    names = list(arms) if arms is not None else list(available_arms()[0])
+    scripts, figures, start = [], {}, {}
+    for arm_name in names:
+        arm = load_arm(arm_name)
+        try:
+            scripts.append(f"analysisArms[{json.dumps(arm_name)}] = {arm_module_js(arm)};")
+        except (ValueError, TypeError, AttributeError):  # not a D-H chain: no page explorer
+            continue
+        t = [100.0, 100.0, 600.0] if arm_name == "grabber" else default_target(arm).tolist()
+        box = workspace_box(arm)
+        fig = arm_figure(arm, None, None, box=box, keep_arm=True, height=480)
+        figures[arm_name] = json.loads(fig.to_json()) | {"config": {"displaylogo": False,
+                                                                   "responsive": True}}
+        start[arm_name] = [float(np.round(v, 9)) for v in t]
+    first = "grabber" if "grabber" in figures else next(iter(figures))
+    cfg = {"id": hashlib.sha1(name.encode()).hexdigest()[:8], "arm": first,
+           "arms": list(figures), "figures": figures, "start": start}
+    return (
+        f'<p class="explorer-note">{_html(EXPLORER_NOTE.format(name=name))}</p>\n'
+        f"<div class=\"static-explorer\" data-explorer='{_html(json.dumps(cfg))}'>"
+        "<noscript>The explorer needs JavaScript.</noscript></div>\n"
+        "<script>window.analysisArms = window.analysisArms || {};\n"
+        + "\n".join(scripts)
+        + "</script>\n"
+    )
+
+
+def _html(text: str) -> str:
+    import html
+
+    return html.escape(text, quote=True).replace("`", "")
 
 
 # --------------------------------------------------------------------------------------------
