@@ -35,7 +35,7 @@ nb_merge_streams = True
 nb_ipywidgets_js: dict = {}  # the default loads require.js and the widget manager from a CDN
 nb_output_stderr = "show"
 
-exclude_patterns = ["downloads/**", "figures/**", "**.ipynb_checkpoints"]
+exclude_patterns = ["downloads/**", "figures/**", "**.ipynb_checkpoints"]  # report.py adds print.md for the site
 suppress_warnings = ["mystnb.unknown_mime_type"]
 numfig = True
 numfig_format = {"figure": "Figure %s"}

@@ -188,7 +188,9 @@ def _fresh_dir(path: Path) -> None:
     (path / _MARKER).write_text("written by analysis.app.report; deleted on the next build\n")
 
 
-def _sphinx(src: Path, out: Path, doctrees: Path, builder: str = "html") -> int:
+def _sphinx(
+    src: Path, out: Path, doctrees: Path, builder: str = "html", overrides: dict | None = None
+) -> int:
     """Run Sphinx in this process; return the number of warnings."""
     from sphinx.application import Sphinx
     from sphinx.util.console import nocolor
@@ -207,6 +209,7 @@ def _sphinx(src: Path, out: Path, doctrees: Path, builder: str = "html") -> int:
             status=None,  # our own progress lines instead of Sphinx's per-file log
             warning=warnings,
             freshenv=False,
+            confoverrides=overrides or {},
             verbosity=0,
         )
         app.build(force_all=True)
@@ -255,7 +258,9 @@ def serve(folder: Path) -> Iterator[str]:
         thread.join()
 
 
-def print_pdf(html_dir: Path, pdf: Path, chromium: str = CHROMIUM, timeout: int = 300) -> bool:
+def print_pdf(
+    html_dir: Path, pdf: Path, chromium: str = CHROMIUM, timeout: int = 300, page: str = "index"
+) -> bool:
     """Print ``html_dir/index.html`` to ``pdf`` with Debian's headless Chromium.
 
     The page is served on 127.0.0.1 (so that MathJax loads its fonts) and given a virtual
@@ -274,7 +279,7 @@ def print_pdf(html_dir: Path, pdf: Path, chromium: str = CHROMIUM, timeout: int 
             "--virtual-time-budget=60000",
             "--run-all-compositor-stages-before-draw",
             f"--print-to-pdf={pdf}",
-            url + "index.html",
+            url + f"{page}.html",
         ]
         try:
             run = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
@@ -505,6 +510,15 @@ def _write_sources(
         site.front_page_md(sections, captions, homes, titles, intro, toc, problems=failed),
         encoding="utf-8",
     )
+    # the printed report (report.pdf): the front page and every figure with its caption, no
+    # code and no notebook listings (the notebooks are on the site and as downloads)
+    (src / "print.md").write_text(
+        ":orphan:\n\n"
+        + site.front_page_md(sections, captions, homes, titles, intro, {}, problems=failed)
+        + "\n\n"
+        + site.figures_md(captions, homes, titles).replace("# Figures", "## Figures", 1),
+        encoding="utf-8",
+    )
     (src / "register.md").write_text(site.register_md(), encoding="utf-8")
     (src / "figures.md").write_text(site.figures_md(captions, homes, titles), encoding="utf-8")
     (src / "downloads.md").write_text(site.downloads_md(src, items), encoding="utf-8")
@@ -549,16 +563,16 @@ def build_report(
     paths = [Path(p).resolve() for p in notebooks] if notebooks else notebook_paths()
     nb_cache, front, stamp = None, None, None
     if cache:
-        from analysis.app.report_cache import NotebookCache, cached_front_page, inputs_digest
+        from analysis.app import report_cache as rc
 
-        digest = inputs_digest()
-        nb_cache = NotebookCache(digest=digest) if execute else None
+        digest, whole = rc.inputs_digest(), rc.site_digest()
+        nb_cache = rc.NotebookCache(digest=digest) if execute else None
 
         def front():
-            return cached_front_page(_front_page_data, digest)
+            return rc.cached_front_page(_front_page_data, whole)
 
         if execute:
-            stamp = _build_stamp(digest, paths, pdf)
+            stamp = _build_stamp(whole, paths, pdf)
             index = out / "index.html"
             if index.exists() and (out / _MARKER).read_text(errors="replace").endswith(stamp):
                 say(f"nothing changed since {index} was built: the site is current")
@@ -589,15 +603,17 @@ def build_report(
     warnings = 0
     if pdf:
         say("sphinx: single-page version for printing ...")
-        warnings += _sphinx(src, work / "print", doctrees, "singlehtml")
+        warnings += _sphinx(
+            src, work / "print", work / "doctrees-print", "singlehtml", {"root_doc": "print"}
+        )
         say("printing report.pdf with headless Chromium ...")
-        if print_pdf(work / "print", src / "downloads" / "report.pdf"):
+        if print_pdf(work / "print", src / "downloads" / "report.pdf", page="print"):
             items.append(
                 site.Download(
                     "report.pdf",
                     "Printable report",
-                    "The whole report as one PDF (A4), printed from the single-page HTML by "
-                    "headless Chromium",
+                    "The report as one PDF (A4): the verdicts, the findings and every figure "
+                    "with its caption, without code; printed by headless Chromium",
                     "make report",
                 )
             )
@@ -605,7 +621,10 @@ def build_report(
 
     # 4. the site
     say("sphinx: building the site ...")
-    warnings += _sphinx(src, out, doctrees, "html")
+    warnings += _sphinx(  # the printed form is not a page of the site
+        src, out, doctrees, "html",
+        {"exclude_patterns": ["downloads/**", "figures/**", "**.ipynb_checkpoints", "print.md"]},
+    )
     _prune_mathjax(out / "_static" / "mathjax")
     (out / _MARKER).write_text(
         "written by analysis.app.report; deleted on the next build\n"

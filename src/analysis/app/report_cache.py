@@ -29,7 +29,7 @@ import nbformat
 
 from analysis.paths import PROJECT
 
-__all__ = ["CACHE_DIR", "INPUTS_KEY", "NotebookCache", "cached_front_page", "inputs_digest"]
+__all__ = ["CACHE_DIR", "INPUTS_KEY", "SITE_ONLY", "NotebookCache", "cached_front_page", "inputs_digest", "site_digest"]
 
 CACHE_DIR = Path(os.environ.get("ANALYSIS_REPORT_CACHE") or PROJECT / "build" / "report-cache")
 """Where the cache lives (``$ANALYSIS_REPORT_CACHE`` overrides: ``make bench`` times a cold
@@ -38,17 +38,34 @@ INPUTS_KEY = "analysis_inputs"
 """Notebook metadata key holding :func:`inputs_digest` (hashed by jupyter-cache with the code)."""
 
 
-def inputs_digest(root: Path = PROJECT) -> str:
+SITE_ONLY = (
+    "src/analysis/app/report.py",
+    "src/analysis/app/report_cache.py",
+    "src/analysis/app/site_content.py",
+    "src/analysis/app/frontpage.py",
+)
+"""Modules that only build the site (no notebook imports them): a change to them does not
+re-execute the notebooks (the front page's data is keyed with them, :func:`site_digest`)."""
+
+
+def inputs_digest(root: Path = PROJECT, exclude: tuple[str, ...] = SITE_ONLY) -> str:
     """SHA-256 over the files every notebook's outputs depend on besides its own code: the
-    package (``src/analysis``: Python, JavaScript, data files), ``data/`` and the lock."""
+    package (``src/analysis``: Python, JavaScript, data files) but the modules that only
+    build the site (``exclude``), ``data/`` and the lock."""
     h = hashlib.sha256()
     files = [root / "requirements.lock"]
     for top in ("src/analysis", "data"):
         files += [p for p in (root / top).rglob("*") if p.is_file() and "__pycache__" not in p.parts]
-    for f in sorted(files):
+    skip = {root / e for e in exclude}
+    for f in sorted(f for f in files if f not in skip):
         if f.exists():
             h.update(f.relative_to(root).as_posix().encode() + b"\0" + f.read_bytes() + b"\0")
     return h.hexdigest()
+
+
+def site_digest(root: Path = PROJECT) -> str:
+    """:func:`inputs_digest` with the site's own modules: the key of the front page's data."""
+    return inputs_digest(root, exclude=())
 
 
 class NotebookCache:
