@@ -13,9 +13,10 @@ JavaScript that :func:`arm_module_js` prints from two recordings
 * the D-H chain's frame origins (:func:`~analysis.kinematics.dh.chain_frames`, what
   :meth:`Arm.frames` evaluates with numpy), which the 3D view draws.
 
-The printer is the same shape as the Numba printer of :mod:`analysis.kinematics.compiled`:
-one table (:data:`JS_EXPR`) with the JavaScript of every recorded operation, and a loop over
-the live nodes of a graph in execution order. The recording keeps the order of every
+The printer is one class of the project's printers (:mod:`analysis.kinematics.printing`,
+beside the compiled kernel's and the PLC dialects'): :class:`JsPrinter`, a method or a known
+function per operation of the one op table, and a loop over the live nodes of a graph in
+execution order. The recording keeps the order of every
 floating-point operation of the closed form, so the printed function computes what numpy
 computes: ``+ - * / sqrt`` are correctly rounded in both, and ``Math.atan2``, ``acos``,
 ``sin``, ``cos`` differ from the C library by an ulp or two. The browser tests hold the
@@ -32,42 +33,58 @@ from __future__ import annotations
 
 import json
 import math
+from typing import ClassVar
 from analysis.kinematics.dh import chain_frames
+from analysis.kinematics.ops import OPS
+from analysis.kinematics.printing import Printer
 from analysis.kinematics.pulses import pulse_count
 from analysis.kinematics.solution import DEFAULT_TOL_MM, solve_body
 from analysis.kinematics.status import STATUS_TEXT
 from analysis.kinematics.trace import Graph, Node, TraceOps
 
-__all__ = ["JS_EXPR", "arm_module_js", "graph_js", "solve_graph", "frames_graph"]
+__all__ = ["JsPrinter", "arm_module_js", "frames_graph", "graph_js", "solve_graph"]
 
-JS_EXPR = {
-    "add": "({0} + {1})",
-    "sub": "({0} - {1})",
-    "mul": "({0} * {1})",
-    "div": "({0} / {1})",
-    "neg": "(-{0})",
-    "sqrt": "Math.sqrt({0})",
-    "sin": "Math.sin({0})",
-    "cos": "Math.cos({0})",
-    "atan": "Math.atan({0})",
-    "atan2": "Math.atan2({0}, {1})",
-    "acos": "Math.acos({0})",
-    "abs": "Math.abs({0})",
-    "trunc": "Math.trunc({0})",
-    "sign": "Math.sign({0})",
-    "lt": "({0} < {1})",
-    "le": "({0} <= {1})",
-    "gt": "({0} > {1})",
-    "ge": "({0} >= {1})",
-    "eq": "({0} === {1})",
-    "and": "({0} && {1})",
-    "or": "({0} || {1})",
-    "not": "(!{0})",
-    "select": "({0} ? {1} : {2})",
-    "isfinite": "Number.isFinite({0})",
-}
-"""JavaScript of every operation a recording holds (:data:`~analysis.kinematics.trace.
-PRIMITIVES` but ``round``, which the tracer expands into ``trunc``/``sign``/``select``)."""
+class JsPrinter(Printer):
+    """JavaScript expressions, one per operation of :data:`~analysis.kinematics.ops.OPS`
+    (the recorder expands the derived ``round`` into ``trunc``/``sign``/``select``)."""
+
+    target = "JavaScript"
+    known_functions: ClassVar[dict[str, str]] = {
+        "sqrt": "Math.sqrt",
+        "sin": "Math.sin",
+        "cos": "Math.cos",
+        "atan": "Math.atan",
+        "atan2": "Math.atan2",
+        "acos": "Math.acos",
+        "abs": "Math.abs",
+        "trunc": "Math.trunc",
+        "sign": "Math.sign",
+        "isfinite": "Number.isFinite",
+    }
+    infix: ClassVar[dict[str, str]] = {
+        **{op: OPS[op].symbol for op in ("add", "sub", "mul", "div", "lt", "le", "gt", "ge")},
+        "eq": "===",
+        "and": "&&",
+        "or": "||",
+    }
+
+    def _print_function(self, op, *args):
+        return f"{self.known_functions[op]}({', '.join(args)})"
+
+    def _print_infix(self, op, a, b):
+        return f"({a} {self.symbol(op)} {b})"
+
+    def _print_neg(self, a):
+        return f"(-{a})"
+
+    def _print_not(self, a):
+        return f"(!{a})"
+
+    def _print_select(self, cond, a, b):
+        return f"({cond} ? {a} : {b})"
+
+
+JS = JsPrinter()
 
 
 def _literal(v: float) -> str:
@@ -94,7 +111,7 @@ def graph_js(graph: Graph, arg: str = "a") -> str:
         if n.op == "input":
             expr = f"{arg}[{order[n.args[0]]}]"
         else:
-            expr = JS_EXPR[n.op].format(*map(ref, n.args))
+            expr = JS.doprint(n.op, *map(ref, n.args))
         name = graph.names.get(n.index)
         lines.append(f"  const v{n.index} = {expr};" + (f"  // {name}" if name else ""))
     outs = ", ".join(f"{json.dumps(k)}: {ref(v)}" for k, v in graph.outputs.items())
