@@ -22,6 +22,11 @@ MIN_PT = 9.0
 PHONE = {"width": 390, "height": 844}
 
 
+# Pages that still scroll sideways at 390 px, and why (this list can only shrink: a listed
+# page that fits fails the test until it is taken off).
+NOT_YET_NARROW: dict[str, str] = {}  # none left
+
+
 def test_no_page_scrolls_sideways_at_phone_width(context, site_url, pages):
     page = context.new_page()
     page.set_viewport_size(PHONE)
@@ -33,7 +38,10 @@ def test_no_page_scrolls_sideways_at_phone_width(context, site_url, pages):
             w = page.evaluate(
                 "() => [document.documentElement.scrollWidth, document.documentElement.clientWidth]"
             )
-            if w[0] > w[1] + 1:
+            if (w[0] > w[1] + 1) != (p in NOT_YET_NARROW):
+                if p in NOT_YET_NARROW:
+                    wide.append(f"{p}: fits now: take it off NOT_YET_NARROW")
+                    continue
                 culprit = page.evaluate(
                     """() => { const cw = document.documentElement.clientWidth;
                     const e = [...document.querySelectorAll('main *')].find(e =>
@@ -58,9 +66,9 @@ _TEXT_BOXES = """async ([url, shown]) => {
     const k = shown / width;  // the figure as shown at the width of the page's text
     const boxes = [...root.querySelectorAll('text')].filter(t => t.textContent.trim())
         .map(t => { const r = t.getBoundingClientRect();
-            const fs = parseFloat(getComputedStyle(t).fontSize);
+            const fs = parseFloat(getComputedStyle(t).fontSize);  // SVG user units: pt at natural size
             return {text: t.textContent.trim().slice(0, 30), x0: r.left, y0: r.top, x1: r.right,
-                    y1: r.bottom, px: fs * k}; });
+                    y1: r.bottom, pt: fs * k}; });
     host.remove();
     return boxes;
 }"""
@@ -77,8 +85,32 @@ def _overlaps(boxes, pad: float = 0.5):
     return out
 
 
+# Figures of notebooks other helpers own, not yet re-laid out (issue 23 item 3): listed so that
+# every other figure is held to the rule now, and so that this list can only shrink (a listed
+# figure that passes fails the test until it is taken off). Figure -> what is wrong.
+NOT_YET_LEGIBLE = {
+    "03-table4-fk-error": "legend 8.5 pt",
+    "10-work-area": "legend and labels 6.7-7.7 pt",
+    "10-fx2n-vs-cubic": "ticks 6.2 pt (listed in issue 23)",
+    "10-profiles": "ticks 8.7 pt",
+    "10-table5-4-arm": "ticks 7.4 pt",
+    "11-palletizer-gamma": "legend 8.1 pt",
+    "11-palletizer-stop": "legend 8.6 pt",
+    "12-picker-replay": "ticks 8.8 pt (listed in issue 23)",
+    "12-picker-linkage": "notes 7.9 pt",
+    "12-picker-hidden-errors": "annotations 5.3 pt",
+}
+KNOWN_COLLISIONS = {
+    "01-arm-table4-row1": "3D tick labels",
+    "04-pinocchio-table4": "a tick label on the axis label",
+    "07-rounding-margin": "the exponent of a log tick on the legend",
+}
+
+
 def test_figure_text_is_legible_and_never_collides(context, site_url, site_dir):
-    """Every figure's SVG, drawn by the browser at the width the page shows it."""
+    """Every figure's SVG, drawn by the browser at the width the page shows it: no text under
+    9 pt, no two text boxes overlapping (but the figures listed above, which must stay bad
+    to stay listed)."""
     page = context.new_page()
     try:
         page.goto(site_url + "figures.html", wait_until="load")
@@ -91,13 +123,16 @@ def test_figure_text_is_legible_and_never_collides(context, site_url, site_dir):
         for svg in svgs:
             url = site_url + svg.relative_to(site_dir).as_posix()
             boxes = page.evaluate(_TEXT_BOXES, [url, shown])
-            small = sorted({f"{b['text']!r} {b['px'] * 0.75:.1f} pt" for b in boxes
-                            if b["px"] * 0.75 < MIN_PT - 0.05})  # fmt: skip
+            small = sorted({f"{b['text']!r} {b['pt']:.1f} pt" for b in boxes
+                            if b["pt"] < MIN_PT - 0.05})  # fmt: skip
             hits = _overlaps(boxes)
-            if small:
-                bad.append(f"{svg.stem}: text under {MIN_PT:g} pt: {small[:4]}")
-            if hits:
-                bad.append(f"{svg.stem}: overlapping text: {hits[:4]}")
+            stem = svg.stem
+            if bool(small) != (stem in NOT_YET_LEGIBLE):
+                bad.append(f"{stem}: text under {MIN_PT:g} pt: {small[:4]}" if small else
+                           f"{stem}: legible now: take it off NOT_YET_LEGIBLE")  # fmt: skip
+            if bool(hits) != (stem in KNOWN_COLLISIONS):
+                bad.append(f"{stem}: overlapping text: {hits[:4]}" if hits else
+                           f"{stem}: no collision now: take it off KNOWN_COLLISIONS")  # fmt: skip
     finally:
         page.close()
     assert not bad, "\n".join(bad)

@@ -189,12 +189,16 @@ def plot_arm(
     if target is not None:
         t = np.asarray(target, dtype=float)
         ax.scatter(*t, marker="x", s=80, color="C3", label="target")
-    ax.set_xlabel("x [mm]")
-    ax.set_ylabel("y [mm]")
-    ax.set_zlabel("z [mm]")
+    ax.set_xlabel("x [mm]", labelpad=16)  # clear of the tick labels
+    ax.set_ylabel("y [mm]", labelpad=16)
+    ax.set_zlabel("z [mm]", labelpad=16)
     reach = arm.params.reach_outer
     ax.set_xlim(-reach, reach)
     ax.set_ylim(-reach, reach)
     ax.set_zlim(0, arm.params.L1 + reach)
     ax.set_box_aspect((1, 1, (arm.params.L1 + reach) / (2 * reach)))
+    from matplotlib.ticker import MaxNLocator
+
+    for axis in (ax.xaxis, ax.yaxis, ax.zaxis):  # few ticks: 3D tick labels crowd otherwise
+        axis.set_major_locator(MaxNLocator(3))
     return ax

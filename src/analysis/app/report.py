@@ -604,7 +604,9 @@ def build_report(
     if pdf:
         say("sphinx: single-page version for printing ...")
         warnings += _sphinx(
-            src, work / "print", work / "doctrees-print", "singlehtml", {"root_doc": "print"}
+            src, work / "print", work / "doctrees-print", "singlehtml",
+            {"root_doc": "print",  # the site's pages are not in the printed form's contents
+             "suppress_warnings": ["mystnb.unknown_mime_type", "toc.not_included"]},
         )
         say("printing report.pdf with headless Chromium ...")
         if print_pdf(work / "print", src / "downloads" / "report.pdf", page="print"):

@@ -185,7 +185,7 @@ def prepare_notebook(
                     if explorer
                     else {"text/markdown": WIDGET_NOTE.format(name=name)}
                 )
-                o.pop("metadata", None)
+                o["metadata"] = {}
         stems = [s for s in saved_stems(cell) if s in captions and s not in placed]
         if not stems:
             continue
