@@ -177,12 +177,18 @@ def _env(**values: str) -> Iterator[None]:
                 os.environ[k] = v
 
 
-def _fresh_dir(path: Path) -> None:
-    """Empty ``path`` for a new build; refuse a non-empty folder this module did not write."""
+def _refuse_foreign(path: Path) -> None:
+    """FileExistsError if ``path`` is a non-empty folder this module did not write."""
     if path.exists():
         ours = (path / _MARKER).exists() or (path / "index.html").exists()
         if any(path.iterdir()) and not ours:
             raise FileExistsError(f"{path} is not empty and not a report build: not deleting it")
+
+
+def _fresh_dir(path: Path) -> None:
+    """Empty ``path`` for a new build; refuse a non-empty folder this module did not write."""
+    if path.exists():
+        _refuse_foreign(path)
         shutil.rmtree(path)
     path.mkdir(parents=True)
     (path / _MARKER).write_text("written by analysis.app.report; deleted on the next build\n")
@@ -560,6 +566,8 @@ def build_report(
 
     out = Path(out).resolve()
     work = out.with_name(out.name + "-src")
+    _refuse_foreign(out)  # before anything is read or built
+    _refuse_foreign(work)
     paths = [Path(p).resolve() for p in notebooks] if notebooks else notebook_paths()
     nb_cache, front, stamp = None, None, None
     if cache:
