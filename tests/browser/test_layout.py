@@ -89,19 +89,12 @@ def _overlaps(boxes, pad: float = 0.5):
 # every other figure is held to the rule now, and so that this list can only shrink (a listed
 # figure that passes fails the test until it is taken off). Figure -> what is wrong.
 NOT_YET_LEGIBLE = {
-    "03-table4-fk-error": "legend 8.5 pt",
     "10-work-area": "legend and labels 6.7-7.7 pt",
     "10-fx2n-vs-cubic": "ticks 6.2 pt (listed in issue 23)",
-    "10-profiles": "ticks 8.7 pt",
     "10-table5-4-arm": "ticks 7.4 pt",
-    "11-palletizer-gamma": "legend 8.1 pt",
-    "11-palletizer-stop": "legend 8.6 pt",
-    "12-picker-replay": "ticks 8.8 pt (listed in issue 23)",
-    "12-picker-linkage": "notes 7.9 pt",
     "12-picker-hidden-errors": "annotations 5.3 pt",
 }
 KNOWN_COLLISIONS = {
-    "01-arm-table4-row1": "3D tick labels",
     "04-pinocchio-table4": "a tick label on the axis label",
     "07-rounding-margin": "the exponent of a log tick on the legend",
 }
