@@ -38,8 +38,13 @@ def _run(out: Path, cache: Path, notebooks: list[Path] | None = None) -> dict:
     run = subprocess.run(cmd, cwd=PROJECT, env=env, capture_output=True, text=True)
     dt = time.perf_counter() - t
     tail = (run.stdout + run.stderr).strip().splitlines()[-1:]
-    return {"seconds": round(dt, 1), "exit": run.returncode, "load_before": round(load, 2),
-            "load_after": round(os.getloadavg()[0], 2), "last_line": tail[0] if tail else ""}
+    return {
+        "seconds": round(dt, 1),
+        "exit": run.returncode,
+        "load_before": round(load, 2),
+        "load_after": round(os.getloadavg()[0], 2),
+        "last_line": tail[0] if tail else "",
+    }
 
 
 def main(argv: list[str]) -> int:

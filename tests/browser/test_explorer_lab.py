@@ -301,7 +301,7 @@ def _settled(page, expect, timeout_s: float = 20) -> dict:
     deadline = time.monotonic() + timeout_s
     while True:
         d = _drawn(page)
-        if d and _close(d["arm"], expect) or time.monotonic() > deadline:
+        if (d and _close(d["arm"], expect)) or time.monotonic() > deadline:
             return d
         page.wait_for_timeout(100)
 

@@ -66,7 +66,8 @@ _TEXT_BOXES = """async ([url, shown]) => {
     const k = shown / width;  // the figure as shown at the width of the page's text
     const boxes = [...root.querySelectorAll('text')].filter(t => t.textContent.trim())
         .map(t => { const r = t.getBoundingClientRect();
-            const fs = parseFloat(getComputedStyle(t).fontSize);  // SVG user units: pt at natural size
+            // SVG user units: pt at the figure's natural size
+            const fs = parseFloat(getComputedStyle(t).fontSize);
             return {text: t.textContent.trim().slice(0, 30), x0: r.left, y0: r.top, x1: r.right,
                     y1: r.bottom, pt: fs * k}; });
     host.remove();
@@ -152,7 +153,9 @@ def test_front_page_verdicts_citations_and_highlights(page, site_url, shots):
     rows = page.locator("section#table-4-recomputed table tbody tr")
     marked = [rows.nth(i).get_attribute("class") == "wrong-row" for i in range(rows.count())]
     assert marked == list(t4["verdict"] == "wrong")
-    colour = page.locator("td.wrong-cell").first.evaluate("e => getComputedStyle(e).backgroundColor")
+    colour = page.locator("td.wrong-cell").first.evaluate(
+        "e => getComputedStyle(e).backgroundColor"
+    )
     assert colour not in ("rgba(0, 0, 0, 0)", "transparent")
     # every finding row names its cause, and each paper's section links to its evidence
     evidence = page.locator("p:has-text('Evidence:') a").evaluate_all(
@@ -203,5 +206,5 @@ def test_printed_form_has_no_code(page, site_url):
 
 def test_site_is_at_most_25_mb(site_dir):
     size = sum(f.stat().st_size for f in Path(site_dir).rglob("*") if f.is_file())
-    big = sorted(((f.stat().st_size, f) for f in Path(site_dir).rglob("*") if f.is_file()))[-5:]
+    big = sorted((f.stat().st_size, f) for f in Path(site_dir).rglob("*") if f.is_file())[-5:]
     assert size <= MAX_SITE_MB * 1e6, (size / 1e6, [(s // 1000, str(f.name)) for s, f in big])

@@ -192,9 +192,9 @@ class Explorer(W.VBox):
         except (ValueError, TypeError, AttributeError):  # no D-H chain: the kernel draws
             kinematics = ""
         with self.view.hold_sync():
-            self.view.figure = json.loads(
-                arm_figure(arm, None, None, box=self.box, keep_arm=True).to_json()
-            )
+            title = arm.description.title
+            first = arm_figure(arm, None, None, box=self.box, keep_arm=True, title=title)
+            self.view.figure = json.loads(first.to_json())  # a title: its margin is kept
             self.view.kinematics = kinematics
             self.view.controls = {
                 "inputs": [f"IPY_MODEL_{s.model_id}" for s in sliders],

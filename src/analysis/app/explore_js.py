@@ -34,6 +34,7 @@ from __future__ import annotations
 import json
 import math
 from typing import ClassVar
+
 from analysis.kinematics.dh import chain_frames
 from analysis.kinematics.ops import OPS
 from analysis.kinematics.printing import Printer
@@ -43,6 +44,7 @@ from analysis.kinematics.status import STATUS_TEXT
 from analysis.kinematics.trace import Graph, Node, TraceOps
 
 __all__ = ["JsPrinter", "arm_module_js", "frames_graph", "graph_js", "solve_graph"]
+
 
 class JsPrinter(Printer):
     """JavaScript expressions, one per operation of :data:`~analysis.kinematics.ops.OPS`

@@ -325,17 +325,26 @@ PAPERS = {  # register name -> (seed, notebook, corrected artefacts: (page, labe
     "palletizer": (
         "001",
         "11_palletizer",
-        (("register", "the errata register"), ("notebooks/11_palletizer", "the checked IK and its PLC program")),
+        (
+            ("register", "the errata register"),
+            ("notebooks/11_palletizer", "the checked IK and its PLC program"),
+        ),
     ),
     "picker": (
         "002",
         "12_picker",
-        (("register", "the errata register"), ("notebooks/12_picker", "the product of exponentials, checked")),
+        (
+            ("register", "the errata register"),
+            ("notebooks/12_picker", "the product of exponentials, checked"),
+        ),
     ),
     "gr1": (
         "004",
         "10_gr1_arm",
-        (("register", "the errata register"), ("notebooks/10_gr1_arm", "the corrected IK and the FX2N presets")),
+        (
+            ("register", "the errata register"),
+            ("notebooks/10_gr1_arm", "the corrected IK and the FX2N presets"),
+        ),
     ),
 }
 
@@ -370,7 +379,8 @@ def paper_verdicts() -> list[PaperVerdict]:
                     "places": len(c.manifestations),
                 }
             )
-        df = pd.DataFrame(rows, columns=["rank", "severity", "cause", "what", "consequence", "places"])
+        cols = ["rank", "severity", "cause", "what", "consequence", "places"]
+        df = pd.DataFrame(rows, columns=cols)
         ranked = bool(len(df)) and bool((df["severity"] != "").all())
         if ranked:
             df = df.sort_values(["rank", "places"], ascending=[True, False], kind="stable")

@@ -19,7 +19,17 @@ import matplotlib.pyplot as plt
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["DENSE", "STYLE", "cjk_fonts", "equal_axes_3d", "figure_dir", "plot_arm", "rasterize_dense", "save_figure", "style"]
+__all__ = [
+    "DENSE",
+    "STYLE",
+    "cjk_fonts",
+    "equal_axes_3d",
+    "figure_dir",
+    "plot_arm",
+    "rasterize_dense",
+    "save_figure",
+    "style",
+]
 
 STYLE: dict[str, object] = {
     "figure.figsize": (6.4, 4.8),
@@ -147,7 +157,8 @@ def rasterize_dense(fig: mpl.figure.Figure, dense: int = DENSE) -> int:
             if isinstance(a, (QuadMesh, AxesImage)):
                 big = True
             elif isinstance(a, Collection):
-                big = len(a.get_offsets()) > dense or sum(len(p.vertices) for p in a.get_paths()) > dense
+                n_path = sum(len(p.vertices) for p in a.get_paths())
+                big = len(a.get_offsets()) > dense or n_path > dense
             elif isinstance(a, Line2D):
                 big = len(a.get_xdata()) > dense
             else:

@@ -29,7 +29,15 @@ import nbformat
 
 from analysis.paths import PROJECT
 
-__all__ = ["CACHE_DIR", "INPUTS_KEY", "SITE_ONLY", "NotebookCache", "cached_front_page", "inputs_digest", "site_digest"]
+__all__ = [
+    "CACHE_DIR",
+    "INPUTS_KEY",
+    "SITE_ONLY",
+    "NotebookCache",
+    "cached_front_page",
+    "inputs_digest",
+    "site_digest",
+]
 
 CACHE_DIR = Path(os.environ.get("ANALYSIS_REPORT_CACHE") or PROJECT / "build" / "report-cache")
 """Where the cache lives (``$ANALYSIS_REPORT_CACHE`` overrides: ``make bench`` times a cold
@@ -55,7 +63,9 @@ def inputs_digest(root: Path = PROJECT, exclude: tuple[str, ...] = SITE_ONLY) ->
     h = hashlib.sha256()
     files = [root / "requirements.lock"]
     for top in ("src/analysis", "data"):
-        files += [p for p in (root / top).rglob("*") if p.is_file() and "__pycache__" not in p.parts]
+        files += [
+            p for p in (root / top).rglob("*") if p.is_file() and "__pycache__" not in p.parts
+        ]
     skip = {root / e for e in exclude}
     for f in sorted(f for f in files if f not in skip):
         if f.exists():

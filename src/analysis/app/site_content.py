@@ -252,7 +252,8 @@ def static_explorer_html(name: str, arms: Iterable[str] | None = None) -> str:
             continue
         t = [100.0, 100.0, 600.0] if arm_name == "grabber" else default_target(arm).tolist()
         box = workspace_box(arm)
-        fig = arm_figure(arm, None, None, box=box, keep_arm=True, height=480)
+        title = arm.description.title  # the figure keeps the title's margin
+        fig = arm_figure(arm, None, None, box=box, keep_arm=True, height=480, title=title)
         figures[arm_name] = json.loads(fig.to_json()) | {"config": {"displaylogo": False,
                                                                    "responsive": True}}
         start[arm_name] = [float(np.round(v, 9)) for v in t]
@@ -381,7 +382,8 @@ def _paper_md(v: PaperVerdict, titles: dict[str, str]) -> list[str]:
         if "severity" in f:
             wrong["severity"] = f["severity"].isin(["breaks", "wrong-result"])
         out += [_html_table(f.set_index("cause"), wrong.drop(columns="cause"), "findings"), ""]
-    out += [_evidence((("register", "the register"), (f"notebooks/{v.notebook}", v.notebook[:2])), titles), ""]
+    links = (("register", "the register"), (f"notebooks/{v.notebook}", v.notebook[:2]))
+    out += [_evidence(links, titles), ""]
     return out
 
 
@@ -430,7 +432,8 @@ def front_page_md(
             out += [f'<div class="verdict-counts">{cards}</div>', ""]
         out += [s.verdict, ""]
         if s.table is not None:
-            out += [_html_table(s.table, s.wrong) if s.wrong is not None else _md_table(s.table), ""]
+            shown = _html_table(s.table, s.wrong) if s.wrong is not None else _md_table(s.table)
+            out += [shown, ""]
         for stem in s.figures:
             if stem in captions:
                 home = homes.get(stem)
