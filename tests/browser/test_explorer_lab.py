@@ -122,9 +122,7 @@ def _tail(path: Path, n: int = 2000) -> str:
 
 
 @pytest.fixture(scope="module")
-def lab_page(chromium, lab, tmp_path_factory):
-    from playwright.sync_api import sync_playwright
-
+def lab_page(pw, chromium, lab, tmp_path_factory):
     blocked: list[str] = []
 
     def route(r):
@@ -134,23 +132,22 @@ def lab_page(chromium, lab, tmp_path_factory):
             blocked.append(r.request.url)
             r.abort()
 
-    with sync_playwright() as p:
-        ctx = p.chromium.launch_persistent_context(
-            str(tmp_path_factory.mktemp("lab-profile")),
-            executable_path=chromium,
-            headless=True,
-            args=list(CHROMIUM_FLAGS),
-            viewport={"width": 1400, "height": 1000},
-        )
-        ctx.route("**/*", route)
-        page = ctx.new_page()
-        page.set_default_timeout(60_000)
-        page.blocked = blocked
-        page.console = []  # the browser's console, for failure messages
-        page.on("console", lambda m: page.console.append(f"{m.type}: {m.text}"))
-        page.on("pageerror", lambda e: page.console.append(f"pageerror: {e}"))
-        yield page
-        ctx.close()
+    ctx = pw.chromium.launch_persistent_context(
+        str(tmp_path_factory.mktemp("lab-profile")),
+        executable_path=chromium,
+        headless=True,
+        args=list(CHROMIUM_FLAGS),
+        viewport={"width": 1400, "height": 1000},
+    )
+    ctx.route("**/*", route)
+    page = ctx.new_page()
+    page.set_default_timeout(60_000)
+    page.blocked = blocked
+    page.console = []  # the browser's console, for failure messages
+    page.on("console", lambda m: page.console.append(f"{m.type}: {m.text}"))
+    page.on("pageerror", lambda e: page.console.append(f"pageerror: {e}"))
+    yield page
+    ctx.close()
 
 
 def _attached(locator, what: str, root: Path, shots: Path, timeout: float = 60_000) -> None:
