@@ -90,7 +90,10 @@ test-fast: $(STAMP) $(ST_ENGINE)
 test-browser: $(STAMP)
 	ANALYSIS_SITE_DIR=build/report MPLBACKEND=Agg $(PY) -m pytest tests/browser
 
-# Executes every notebook (progress: notebook i/n, seconds) and builds the site with Sphinx.
+# Executes every notebook (progress: notebook i/n, seconds; two at a time) and builds the site with
+# Sphinx. Cached (analysis/app/report_cache.py, jupyter-cache in build/report-cache): a notebook
+# whose code and inputs (src/analysis, data/, the lock) are unchanged is not executed again, and
+# when nothing changed since the last build the site is left as it is.
 report: $(STAMP)
 	MPLBACKEND=$(NB_BACKEND) $(PY) -m analysis report --out build/report
 
@@ -102,11 +105,17 @@ $(BENCH_STAMP): $(STAMP) requirements-bench.lock
 	$(PY) -m pip install --quiet --no-deps -r requirements-bench.lock
 	@touch $(BENCH_STAMP)
 
+# benchmarks/report_build.py: make report as a whole process, cold (empty cache), warm (nothing
+# changed) and with one notebook changed, into a scratch folder (build/bench-report.json).
 bench: $(BENCH_STAMP) $(ST_ENGINE)
 	$(PY) benchmarks/run.py --out build/bench.json
+	$(PY) benchmarks/report_build.py --out build/bench-report.json
 
+# JupyterLab on copies of the notebooks in build/lab/ (analysis/app/lab.py): the stored ones are
+# nbval's references, which Lab's autosave would change (the explorer moved, widget state);
+# --allow-root when run as root. LAB_ARGS: more options (e.g. LAB_ARGS=--no-browser).
 lab: $(STAMP)
-	MPLBACKEND=$(NB_BACKEND) $(VENV)/bin/jupyter lab notebooks
+	MPLBACKEND=$(NB_BACKEND) $(PY) -m analysis.app.lab $(LAB_ARGS)
 
 # Re-executes notebooks in place (all, or NB="notebooks/03_table4.ipynb ...") and stores their
 # outputs, the reference nbval compares against: commit them with the change that moved them.

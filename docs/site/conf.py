@@ -35,7 +35,7 @@ nb_merge_streams = True
 nb_ipywidgets_js: dict = {}  # the default loads require.js and the widget manager from a CDN
 nb_output_stderr = "show"
 
-exclude_patterns = ["downloads/**", "figures/**", "**.ipynb_checkpoints"]
+exclude_patterns = ["downloads/**", "figures/**", "**.ipynb_checkpoints"]  # report.py adds print.md for the site
 suppress_warnings = ["mystnb.unknown_mime_type"]
 numfig = True
 numfig_format = {"figure": "Figure %s"}
@@ -44,7 +44,15 @@ numfig_format = {"figure": "Figure %s"}
 _MATHJAX = Path(str(distribution("sphinx-mathjax-offline").locate_file("sphinx-mathjax-offline")))
 # --- plotly.js, served locally (the explorer's 3D view) ------------------------------------
 _PLOTLY_JS = Path(str(distribution("plotly").locate_file("plotly/package_data/plotly.min.js")))
-html_static_path = ["_static", str(_MATHJAX / "static"), str(_PLOTLY_JS)]  # -> _static/...
+# --- the explorer's JavaScript (3D view, static explorer), shared with the notebook widget ---
+_APP_JS = Path(__file__).resolve().parents[2] / "src" / "analysis" / "app" / "js"
+html_static_path = [
+    "_static",
+    str(_MATHJAX / "static"),
+    str(_PLOTLY_JS),
+    str(_APP_JS / "arm3d_view.js"),
+    str(_APP_JS / "static_explorer.js"),
+]  # -> _static/...
 mathjax_path = "mathjax/tex-chtml.js"
 
 
@@ -70,8 +78,12 @@ html_theme_options = {
 def _plotly_where_needed(app, pagename, templatename, context, doctree) -> None:
     """Load plotly.min.js (synchronously, before the figures' inline scripts run) only on
     pages with a plotly figure: it is 5 MB."""
-    if "plotly-graph-div" in context.get("body", ""):
+    body = context.get("body", "")
+    if "plotly-graph-div" in body or "static-explorer" in body:
         app.add_js_file("plotly.min.js", priority=100)
+    if "static-explorer" in body:
+        app.add_js_file("arm3d_view.js", priority=101)
+        app.add_js_file("static_explorer.js", priority=900, defer="defer")
 
 
 def setup(app) -> None:

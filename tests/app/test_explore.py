@@ -221,7 +221,7 @@ def test_docstring_examples():
 # --- the widget explorer -----------------------------------------------------------------
 def _tip(ex):
     """The arm trace's last point in the 3D view (the gripper), or None (no arm drawn)."""
-    arms = [t for t in ex.figure.data if t.name == "arm"]
+    arms = [t for t in ex.figure.data if t.name == "arm" and t.x]
     return None if not arms else [arms[0].x[-1], arms[0].y[-1], arms[0].z[-1]]
 
 
@@ -321,29 +321,46 @@ def test_explorer_switches_arms(arm):
     assert len(ex.joint_sliders) == 3 and ex.branch.value == "front-up"
 
 
-def test_explorer_display_shows_widget_then_3d_view(arm, monkeypatch):
-    shown = []
+def test_explorer_display_is_one_widget_with_the_3d_view_inside(arm):
+    """One widget output (the 3D view is its last child, a widget that redraws itself), a
+    plain-text line for readers without a kernel, and a pose sent to the view at every change
+    for the controls' values it was computed for."""
+    from analysis.app.arm3d import Arm3DWidget
 
-    def fake_display(obj, raw=False, display_id=None):
-        shown.append((obj, display_id))
-
-        class Handle:
-            def update(self, obj, raw=False):
-                shown.append((obj, "update"))
-
-        return Handle()
-
-    import IPython.display
-
-    monkeypatch.setattr(IPython.display, "display", fake_display)
     ex = build_explorer(arm, [100, 100, 600])
-    ex._ipython_display_()
-    (widget, _), (view, view_id) = shown
-    assert "application/vnd.jupyter.widget-view+json" in widget
-    assert widget["text/plain"].startswith("Explorer of the 3R material-grabbing robot")
-    assert view is ex.bundle and view_id is True
+    data = ex._repr_mimebundle_()
+    assert "application/vnd.jupyter.widget-view+json" in data
+    assert data["text/plain"].startswith("Explorer of the 3R material-grabbing robot")
+    assert isinstance(ex.children[-1], Arm3DWidget) and ex.children[-1] is ex.view
+    ids = ex.view.controls
+    assert ids["inputs"] == [f"IPY_MODEL_{s.model_id}" for s in ex.target_sliders]
+    assert ids["branch"] == f"IPY_MODEL_{ex.branch.model_id}" and ids["units"] == ["mm"] * 3
+    assert "arm.solve = function" in ex.view.kinematics  # printed, for the browser
+    assert [t["name"] for t in ex.view.figure["data"]] == ["base axis", "arm", "target"]
     ex.target_sliders[0].value = 150.0
-    assert shown[-1] == (ex.bundle, "update") and _tip(ex)[0] == pytest.approx(150.0)
+    pose = ex.view.pose
+    assert pose["key"] == ex.pose_key() and pose["key"][2] == 150.0
+    q = np.radians(ex.report.angles_deg())
+    np.testing.assert_allclose(pose["frames"], arm.frames(q), atol=1e-6)
+    assert pose["target"] == [150.0, 100.0, 600.0] and "front-up" in pose["title"]
+    assert _tip(ex)[0] == pytest.approx(150.0)
+    ex.target_sliders[1].value = 500.0  # out of reach: no arm, the target still drawn
+    assert ex.view.pose["frames"] is None and "no solution" in ex.view.pose["title"]
+
+
+def test_the_3d_view_sends_plotly_js_on_request_and_never_stores_it(arm):
+    from analysis.app.arm3d import PLOTLY_JS
+
+    ex = build_explorer(arm, [100, 100, 600])
+    sent = []
+    ex.view.send = lambda content, buffers=None: sent.append((content, buffers))
+    ex.view._on_message(ex.view, {"type": "plotly?"}, [])
+    ((content, buffers),) = sent
+    assert content == {"type": "plotly"} and buffers[0] == PLOTLY_JS.read_bytes()
+    ex.view._on_message(ex.view, {"type": "other"}, [])
+    assert len(sent) == 1
+    state = json.dumps(ex.view.get_state())
+    assert len(state) < 100_000 and "Plotly, Inc." not in state  # a small widget state
 
 
 def test_explorer_takes_a_pose_arm():

@@ -92,9 +92,16 @@ def blocked() -> list[str]:
 
 
 @pytest.fixture(scope="session")
-def context(chromium, site_url, blocked, tmp_path_factory):
+def pw(chromium):
+    """One Playwright driver for the session (a second one in the same process fails)."""
     from playwright.sync_api import sync_playwright
 
+    with sync_playwright() as p:
+        yield p
+
+
+@pytest.fixture(scope="session")
+def context(pw, chromium, site_url, blocked, tmp_path_factory):
     profile = tmp_path_factory.mktemp("chromium-profile")  # a fresh --user-data-dir
 
     def route(r):
@@ -105,18 +112,17 @@ def context(chromium, site_url, blocked, tmp_path_factory):
             blocked.append(r.request.url)
             r.abort()
 
-    with sync_playwright() as p:
-        ctx = p.chromium.launch_persistent_context(
-            str(profile),
-            executable_path=chromium,
-            headless=True,
-            args=list(CHROMIUM_FLAGS),
-            viewport={"width": 1280, "height": 900},
-            accept_downloads=True,
-        )
-        ctx.route("**/*", route)
-        yield ctx
-        ctx.close()
+    ctx = pw.chromium.launch_persistent_context(
+        str(profile),
+        executable_path=chromium,
+        headless=True,
+        args=list(CHROMIUM_FLAGS),
+        viewport={"width": 1280, "height": 900},
+        accept_downloads=True,
+    )
+    ctx.route("**/*", route)
+    yield ctx
+    ctx.close()
 
 
 @pytest.fixture

@@ -19,7 +19,20 @@ Why plotly (``plotly`` on PyPI, pinned in ``requirements.lock``)
   static page only gets from a CDN; plotly's ``FigureWidget`` needs ``anywidget`` and puts
   its 5 MB script into the notebook's stored widget state.
 
-Everything here is a pure function of the arm and the joint angles: :func:`arm_figure`
+The explorer's view in JupyterLab and Notebook 7 is :class:`Arm3DWidget`, an ``anywidget``
+of this package (``js/arm3d_view.js`` and ``js/arm3d_widget.js``, a few kB): it draws the
+figure with plotly.js and redraws the arm in place on every change of the explorer's
+controls, from the arm's kinematics printed as JavaScript (:mod:`analysis.app.explore_js`),
+so a slider change reaches the screen without a round trip to the kernel; the kernel's own
+pose (:meth:`Arm.frames`) follows and is drawn for the controls' current values. Why not
+plotly's ``FigureWidget`` (an anywidget too, in plotly 6+): its widget state carries the
+whole plotly.js bundle (4.8 MB) as the module's source, which nbclient and JupyterLab store in
+the notebook's metadata; here the kernel sends plotly.js once per page as a binary message,
+which is never stored. Why not ``display(..., display_id=True)`` and ``update()`` (the
+previous explorer): JupyterLab does not render display updates sent from widget callbacks
+(ipywidgets #1844), so the view stayed at its first pose.
+
+Everything else here is a pure function of the arm and the joint angles: :func:`arm_figure`
 builds a ``plotly.graph_objects.Figure`` (coordinates rounded to 1 µm, so stored notebook
 outputs that nbval compares do not depend on round-off), :func:`figure_bundle` the MIME
 bundle a notebook displays, with a deterministic ``div`` id (no random ids in stored
@@ -32,12 +45,20 @@ from __future__ import annotations
 import hashlib
 import json
 from dataclasses import dataclass
+from functools import cache
+from pathlib import Path
 
 import numpy as np
 import numpy.typing as npt
 import plotly.graph_objects as go
 
-__all__ = ["Box", "arm_figure", "figure_bundle", "workspace_box"]
+try:  # the widget needs anywidget (pinned in requirements.lock); the figures do not
+    import anywidget
+    import traitlets
+except ImportError:  # pragma: no cover
+    anywidget = None
+
+__all__ = ["Arm3DWidget", "Box", "arm_figure", "figure_bundle", "workspace_box"]
 
 PLOTLY_MIME = "application/vnd.plotly.v1+json"
 ROUND_MM = 3
@@ -107,9 +128,9 @@ def _round(a: npt.ArrayLike) -> list:
     return (np.round(np.asarray(a, dtype=float), ROUND_MM) + 0.0).tolist()
 
 
-def _arm_traces(arm, q, target, box: Box) -> list[go.Scatter3d]:
+def _arm_traces(arm, q, target, box: Box, keep_arm: bool = False) -> list[go.Scatter3d]:
     """The base axis (dashed), the arm through its frame origins at ``q`` [rad] (none if
-    ``q`` is None) and the target's cross (x, y, z [mm])."""
+    ``q`` is None, or an empty one with ``keep_arm``) and the target's cross (x, y, z [mm])."""
     traces = [
         go.Scatter3d(
             x=[0.0, 0.0],
@@ -121,9 +142,9 @@ def _arm_traces(arm, q, target, box: Box) -> list[go.Scatter3d]:
             hoverinfo="skip",
         )
     ]
-    if q is not None:
-        pts = arm.frames(np.asarray(q, dtype=float))
-        keep = np.r_[True, np.any(np.abs(np.diff(pts, axis=0)) > 1e-9, axis=1)]
+    if q is not None or keep_arm:
+        pts = arm.frames(np.asarray(q, dtype=float)) if q is not None else np.zeros((0, 3))
+        keep = np.r_[True, np.any(np.abs(np.diff(pts, axis=0)) > 1e-9, axis=1)][: len(pts)]
         pts = pts[keep]  # frames that coincide (a zero-length link) drawn once
         x, y, z = (_round(pts[:, k]) for k in range(3))
         traces.append(
@@ -138,15 +159,16 @@ def _arm_traces(arm, q, target, box: Box) -> list[go.Scatter3d]:
                 hovertemplate="(%{x:.1f}, %{y:.1f}, %{z:.1f}) mm<extra></extra>",
             )
         )
-    if target is not None:
-        t = np.asarray(target, dtype=float)[:3]
+    if target is not None or keep_arm:
+        t = np.asarray(target, dtype=float)[:3] if target is not None else np.zeros(0)
         traces.append(
             go.Scatter3d(
                 x=_round(t[:1]),
                 y=_round(t[1:2]),
                 z=_round(t[2:3]),
                 mode="markers",
-                marker={"symbol": "x", "size": 7, "color": "#d62728"},
+                # "cross", not "x": WebGL draws the "x" symbol as an empty square
+                marker={"symbol": "cross", "size": 7, "color": "#d62728"},
                 name="target",
                 hovertemplate="target (%{x:.1f}, %{y:.1f}, %{z:.1f}) mm<extra></extra>",
             )
@@ -159,7 +181,9 @@ def _layout(arm, title: str, box: Box, height: int) -> dict:
     arm's name (a redraw of the same arm keeps the user's camera)."""
     span = box.span
     ratio = span / span.max()
-    axis = {"showbackground": True, "backgroundcolor": "#f4f6f8", "gridcolor": "#d0d4d8"}
+    # no filled back planes: in a browser without a GPU (headless Chromium renders WebGL in
+    # software) they cost half the time of every redraw; the grid lines stay
+    axis = {"showbackground": False, "gridcolor": "#c8ccd0"}
     scene = {
         f"{k}axis": axis | {"title": {"text": f"{k} [mm]"}, "range": [box.lo[i], box.hi[i]]}
         for i, k in enumerate("xyz")
@@ -194,6 +218,7 @@ def arm_figure(
     title: str = "",
     box: Box | None = None,
     height: int = 520,
+    keep_arm: bool = False,
 ) -> go.Figure:
     """The arm at joint angles ``q`` [rad] as a rotatable 3D stick figure [mm].
 
@@ -213,6 +238,8 @@ def arm_figure(
     title : str
     box : Box, optional
         Axis ranges [mm]; default :func:`workspace_box` of the arm.
+    keep_arm : bool
+        Draw the arm and target traces even when empty (the widget redraws them in place).
 
     Examples
     --------
@@ -225,7 +252,8 @@ def arm_figure(
     [100, 100, 600]
     """
     box = box or workspace_box(arm)
-    return go.Figure(data=_arm_traces(arm, q, target, box), layout=_layout(arm, title, box, height))
+    traces = _arm_traces(arm, q, target, box, keep_arm)
+    return go.Figure(data=traces, layout=_layout(arm, title, box, height))
 
 
 def figure_bundle(fig: go.Figure, key: str, text: str) -> dict[str, object]:
@@ -254,3 +282,56 @@ def figure_bundle(fig: go.Figure, key: str, text: str) -> dict[str, object]:
         "text/html": html,
         "text/plain": text,
     }
+
+
+# --------------------------------------------------------------------------------------------
+# the widget
+# --------------------------------------------------------------------------------------------
+JS_DIR = Path(__file__).with_name("js")
+PLOTLY_JS = Path(go.__file__).resolve().parents[1] / "package_data" / "plotly.min.js"
+"""plotly.js of the pinned plotly wheel (what the report site serves from ``_static``)."""
+
+
+@cache
+def _plotly_js() -> bytes:
+    return PLOTLY_JS.read_bytes()
+
+
+def widget_esm() -> str:
+    """The widget's JavaScript module: the shared view (``js/arm3d_view.js``, also used by
+    the static site) followed by the widget's glue (``js/arm3d_widget.js``)."""
+    return (JS_DIR / "arm3d_view.js").read_text() + "\n" + (JS_DIR / "arm3d_widget.js").read_text()
+
+
+if anywidget is not None:
+
+    class Arm3DWidget(anywidget.AnyWidget):
+        """The explorer's 3D view as a widget: it redraws on every change, in JupyterLab and
+        Notebook 7 (see the module docstring).
+
+        Traits (synced with the browser): ``figure`` (the plotly figure of
+        :func:`arm_figure`, as JSON), ``kinematics`` (the arm printed as JavaScript by
+        :func:`analysis.app.explore_js.arm_module_js`, or "" to draw only what the kernel
+        sends), ``controls`` (the model ids of the explorer's sliders, branch picker, FK
+        toggle and base-axis box, which the browser listens to) and ``pose`` (the kernel's
+        pose: ``key`` the controls' values it was computed for, ``frames`` [[x, y, z] mm] or
+        None, ``target``, ``title``).
+        """
+
+        _esm = traitlets.Unicode(widget_esm()).tag(sync=True)
+        figure = traitlets.Dict().tag(sync=True)
+        kinematics = traitlets.Unicode("").tag(sync=True)
+        controls = traitlets.Dict().tag(sync=True)
+        pose = traitlets.Dict().tag(sync=True)
+
+        def __init__(self, **kwargs) -> None:
+            super().__init__(**kwargs)
+            self.on_msg(self._on_message)
+
+        def _on_message(self, _widget, content, _buffers) -> None:
+            # the browser asks for plotly.js once per page: sent, never stored in the state
+            if isinstance(content, dict) and content.get("type") == "plotly?":
+                self.send({"type": "plotly"}, buffers=[_plotly_js()])
+
+else:  # pragma: no cover
+    Arm3DWidget = None

@@ -17,9 +17,11 @@ The plain logic, tested without a kernel:
 :func:`available_arms`), one slider per input of the arm's closed form (``Arm.inputs``:
 ``px, py, pz`` in mm; any other input, e.g. an orientation angle, in degrees), a branch
 picker (``Arm.branches``, the paper's first), an FK mode with one slider per joint, and a
-check box to choose theta1 on the base axis. The 3D view is a plotly figure
-(:mod:`analysis.app.arm3d`, which says why plotly) displayed under the controls with a
-display id and updated in place, so it keeps the user's rotation while the sliders move.
+check box to choose theta1 on the base axis. The 3D view is
+:class:`~analysis.app.arm3d.Arm3DWidget`, the last child of the box: it listens to these
+controls in the browser and redraws the arm from its kinematics printed as JavaScript
+(:mod:`analysis.app.explore_js`) at every change, and draws the kernel's pose
+(:meth:`Arm.frames`) when it arrives; a redraw keeps the user's rotation.
 Nothing here is specific to one arm.
 
 The plain logic lives in :mod:`analysis.app.explore_logic` and is importable from here.
@@ -28,6 +30,7 @@ The plain logic lives in :mod:`analysis.app.explore_logic` and is importable fro
 from __future__ import annotations
 
 import html
+import json
 import math
 from typing import ClassVar
 
@@ -35,7 +38,8 @@ import ipywidgets as W
 import numpy as np
 import numpy.typing as npt
 
-from analysis.app.arm3d import arm_figure, figure_bundle, workspace_box
+from analysis.app.arm3d import Arm3DWidget, arm_figure, figure_bundle, workspace_box
+from analysis.app.explore_js import arm_module_js
 
 # the ``X as X`` imports: the logic's other public names, importable from here as before
 from analysis.app.explore_logic import MANIPULABILITY_UNIT as MANIPULABILITY_UNIT
@@ -76,16 +80,15 @@ def build_explorer(arm: Arm | str | None = None, target: npt.ArrayLike | None = 
 
 
 class Explorer(W.VBox):
-    """The explorer's controls (an ``ipywidgets.VBox``) and its 3D view.
+    """The explorer's controls and its 3D view (an ``ipywidgets.VBox``).
 
     Attributes: ``arm_picker`` (Dropdown), ``branch`` (ToggleButtons), ``fk_mode``
     (ToggleButton), ``on_axis`` (Checkbox "allow θ1 on the base axis") and ``on_axis_deg``
     (its theta1 slider), ``target_sliders`` (one per arm input) and ``joint_sliders`` (one
-    per joint), ``message`` and ``table`` (HTML); the last :class:`PoseReport` as
-    ``report``, the plotly figure as ``figure`` and its MIME bundle as ``bundle``.
-
-    Displayed (``_ipython_display_``), it shows the controls and then the 3D view with a
-    display id, which every later change updates in place.
+    per joint), ``message`` and ``table`` (HTML), ``view`` (the 3D view,
+    :class:`~analysis.app.arm3d.Arm3DWidget`); the last :class:`PoseReport` as ``report``,
+    and the pose on screen as a plotly figure, ``figure``, with its MIME bundle, ``bundle``
+    (built on request).
     """
 
     SLIDER_LAYOUT: ClassVar[dict] = {"width": "640px"}  # 0.1 mm steps stay precise to drag
@@ -96,7 +99,9 @@ class Explorer(W.VBox):
         self.arms, self.skipped = available_arms()
         if arm.name not in self.arms:  # an arm built from a changed description
             self.arms = {arm.name: arm.description.title} | self.arms
-        self._syncing, self._view = False, None
+        self._syncing = False
+        self._pose: tuple = (None, None, "")  # q [rad] or None, target, title: the drawn pose
+        self.view = Arm3DWidget(layout={"width": "100%"})
         self.arm_picker = W.Dropdown(
             options=[(f"{title} ({name})", name) for name, title in self.arms.items()],
             value=arm.name,
@@ -133,6 +138,7 @@ class Explorer(W.VBox):
                 self.on_axis_deg,
                 self.message,
                 self.table,
+                self.view,
             ]
         )
         self.arm_picker.observe(self._on_arm, names="value")
@@ -183,6 +189,29 @@ class Explorer(W.VBox):
                 self._joints_from_report(pose_report(arm, self._target()))
         finally:
             self._syncing = False
+        try:
+            kinematics = arm_module_js(arm)
+        except (ValueError, TypeError, AttributeError):  # no D-H chain: the kernel draws
+            kinematics = ""
+        with self.view.hold_sync():
+            title = arm.description.title
+            first = arm_figure(arm, None, None, box=self.box, keep_arm=True, title=title)
+            self.view.figure = json.loads(first.to_json())  # a title: its margin is kept
+            self.view.kinematics = kinematics
+            self.view.controls = {
+                "inputs": [f"IPY_MODEL_{s.model_id}" for s in sliders],
+                "units": list(arm.input_units),
+                "joints": [f"IPY_MODEL_{s.model_id}" for s in joints],
+                **{
+                    k: f"IPY_MODEL_{w.model_id}"
+                    for k, w in (
+                        ("branch", self.branch),
+                        ("fk", self.fk_mode),
+                        ("on_axis", self.on_axis),
+                        ("on_axis_deg", self.on_axis_deg),
+                    )
+                },
+            }
         self.refresh()
 
     # --- events --------------------------------------------------------------------------
@@ -223,14 +252,66 @@ class Explorer(W.VBox):
         self.refresh()
 
     # --- the view ------------------------------------------------------------------------
+    def pose_key(self) -> list:
+        """The controls' values a pose is drawn for: FK mode, branch, every target and joint
+        slider, the base-axis box and its angle (the order ``js/arm3d_widget.js`` reads)."""
+        return [
+            self.fk_mode.value,
+            self.branch.value,
+            *(s.value for s in self.target_sliders),
+            *(s.value for s in self.joint_sliders),
+            self.on_axis.value,
+            self.on_axis_deg.value,
+        ]
+
+    def _draw(self, q, target, title: str) -> None:
+        """Send the pose to the 3D view: the frame origins at ``q`` [rad] (None: no arm)."""
+        self._pose = (q, target, title)
+        frames = None if q is None else self.arm.frames(q)
+        t = None if target is None else np.asarray(target, dtype=float)[:3]
+        self.view.pose = {
+            "key": self.pose_key(),
+            "frames": None if frames is None else np.round(frames, 6).tolist(),
+            "target": None if t is None else np.round(t, 6).tolist(),
+            "title": title,
+        }
+
+    @property
+    def figure(self):
+        """The pose on screen as a plotly figure (:func:`~analysis.app.arm3d.arm_figure`)."""
+        q, target, title = self._pose
+        return arm_figure(self.arm, q, target, title=title, box=self.box)
+
+    @property
+    def bundle(self) -> dict:
+        """:attr:`figure` as a MIME bundle (:func:`~analysis.app.arm3d.figure_bundle`)."""
+        title = self._pose[2]
+        return figure_bundle(self.figure, f"explorer-{self.arm.name}", f"3D view: {title}")
+
+    def _title(self, q) -> str:
+        title = f"{self.arm.description.title} · " + (
+            "FK" if self.fk_mode.value else self.branch.value
+        )
+        if q is None:
+            return title + " · no solution"
+        arm = self.arm
+        if set(arm.joint_user_units) == {"deg"}:
+            return title + " · θ = (" + ", ".join(num(v, 2) for v in np.degrees(q)) + ")°"
+        return title + " · q = (" + ", ".join(
+            f"{num(v, 2)} {'°' if u == 'deg' else u}"
+            for v, u in zip(arm.joints_to_user(q), arm.joint_user_units, strict=True)
+        ) + ")"  # fmt: skip
+
     def refresh(self) -> None:
-        """Recompute the report from the controls; redraw message, table and 3D view."""
+        """Recompute from the controls: the 3D view's pose first (what the eye follows),
+        then the report, message and table."""
         arm = self.arm
         axis = self.on_axis.value and not self.fk_mode.value
         self.on_axis_deg.layout.display = None if axis else "none"
         if self.fk_mode.value:
             q = self.arm.joints_from_user([s.value for s in self.joint_sliders])
             point = arm.fk(q)
+            self._draw(q, point, self._title(q))
             where = ", ".join(num(v, 2) for v in point)
             head = f"FK: gripper at ({where}) mm. "
             target = target_from_joints(arm, q)
@@ -241,8 +322,10 @@ class Explorer(W.VBox):
         else:
             target = self._target()
             t1 = math.radians(self.on_axis_deg.value) if axis else None
+            sol = arm.solve(target, (self.branch.value,), theta1_on_axis=t1)
+            q = sol.theta[0] if sol.ok[0] else None
+            self._draw(q, target, self._title(q))
             rep = pose_report(arm, target, self.branch.value, theta1_on_axis=t1)
-            q = arm.joints_from_user(rep.angles_deg()) if rep.branch_ok else None
             head = ""
         self.report = rep
         if rep is None:
@@ -255,31 +338,14 @@ class Explorer(W.VBox):
             f"<b>{html.escape(text)}</b></div>"
         )
         self.table.value = rep.to_html() if rep is not None else ""
-        title = f"{arm.description.title} · " + ("FK" if self.fk_mode.value else self.branch.value)
-        if q is not None:
-            if set(arm.joint_user_units) == {"deg"}:
-                title += " · θ = (" + ", ".join(num(v, 2) for v in np.degrees(q)) + ")°"
-            else:
-                title += " · q = (" + ", ".join(
-                    f"{num(v, 2)} {'°' if u == 'deg' else u}"
-                    for v, u in zip(arm.joints_to_user(q), arm.joint_user_units, strict=True)
-                ) + ")"  # fmt: skip
-        else:
-            title += " · no solution"
-        self.figure = arm_figure(arm, q, target, title=title, box=self.box)
-        self.bundle = figure_bundle(self.figure, f"explorer-{arm.name}", f"3D view: {title}")
-        if self._view is not None:
-            self._view.update(self.bundle, raw=True)
 
-    def _ipython_display_(self) -> None:
-        """The controls (a widget), then the 3D view with a display id (updated in place)."""
-        from IPython.display import display
-
-        data = super()._repr_mimebundle_()
+    def _repr_mimebundle_(self, **kwargs):
+        """The widget, with a plain-text line for readers without a kernel (the stored
+        notebook, nbval, the report site)."""
+        data = super()._repr_mimebundle_(**kwargs)
         data = dict(data[0] if isinstance(data, tuple) else data)
         data["text/plain"] = (
             f"Explorer of the {self.arm.description.title} ({self.arm.name}): sliders, branch "
-            "picker and FK mode need a running kernel (make lab)."
+            "picker, FK mode and a 3D view that need a running kernel (make lab)."
         )
-        display(data, raw=True)
-        self._view = display(self.bundle, raw=True, display_id=True)
+        return data

@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 
 import pandas as pd
 
-__all__ = ["Verdict", "front_page_data"]
+__all__ = ["SEVERITIES", "PaperVerdict", "Verdict", "front_page_data", "paper_verdicts"]
 
 
 @dataclass(frozen=True)
@@ -48,6 +48,35 @@ class Verdict:
     counts: tuple[tuple[str, int], ...] = ()
     table: pd.DataFrame | None = None
     figures: tuple[str, ...] = field(default_factory=tuple)
+    headline: tuple[str, ...] = ()
+    """The strongest computed findings of the section (MyST), shown first on the page."""
+    wrong: pd.DataFrame | None = None
+    """Same shape as ``table``: True where a cell is wrong (highlighted)."""
+
+
+SEVERITIES = ("breaks", "wrong-result", "misleading", "cosmetic")
+"""The register's severity of a cause (interfaces item 2), worst first."""
+
+
+@dataclass(frozen=True)
+class PaperVerdict:
+    """What is wrong with one paper, how bad, and what to take away (the register's words).
+
+    ``verdict`` and ``take_away`` come from the register's ``[summary]``, ``findings`` from
+    its causes (``severity``, ``consequence``); all three are None where the register does
+    not carry them yet (the page then says so: nothing here writes a verdict)."""
+
+    paper: str
+    seed: str
+    title: str
+    notebook: str
+    verdict: str | None
+    take_away: str | None
+    findings: pd.DataFrame
+    ranked: bool
+    """True when ``findings`` is ranked by the register's severities."""
+    artefacts: tuple[tuple[str, str], ...] = ()
+    """The corrected artefacts to take: (page, label) links."""
 
 
 _LABEL = {  # status -> (singular, plural) for the count cards
@@ -118,7 +147,32 @@ def _table4_verdict() -> Verdict:
         evidence=(("notebooks/03_table4", "03"),),
         table=t4,
         figures=("03-table4-fk-error",),
+        headline=_table4_headline(t4),
+        wrong=_table4_wrong(t4),
     )
+
+
+def _table4_headline(t4: pd.DataFrame) -> tuple[str, ...]:
+    err = "FK error of printed (mm)"
+    bad = t4[(t4["verdict"] == "wrong") & (pd.to_numeric(t4[err], errors="coerce") > 1.0)]
+    if bad.empty:
+        return ()
+    e = pd.to_numeric(bad[err])
+    rows = ", ".join(str(r) for r in bad.index)
+    return (
+        f"**Table 4's printed angles put the gripper {e.min():.0f}-{e.max():.0f} mm off the "
+        f"target in rows {rows}** (θ2 180° off: a single-argument arctangent).",
+    )
+
+
+def _table4_wrong(t4: pd.DataFrame) -> pd.DataFrame:
+    """Table 4's wrong cells: the printed angles and the FK error of a wrong row."""
+    mask = pd.DataFrame(False, index=t4.index, columns=t4.columns)
+    wrong = t4["verdict"] == "wrong"
+    for col in ("printed θ1, θ2, θ3 (deg)", "FK error of printed (mm)", "verdict"):
+        if col in mask:
+            mask.loc[wrong, col] = True
+    return mask
 
 
 def _plc_verdict(arm) -> Verdict:
@@ -177,6 +231,10 @@ def _plc_verdict(arm) -> Verdict:
         evidence=(("notebooks/07_plc_stl", "07"), ("downloads", "the generated programs")),
         table=plc,
         figures=("07-rounding-margin",),
+        headline=(
+            f"**The paper's own PLC program (Figures 3-4), executed, commands c1 = {paper_c1} "
+            f"pulses for Table 4 row 1 where {row1_c1} are needed**: it divides radians by 360.",
+        ),
     )
 
 
@@ -255,15 +313,105 @@ def _companions_verdict() -> Verdict:
     )
 
 
-def front_page_data() -> list[Verdict]:
-    """The front page's sections: seed 000's audit counts, Table 4, the PLC proof and
-    quantization, then the companion papers."""
+PAPERS = {  # register name -> (seed, notebook, corrected artefacts: (page, label))
+    "grabber": (
+        "000",
+        "02_inverse_kinematics",
+        (
+            ("downloads", "the corrected PLC programs (S7-200 STL, S7-300 AWL) with MAP.json"),
+            ("register", "the errata register"),
+            ("notebooks/02_inverse_kinematics", "the corrected closed form (eqs. 6-19)"),
+        ),
+    ),
+    "palletizer": (
+        "001",
+        "11_palletizer",
+        (
+            ("register", "the errata register"),
+            ("notebooks/11_palletizer", "the checked IK and its PLC program"),
+        ),
+    ),
+    "picker": (
+        "002",
+        "12_picker",
+        (
+            ("register", "the errata register"),
+            ("notebooks/12_picker", "the product of exponentials, checked"),
+        ),
+    ),
+    "gr1": (
+        "004",
+        "10_gr1_arm",
+        (
+            ("register", "the errata register"),
+            ("notebooks/10_gr1_arm", "the corrected IK and the FX2N presets"),
+        ),
+    ),
+}
+
+
+def paper_verdicts() -> list[PaperVerdict]:
+    """Per paper: the register's verdict and take-away, and its causes ranked by consequence.
+
+    Read through :func:`analysis.audit.register.register` (interfaces item 2): a cause's
+    ``severity`` and ``consequence``, the register's ``summary`` (``verdict``,
+    ``take_away``). Where the register has no severities yet, the causes keep the register's
+    order and ``ranked`` is False."""
+    from analysis.audit import register
+    from analysis.audit.schema import COUNTED
+
+    out = []
+    for name, (seed, nb, artefacts) in PAPERS.items():
+        reg = register.register(name)
+        summary = getattr(reg, "summary", None) or {}
+        if not isinstance(summary, dict):
+            summary = {k: getattr(summary, k, None) for k in ("verdict", "take_away")}
+        counted = [c for c in reg.causes if c.status in COUNTED]
+        rows = []
+        for c in counted:
+            sev = getattr(c, "severity", None)
+            rows.append(
+                {
+                    "rank": SEVERITIES.index(sev) if sev in SEVERITIES else len(SEVERITIES),
+                    "severity": sev or "",
+                    "cause": c.id,
+                    "what": c.title,
+                    "consequence": getattr(c, "consequence", None) or "",
+                    "places": len(c.manifestations),
+                }
+            )
+        cols = ["rank", "severity", "cause", "what", "consequence", "places"]
+        df = pd.DataFrame(rows, columns=cols)
+        ranked = bool(len(df)) and bool((df["severity"] != "").all())
+        if ranked:
+            df = df.sort_values(["rank", "places"], ascending=[True, False], kind="stable")
+        out.append(
+            PaperVerdict(
+                paper=name,
+                seed=seed,
+                title=reg.title,
+                notebook=nb,
+                verdict=summary.get("verdict"),
+                take_away=summary.get("take_away"),
+                findings=df.drop(columns="rank").reset_index(drop=True),
+                ranked=ranked,
+                artefacts=artefacts,
+            )
+        )
+    return out
+
+
+def front_page_data() -> list[Verdict | PaperVerdict]:
+    """The front page's sections: per paper its verdict and ranked findings
+    (:class:`PaperVerdict`), then seed 000's audit counts, Table 4, the PLC proof and
+    quantization, then the companion papers' counts."""
     from analysis.kinematics.arm import paper_arm
 
     audit = _audit_verdict()
     t4_verdict = _table4_verdict()
     arm = paper_arm()
     return [
+        *paper_verdicts(),
         audit,
         t4_verdict,
         _plc_verdict(arm),

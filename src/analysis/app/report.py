@@ -8,7 +8,8 @@
     build/report/figures.html          every saved figure with its caption
     build/report/downloads.html        PLC programs, memory maps, CSVs, executed notebooks, PDF
     build/report/search.html           full-text search (Sphinx's index, no server needed)
-    build/report/report.pdf            the whole report, printed by Chromium (if installed)
+    build/report/_downloads/.../report.pdf  the whole report without code, printed by Chromium
+                                       (if installed; stored once, linked from downloads.html)
 
 and keeps its sources in ``build/report-src`` (the staged Sphinx source folder). The stored
 notebooks in ``notebooks/`` are never modified: they are the nbval references. Each one is
@@ -113,13 +114,15 @@ def execute_notebook(
     *,
     on_cell: Callable[[int, int], None] | None = None,
     into: nbformat.NotebookNode | None = None,
+    env: dict[str, str] | None = None,
 ) -> nbformat.NotebookNode:
     """Execute a notebook top to bottom in a fresh kernel, with its folder as cwd.
 
     Returns the executed notebook; the file at ``path`` is only read. ``on_cell(i, n)`` is
     called after each code cell (i of n code cells). ``into``: the notebook read from
     ``path``, executed in place (so that a caller still has its outputs up to the failing
-    cell when execution raises ``nbclient.exceptions.CellExecutionError``).
+    cell when execution raises ``nbclient.exceptions.CellExecutionError``). ``env``: the
+    kernel's environment (default this process's).
     """
     nb = into if into is not None else nbformat.read(path, as_version=4)
     for cell in nb.cells:  # no stored output survives, even after a failing cell
@@ -153,7 +156,7 @@ def execute_notebook(
             on_cell_executed=hook,
         )
         try:
-            client.execute()
+            client.execute(**({"env": dict(env)} if env is not None else {}))
         finally:  # a kernel manager passed in is not shut down by nbclient itself
             if km.has_kernel:
                 km.shutdown_kernel(now=True)
@@ -174,18 +177,26 @@ def _env(**values: str) -> Iterator[None]:
                 os.environ[k] = v
 
 
-def _fresh_dir(path: Path) -> None:
-    """Empty ``path`` for a new build; refuse a non-empty folder this module did not write."""
+def _refuse_foreign(path: Path) -> None:
+    """FileExistsError if ``path`` is a non-empty folder this module did not write."""
     if path.exists():
         ours = (path / _MARKER).exists() or (path / "index.html").exists()
         if any(path.iterdir()) and not ours:
             raise FileExistsError(f"{path} is not empty and not a report build: not deleting it")
+
+
+def _fresh_dir(path: Path) -> None:
+    """Empty ``path`` for a new build; refuse a non-empty folder this module did not write."""
+    if path.exists():
+        _refuse_foreign(path)
         shutil.rmtree(path)
     path.mkdir(parents=True)
     (path / _MARKER).write_text("written by analysis.app.report; deleted on the next build\n")
 
 
-def _sphinx(src: Path, out: Path, doctrees: Path, builder: str = "html") -> int:
+def _sphinx(
+    src: Path, out: Path, doctrees: Path, builder: str = "html", overrides: dict | None = None
+) -> int:
     """Run Sphinx in this process; return the number of warnings."""
     from sphinx.application import Sphinx
     from sphinx.util.console import nocolor
@@ -204,6 +215,7 @@ def _sphinx(src: Path, out: Path, doctrees: Path, builder: str = "html") -> int:
             status=None,  # our own progress lines instead of Sphinx's per-file log
             warning=warnings,
             freshenv=False,
+            confoverrides=overrides or {},
             verbosity=0,
         )
         app.build(force_all=True)
@@ -252,7 +264,9 @@ def serve(folder: Path) -> Iterator[str]:
         thread.join()
 
 
-def print_pdf(html_dir: Path, pdf: Path, chromium: str = CHROMIUM, timeout: int = 300) -> bool:
+def print_pdf(
+    html_dir: Path, pdf: Path, chromium: str = CHROMIUM, timeout: int = 300, page: str = "index"
+) -> bool:
     """Print ``html_dir/index.html`` to ``pdf`` with Debian's headless Chromium.
 
     The page is served on 127.0.0.1 (so that MathJax loads its fonts) and given a virtual
@@ -271,7 +285,7 @@ def print_pdf(html_dir: Path, pdf: Path, chromium: str = CHROMIUM, timeout: int 
             "--virtual-time-budget=60000",
             "--run-all-compositor-stages-before-draw",
             f"--print-to-pdf={pdf}",
-            url + "index.html",
+            url + f"{page}.html",
         ]
         try:
             run = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
@@ -294,6 +308,14 @@ def _prune_mathjax(folder: Path) -> None:
     for f in folder.glob("*.js"):
         if f.name != "tex-chtml.js":
             f.unlink()
+    # the SVG output (the site renders CHTML) and the speech-rule engine, which only the
+    # accessibility explorer of MathJax's menu loads, on request: 6 MB of the site
+    for d in (folder / "output" / "svg", folder / "sre"):
+        if d.is_dir():
+            shutil.rmtree(d)
+    # source maps of the theme's minified scripts and styles: for debugging the theme
+    for f in folder.parent.rglob("*.map"):
+        f.unlink()
 
 
 def _git_commit() -> str | None:
@@ -336,35 +358,74 @@ def _stored_notebooks(
 
 
 def _execute_notebooks(
-    paths: list[Path], dl_nb: Path, failed: dict[str, str], say: _Say
+    paths: list[Path],
+    dl_nb: Path,
+    fig_dir: Path,
+    failed: dict[str, str],
+    say: _Say,
+    *,
+    cache=None,
+    workers: int = 2,
 ) -> list[tuple[Path, nbformat.NotebookNode, float]]:
-    """Execute every notebook (fresh kernel each) and copy it to the downloads ``dl_nb``;
-    a notebook that raises is recorded in ``failed`` (stem -> first line of the error)."""
-    executed: list[tuple[Path, nbformat.NotebookNode, float]] = []
+    """Execute every notebook (fresh kernel each, ``workers`` at a time) and copy it to the
+    downloads ``dl_nb``; its figures go to ``fig_dir``. A notebook whose code and inputs are
+    in ``cache`` (:class:`analysis.app.report_cache.NotebookCache`) is taken from it (its
+    figures too) instead of executed; one that raises is recorded in ``failed`` (stem -> first
+    line of the error) and not cached. The time of a cached notebook is 0."""
+    from concurrent.futures import ThreadPoolExecutor
+
     n = len(paths)
+    results: dict[Path, tuple[nbformat.NotebookNode, float]] = {}
+    todo = []
     for i, path in enumerate(paths, start=1):
+        nb = nbformat.read(path, as_version=4)
+        hit = cache.get(nb, fig_dir) if cache is not None else None
+        if hit is not None:
+            say(f"notebook {i}/{n}: {path.name}: unchanged, taken from the cache")
+            results[path] = (hit, 0.0)
+        else:
+            todo.append((i, path, nb))
+
+    def run(item) -> None:
+        i, path, nb = item
         say(f"notebook {i}/{n}: executing {path.name} ...")
         t = time.perf_counter()
         last = [t]
 
-        def beat(k: int, m: int, i=i, path=path, t=t, last=last) -> None:
+        def beat(k: int, m: int) -> None:
             now = time.perf_counter()
             if now - last[0] >= 10:
                 last[0] = now
                 say(f"notebook {i}/{n}: {path.name} cell {k}/{m}, {now - t:.0f} s")
 
-        nb = nbformat.read(path, as_version=4)
-        try:
-            execute_notebook(path, on_cell=beat, into=nb)
-        except CellExecutionError as exc:
-            failed[path.stem] = _first_line_of_error(exc)
+        with tempfile.TemporaryDirectory(prefix="analysis-figures-") as tmp:
+            env = os.environ | {"ANALYSIS_FIGURE_DIR": tmp, "MPLBACKEND": NB_BACKEND}
+            try:
+                execute_notebook(path, on_cell=beat, into=nb, env=env)
+            except CellExecutionError as exc:
+                failed[path.stem] = _first_line_of_error(exc)
+            figures = sorted(Path(tmp).glob("*"))
+            for f in figures:
+                shutil.copyfile(f, fig_dir / f.name)
+            if cache is not None and path.stem not in failed:
+                cache.put(nb, str(path), figures, Path(tmp))
         dt = time.perf_counter() - t
-        nbformat.write(nb, dl_nb / path.name)
-        executed.append((path, nb, dt))
+        results[path] = (nb, dt)
         if path.stem in failed:
             say(f"notebook {i}/{n}: {path.name} FAILED after {dt:.1f} s: {failed[path.stem]}")
         else:
             say(f"notebook {i}/{n}: {path.name} done in {dt:.1f} s")
+
+    # the biggest notebooks first, so that the two workers finish together
+    todo.sort(key=lambda item: -item[1].stat().st_size)
+    if todo:
+        with ThreadPoolExecutor(max_workers=max(1, workers)) as pool:
+            list(pool.map(run, todo))
+    executed = []
+    for path in paths:
+        nb, dt = results[path]
+        nbformat.write(nb, dl_nb / path.name)
+        executed.append((path, nb, dt))
     return executed
 
 
@@ -409,6 +470,7 @@ def _write_sources(
     execute: bool,
     failed: dict[str, str],
     say: _Say,
+    front: Callable[[], list] | None = None,
 ) -> list:
     """The site's sources under ``src``: the notebooks prepared as pages, the downloads, the
     front page with its recomputed verdicts, the register, figures and downloads pages.
@@ -442,7 +504,7 @@ def _write_sources(
         for p, _, dt in executed
     ]
     try:
-        sections = front_page_data()
+        sections = (front or front_page_data)()
     except Exception as exc:  # the site still shows everything else, and says what broke
         failed["front page"] = f"front_page_data() raised {type(exc).__name__}: {exc}"
         say(failed["front page"])
@@ -452,6 +514,15 @@ def _write_sources(
     toc = {"Notebooks": docs, "Report": ["register", "figures", "downloads"]}
     (src / "index.md").write_text(
         site.front_page_md(sections, captions, homes, titles, intro, toc, problems=failed),
+        encoding="utf-8",
+    )
+    # the printed report (report.pdf): the front page and every figure with its caption, no
+    # code and no notebook listings (the notebooks are on the site and as downloads)
+    (src / "print.md").write_text(
+        ":orphan:\n\n"
+        + site.front_page_md(sections, captions, homes, titles, intro, {}, problems=failed)
+        + "\n\n"
+        + site.figures_md(captions, homes, titles).replace("# Figures", "## Figures", 1),
         encoding="utf-8",
     )
     (src / "register.md").write_text(site.register_md(), encoding="utf-8")
@@ -467,8 +538,15 @@ def build_report(
     pdf: bool = True,
     execute: bool = True,
     figures: str | Path | None = None,
+    cache: bool = True,
 ) -> Path:
     """Execute the notebooks and build the report site under ``out``; return its index.html.
+
+    ``cache`` (default on): unchanged notebooks are not executed again, the front page's data
+    is not recomputed (:mod:`analysis.app.report_cache`: keyed by each notebook's code and the
+    digest of the package, ``data/`` and the lock), and when nothing at all changed since the
+    site in ``out`` was built (the same notebooks, inputs, site configuration and options) the
+    build stops at once, saying so.
 
     ``pdf=False`` skips the printed ``report.pdf`` (it needs Debian's Chromium anyway).
     ``execute=False`` builds from the notebooks' stored outputs and the figures a run of
@@ -488,40 +566,64 @@ def build_report(
 
     out = Path(out).resolve()
     work = out.with_name(out.name + "-src")
+    _refuse_foreign(out)  # before anything is read or built
+    _refuse_foreign(work)
+    paths = [Path(p).resolve() for p in notebooks] if notebooks else notebook_paths()
+    nb_cache, front, stamp = None, None, None
+    if cache:
+        from analysis.app import report_cache as rc
+
+        digest, whole = rc.inputs_digest(), rc.site_digest()
+        nb_cache = rc.NotebookCache(digest=digest) if execute else None
+
+        def front():
+            return rc.cached_front_page(_front_page_data, whole)
+
+        if execute:
+            stamp = _build_stamp(whole, paths, pdf)
+            index = out / "index.html"
+            if index.exists() and (out / _MARKER).read_text(errors="replace").endswith(stamp):
+                say(f"nothing changed since {index} was built: the site is current")
+                return index
     _fresh_dir(out)
     _fresh_dir(work)
     src = work / "site"
     fig_dir, nb_dir, dl_nb = src / "figures", src / "notebooks", src / "downloads" / "notebooks"
     for d in (fig_dir, nb_dir, dl_nb):
         d.mkdir(parents=True)
-    paths = [Path(p).resolve() for p in notebooks] if notebooks else notebook_paths()
 
     # 1. execute every notebook (fresh kernel each); figures go to the staged figures/
     failed: dict[str, str] = {}  # notebook stem (or "front page") -> what went wrong
     if execute:
-        # kernels draw with the inline backend, as under nbval (make test), whatever the caller uses
-        with _env(ANALYSIS_FIGURE_DIR=str(fig_dir), MPLBACKEND=NB_BACKEND):
-            executed = _execute_notebooks(paths, dl_nb, failed, say)
+        # kernels draw with the inline backend, as under nbval (make test), whatever the caller
+        # uses; unchanged notebooks (code and inputs) come from the cache
+        executed = _execute_notebooks(paths, dl_nb, fig_dir, failed, say, cache=nb_cache)
     else:
         executed = _stored_notebooks(paths, dl_nb, fig_dir, figures, say)
 
     # 2. figures, notebooks prepared for the site, downloads, generated pages
-    items = _write_sources(src, fig_dir, nb_dir, executed, execute=execute, failed=failed, say=say)
+    items = _write_sources(
+        src, fig_dir, nb_dir, executed, execute=execute, failed=failed, say=say, front=front
+    )
 
     # 3. the printed form: one page (singlehtml) printed by Chromium, then offered as download
     doctrees = work / "doctrees"
     warnings = 0
     if pdf:
         say("sphinx: single-page version for printing ...")
-        warnings += _sphinx(src, work / "print", doctrees, "singlehtml")
+        warnings += _sphinx(
+            src, work / "print", work / "doctrees-print", "singlehtml",
+            {"root_doc": "print",  # the site's pages are not in the printed form's contents
+             "suppress_warnings": ["mystnb.unknown_mime_type", "toc.not_included"]},
+        )
         say("printing report.pdf with headless Chromium ...")
-        if print_pdf(work / "print", src / "downloads" / "report.pdf"):
+        if print_pdf(work / "print", src / "downloads" / "report.pdf", page="print"):
             items.append(
                 site.Download(
                     "report.pdf",
                     "Printable report",
-                    "The whole report as one PDF (A4), printed from the single-page HTML by "
-                    "headless Chromium",
+                    "The report as one PDF (A4): the verdicts, the findings and every figure "
+                    "with its caption, without code; printed by headless Chromium",
                     "make report",
                 )
             )
@@ -529,11 +631,15 @@ def build_report(
 
     # 4. the site
     say("sphinx: building the site ...")
-    warnings += _sphinx(src, out, doctrees, "html")
+    warnings += _sphinx(  # the printed form is not a page of the site
+        src, out, doctrees, "html",
+        {"exclude_patterns": ["downloads/**", "figures/**", "**.ipynb_checkpoints", "print.md"]},
+    )
     _prune_mathjax(out / "_static" / "mathjax")
-    (out / _MARKER).write_text("written by analysis.app.report; deleted on the next build\n")
-    if (src / "downloads" / "report.pdf").exists():
-        shutil.copyfile(src / "downloads" / "report.pdf", out / "report.pdf")
+    (out / _MARKER).write_text(
+        "written by analysis.app.report; deleted on the next build\n"
+        + (f"inputs {stamp}" if stamp and not failed else "")
+    )
     index = out / "index.html"
     say(f"done: {index} ({warnings} Sphinx warnings)")
     if failed:
@@ -542,6 +648,23 @@ def build_report(
             + "; ".join(f"{k}: {v}" for k, v in failed.items())
         )
     return index
+
+
+def _front_page_data() -> list:
+    from analysis.app.frontpage import front_page_data
+
+    return front_page_data()
+
+
+def _build_stamp(digest: str, paths: list[Path], pdf: bool) -> str:
+    """What a site depends on: the inputs' digest, the notebooks, the site's configuration
+    (``docs/site``) and the options; equal stamps build the same site."""
+    import hashlib
+
+    h = hashlib.sha256(f"{digest}\0pdf={pdf}\0".encode())
+    for f in [*paths, *sorted(p for p in CONF_DIR.rglob("*") if p.is_file())]:
+        h.update(str(f.name).encode() + b"\0" + f.read_bytes())
+    return h.hexdigest()
 
 
 def _first_line_of_error(exc: Exception) -> str:

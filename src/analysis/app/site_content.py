@@ -33,7 +33,7 @@ from pathlib import Path
 import nbformat
 import pandas as pd
 
-from analysis.app.frontpage import Verdict
+from analysis.app.frontpage import PaperVerdict, Verdict
 
 __all__ = [
     "CAPTIONS_TOML",
@@ -46,19 +46,26 @@ __all__ = [
     "prepare_notebook",
     "register_md",
     "saved_stems",
+    "static_explorer_html",
     "write_downloads",
 ]
 
 PROJECT = Path(__file__).resolve().parents[3]
 SITE = PROJECT / "docs" / "site"
 CAPTIONS_TOML = SITE / "captions.toml"
+CITATIONS_TOML = SITE / "citations.toml"
 MISSING_CAPTION = "Caption missing: pass caption=... to save_figure() for"
 WIDGET_MIME = "application/vnd.jupyter.widget-view+json"
 WIDGET_NOTE = (
     "*Interactive controls (sliders, branch picker, FK mode). A static page has no Python "
-    "kernel to drive them: run `make lab` and open `notebooks/{name}` to use them. A 3D view "
-    "below them (if the cell has one) shows the starting pose: drag it to rotate, scroll to "
-    "zoom.*"
+    "kernel to drive them: run `make lab` and open `notebooks/{name}` to use them.*"
+)
+EXPLORER_NOTE = (
+    "The explorer, here without a kernel: the same controls drive the arm through its "
+    "closed form printed as JavaScript (`analysis.app.explore_js`, from the recording that "
+    "the numpy and compiled solvers run; the browser tests hold it to Python within 1e-9). "
+    "Drag the 3D view to rotate it, scroll to zoom. With a kernel (`make lab`, "
+    "`notebooks/{name}`) it also shows the pulse error and the manipulability."
 )
 # what ``print(save_figure(fig, stem))`` prints: ['05-workspace-xz.svg', '05-workspace-xz.png']
 _SAVED = re.compile(r"^\['(?P<stem>\d\d-[^'\s/]+)\.svg', '(?P=stem)\.png'\]\s*$", re.M)
@@ -106,7 +113,8 @@ def _figure(stem: str, caption: str, *, name: bool, evidence: str | None = None)
     """A MyST figure: the PNG, its caption, SVG/PNG downloads, optionally where it comes from."""
     cap = _inline(caption) if caption else f"**{MISSING_CAPTION} `{stem}`.**"
     alt = caption.replace("\n", " ") if caption else f"figure {stem} (no caption recorded)"
-    links = f"{{download}}`SVG </figures/{stem}.svg>` · {{download}}`PNG </figures/{stem}.png>`"
+    # the PNG is the preview on the page; the vector file is the one download
+    links = f"{{download}}`SVG </figures/{stem}.svg>`"
     if evidence:
         links += f" · in {evidence}"
     lines = [
@@ -149,7 +157,10 @@ def prepare_notebook(
       loses the printed file names and its inline images (when there are no more images
       than saved figures: they are the same figures), and is followed by a Markdown cell
       with one captioned figure per stem, labelled ``fig-<stem>``;
-    * widget outputs become a note (a static page has no kernel);
+    * every code cell is tagged ``hide-input``: its code is hidden behind MyST-NB's toggle
+      ("Show code cell source") and never printed (``report.css``);
+    * widget outputs become a note (a static page has no kernel), the explorer's becomes the
+      explorer without a kernel (:func:`static_explorer_html`);
     * after the first heading, a note says the notebook was executed for this build and
       links the executed ``.ipynb``; if it raised (``failure``), an error box at the top says so.
 
@@ -162,10 +173,19 @@ def prepare_notebook(
         cells.append(cell)
         if cell.cell_type != "code":
             continue
+        tags = cell.metadata.setdefault("tags", [])
+        if "hide-input" not in tags:  # code hidden by default: MyST-NB's "Show code" toggle
+            tags.append("hide-input")
         for o in cell.get("outputs", []):
-            if WIDGET_MIME in o.get("data", {}):
-                o["data"] = {"text/markdown": WIDGET_NOTE.format(name=name)}
-                o.pop("metadata", None)
+            data = o.get("data", {})
+            if WIDGET_MIME in data:
+                explorer = "Explorer of the" in "".join(data.get("text/plain", ""))
+                o["data"] = (
+                    {"text/html": static_explorer_html(name), "text/plain": "explorer"}
+                    if explorer
+                    else {"text/markdown": WIDGET_NOTE.format(name=name)}
+                )
+                o["metadata"] = {}
         stems = [s for s in saved_stems(cell) if s in captions and s not in placed]
         if not stems:
             continue
@@ -208,6 +228,54 @@ def prepare_notebook(
     return nb, placed
 
 
+def static_explorer_html(name: str, arms: Iterable[str] | None = None) -> str:
+    """The explorer for a page without a kernel: a ``div.static-explorer`` that
+    ``js/static_explorer.js`` (served from ``_static``) fills with the controls and the 3D
+    view, and every arm that loads (:func:`~analysis.app.explore_logic.available_arms`) printed
+    as JavaScript (:func:`~analysis.app.explore_js.arm_module_js`), each with its figure
+    (:func:`~analysis.app.arm3d.arm_figure`) and start target
+    (:func:`~analysis.app.explore_logic.default_target`; Table 4 row 1 for the paper's arm)."""
+    import numpy as np
+
+    from analysis.app.arm3d import arm_figure, workspace_box
+    from analysis.app.explore_js import arm_module_js
+    from analysis.app.explore_logic import available_arms, default_target
+    from analysis.kinematics.arm import load_arm
+
+    names = list(arms) if arms is not None else list(available_arms()[0])
+    scripts, figures, start = [], {}, {}
+    for arm_name in names:
+        arm = load_arm(arm_name)
+        try:
+            scripts.append(f"analysisArms[{json.dumps(arm_name)}] = {arm_module_js(arm)};")
+        except (ValueError, TypeError, AttributeError):  # not a D-H chain: no page explorer
+            continue
+        t = [100.0, 100.0, 600.0] if arm_name == "grabber" else default_target(arm).tolist()
+        box = workspace_box(arm)
+        title = arm.description.title  # the figure keeps the title's margin
+        fig = arm_figure(arm, None, None, box=box, keep_arm=True, height=480, title=title)
+        figures[arm_name] = json.loads(fig.to_json()) | {"config": {"displaylogo": False,
+                                                                   "responsive": True}}
+        start[arm_name] = [float(np.round(v, 9)) for v in t]
+    first = "grabber" if "grabber" in figures else next(iter(figures))
+    cfg = {"id": hashlib.sha1(name.encode()).hexdigest()[:8], "arm": first,
+           "arms": list(figures), "figures": figures, "start": start}
+    return (
+        f'<p class="explorer-note">{_html(EXPLORER_NOTE.format(name=name))}</p>\n'
+        f"<div class=\"static-explorer\" data-explorer='{_html(json.dumps(cfg))}'>"
+        "<noscript>The explorer needs JavaScript.</noscript></div>\n"
+        "<script>window.analysisArms = window.analysisArms || {};\n"
+        + "\n".join(scripts)
+        + "</script>\n"
+    )
+
+
+def _html(text: str) -> str:
+    import html
+
+    return html.escape(text, quote=True).replace("`", "")
+
+
 # --------------------------------------------------------------------------------------------
 # pages
 # --------------------------------------------------------------------------------------------
@@ -242,8 +310,85 @@ def _evidence(links: Iterable[tuple[str, str]], titles: dict[str, str]) -> str:
     return "**Evidence:** " + " · ".join(parts)
 
 
+def citations() -> dict[str, dict]:
+    """The four papers' full citations (``docs/site/citations.toml``), by register name."""
+    with CITATIONS_TOML.open("rb") as fh:
+        return {p["register"]: p for p in tomllib.load(fh)["paper"]}
+
+
+def cite(paper: str) -> str:
+    """One paper's citation as MyST inline text."""
+    c = citations()[paper]
+    return f"{_inline(c['authors'])}. *{_inline(c['title'])}*. {_inline(c['venue'])}."
+
+
+def _html_table(df: pd.DataFrame, wrong: pd.DataFrame | None = None, cls: str = "") -> str:
+    """``df`` as an HTML table (index shown if named); cells where ``wrong`` is True get the
+    class ``wrong-cell`` (highlighted), their rows ``wrong-row``. One line, so that MyST
+    passes it through as a raw HTML block."""
+    import html
+
+    show_index = df.index.name is not None
+    cols = ([df.index.name] if show_index else []) + [str(c) for c in df.columns]
+    head = "".join(f"<th>{html.escape(c)}</th>" for c in cols)
+    rows = []
+    for k, (i, r) in enumerate(df.iterrows()):
+        bad = wrong.iloc[k] if wrong is not None else None
+        cells = [f"<th>{html.escape(str(i))}</th>"] if show_index else []
+        for j, v in enumerate(r):
+            attr = ' class="wrong-cell"' if bad is not None and bool(bad.iloc[j]) else ""
+            text = html.escape(" ".join(str(v).split()))
+            cells.append(f"<td{attr}>{text}</td>")
+        attr = ' class="wrong-row"' if bad is not None and bool(bad.any()) else ""
+        rows.append(f"<tr{attr}>{''.join(cells)}</tr>")
+    return (
+        f'<div class="table-wrapper verdict-table-wrap"><table class="verdict-table {cls}">'
+        f"<thead><tr>{head}</tr></thead><tbody>{''.join(rows)}</tbody></table></div>\n"
+    )
+
+
+NO_SUMMARY = (
+    "The register of this paper carries no `[summary]` yet: its verdict in words (what breaks "
+    "the robot, what is cosmetic) and what to take away are register data (issue 20), shown "
+    "here when they are there. Nothing on this page writes a verdict of its own."
+)
+NOT_RANKED = (
+    "The register gives these causes no severities yet, so they are listed in its order, not "
+    "ranked by consequence; each links to its row in the register."
+)
+
+
+def _paper_md(v: PaperVerdict, titles: dict[str, str]) -> list[str]:
+    c = citations().get(v.paper)
+    out = [f"### Seed {v.seed}: {_inline(v.title.split(' (seed')[0])}", ""]
+    if c:
+        out += [f"{cite(v.paper)}", ""]
+    if v.verdict:
+        out += [":::{important}", f"**Verdict.** {v.verdict}", ":::", ""]
+    else:
+        out += [":::{note}", NO_SUMMARY, ":::", ""]
+    take = [f"{{doc}}`{_role(label)} </{page}>`" for page, label in v.artefacts]
+    out += [
+        "**Take away:** " + (f"{v.take_away} " if v.take_away else "") + " · ".join(take),
+        "",
+    ]
+    f = v.findings.copy()
+    if not f.empty:
+        f["cause"] = [f"{x}" for x in f["cause"]]
+        if not v.ranked:
+            out += [f"*{NOT_RANKED}*", ""]
+            f = f.drop(columns=["severity", "consequence"])
+        wrong = pd.DataFrame(False, index=f.index, columns=f.columns)
+        if "severity" in f:
+            wrong["severity"] = f["severity"].isin(["breaks", "wrong-result"])
+        out += [_html_table(f.set_index("cause"), wrong.drop(columns="cause"), "findings"), ""]
+    links = (("register", "the register"), (f"notebooks/{v.notebook}", v.notebook[:2]))
+    out += [_evidence(links, titles), ""]
+    return out
+
+
 def front_page_md(
-    sections: list[Verdict],
+    sections: list[Verdict | PaperVerdict],
     captions: dict[str, str],
     homes: dict[str, str],
     titles: dict[str, str],
@@ -266,7 +411,17 @@ def front_page_md(
             )
             out.append(f"- {where}: `{_code(why)}`")
         out += [":::", ""]
+    heads = [h for s in sections if isinstance(s, Verdict) for h in s.headline]
+    if heads:
+        out += ["## The strongest findings", "", *(f"- {h}" for h in heads), ""]
+    papers = [s for s in sections if isinstance(s, PaperVerdict)]
+    if papers:
+        out += ["## What is wrong, how bad, what to take away", ""]
+        for v in papers:
+            out += _paper_md(v, titles)
     for s in sections:
+        if isinstance(s, PaperVerdict):
+            continue
         out += [f"## {s.title}", ""]
         if s.counts:
             cards = "".join(
@@ -277,7 +432,8 @@ def front_page_md(
             out += [f'<div class="verdict-counts">{cards}</div>', ""]
         out += [s.verdict, ""]
         if s.table is not None:
-            out += [_md_table(s.table), ""]
+            shown = _html_table(s.table, s.wrong) if s.wrong is not None else _md_table(s.table)
+            out += [shown, ""]
         for stem in s.figures:
             if stem in captions:
                 home = homes.get(stem)
@@ -286,6 +442,11 @@ def front_page_md(
                 )
                 out.append(_figure(stem, captions[stem], name=False, evidence=where))
         out += [_evidence(s.evidence, titles), ""]
+    if CITATIONS_TOML.exists():
+        out += ["## The four papers", ""]
+        for paper, c in citations().items():
+            out.append(f"- **Seed {c['seed']}.** {cite(paper)} ({_inline(c['source'])})")
+        out.append("")
     for caption, docs in toc.items():
         out += ["```{toctree}", f":caption: {caption}", ":maxdepth: 1", "", *docs, "```", ""]
     return "\n".join(out)

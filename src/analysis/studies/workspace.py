@@ -426,5 +426,5 @@ def plot_targets(
             label="Table 4 target (unreachable)",
         )
     for (u, v), text in zip(pts[:, [iu, iv]], labels, strict=True):
-        ax.annotate(str(text), (u, v), xytext=(4, 4), textcoords="offset points", fontsize=8)
+        ax.annotate(str(text), (u, v), xytext=(4, 4), textcoords="offset points", fontsize=10)
     return ax

@@ -1,0 +1,208 @@
+"""An arm's kinematics printed as JavaScript, from its one closed form (no hand-written copy).
+
+The explorer draws the arm in the browser: in JupyterLab (the widget of
+:mod:`analysis.app.arm3d`, which redraws the moment a slider moves, without waiting for the
+kernel) and on the static report site (sliders that need no kernel at all). Both run the
+JavaScript that :func:`arm_module_js` prints from two recordings
+(:mod:`analysis.kinematics.trace`):
+
+* the shared solver body :func:`~analysis.kinematics.solution.solve_body` with the arm's
+  closed form (statuses, joint limits, every branch; what :meth:`Arm.solve` runs with numpy
+  and what the compiled kernel is printed from), plus the whole pulse counts of eqs. 20-22
+  (:func:`~analysis.kinematics.pulses.pulse_count`);
+* the D-H chain's frame origins (:func:`~analysis.kinematics.dh.chain_frames`, what
+  :meth:`Arm.frames` evaluates with numpy), which the 3D view draws.
+
+The printer is one class of the project's printers (:mod:`analysis.kinematics.printing`,
+beside the compiled kernel's and the PLC dialects'): :class:`JsPrinter`, a method or a known
+function per operation of the one op table, and a loop over the live nodes of a graph in
+execution order. The recording keeps the order of every
+floating-point operation of the closed form, so the printed function computes what numpy
+computes: ``+ - * / sqrt`` are correctly rounded in both, and ``Math.atan2``, ``acos``,
+``sin``, ``cos`` differ from the C library by an ulp or two. The browser tests hold the
+printed functions to :meth:`Arm.solve` and :meth:`Arm.frames` within 1e-9 (rad, mm) on
+seeded targets of every arm (``tests/browser/test_explorer_static.py``).
+
+Why not SymPy's ``jscode``: SymPy reorders sums and products (other rounding than numpy's),
+and its expressions of the closed form drop ``wrap`` and ``clip``
+(:class:`~analysis.kinematics.symbolic.SympyOps`), which the explorer needs at the wrap cut
+and at the reach shells.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from typing import ClassVar
+
+from analysis.kinematics.dh import chain_frames
+from analysis.kinematics.ops import OPS
+from analysis.kinematics.printing import Printer
+from analysis.kinematics.pulses import pulse_count
+from analysis.kinematics.solution import DEFAULT_TOL_MM, solve_body
+from analysis.kinematics.status import STATUS_TEXT
+from analysis.kinematics.trace import Graph, Node, TraceOps
+
+__all__ = ["JsPrinter", "arm_module_js", "frames_graph", "graph_js", "solve_graph"]
+
+
+class JsPrinter(Printer):
+    """JavaScript expressions, one per operation of :data:`~analysis.kinematics.ops.OPS`
+    (the recorder expands the derived ``round`` into ``trunc``/``sign``/``select``)."""
+
+    target = "JavaScript"
+    known_functions: ClassVar[dict[str, str]] = {
+        "sqrt": "Math.sqrt",
+        "sin": "Math.sin",
+        "cos": "Math.cos",
+        "atan": "Math.atan",
+        "atan2": "Math.atan2",
+        "acos": "Math.acos",
+        "abs": "Math.abs",
+        "trunc": "Math.trunc",
+        "sign": "Math.sign",
+        "isfinite": "Number.isFinite",
+    }
+    infix: ClassVar[dict[str, str]] = {
+        **{op: OPS[op].symbol for op in ("add", "sub", "mul", "div", "lt", "le", "gt", "ge")},
+        "eq": "===",
+        "and": "&&",
+        "or": "||",
+    }
+
+    def _print_function(self, op, *args):
+        return f"{self.known_functions[op]}({', '.join(args)})"
+
+    def _print_infix(self, op, a, b):
+        return f"({a} {self.symbol(op)} {b})"
+
+    def _print_neg(self, a):
+        return f"(-{a})"
+
+    def _print_not(self, a):
+        return f"(!{a})"
+
+    def _print_select(self, cond, a, b):
+        return f"({cond} ? {a} : {b})"
+
+
+JS = JsPrinter()
+
+
+def _literal(v: float) -> str:
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    v = float(v)
+    if math.isnan(v):
+        return "NaN"
+    if math.isinf(v):
+        return "Infinity" if v > 0 else "(-Infinity)"
+    return repr(v)
+
+
+def graph_js(graph: Graph, arg: str = "a") -> str:
+    """The body of a JavaScript function of one array argument ``arg`` (the graph's inputs in
+    declaration order) that returns an object of the graph's outputs by name."""
+    order = {name: k for k, name in enumerate(graph.inputs)}
+
+    def ref(a) -> str:
+        return f"v{a.index}" if isinstance(a, Node) else _literal(a)
+
+    lines = []
+    for n in graph.live():
+        if n.op == "input":
+            expr = f"{arg}[{order[n.args[0]]}]"
+        else:
+            expr = JS.doprint(n.op, *map(ref, n.args))
+        name = graph.names.get(n.index)
+        lines.append(f"  const v{n.index} = {expr};" + (f"  // {name}" if name else ""))
+    outs = ", ".join(f"{json.dumps(k)}: {ref(v)}" for k, v in graph.outputs.items())
+    lines.append(f"  return {{{outs}}};")
+    return "\n".join(lines)
+
+
+def solve_graph(arm, tol: float = DEFAULT_TOL_MM) -> Graph:
+    """:func:`solve_body` of ``arm`` (every branch, its joint limits, tolerance ``tol``)
+    recorded with the arm's parameters as constants, plus each branch's whole pulses
+    ``c:<branch>:<j>`` (eqs. 20-22; NaN where the branch has no solution)."""
+    g = Graph()
+    m = TraceOps(g)
+    p = tuple(g.input(k) for k in arm.inputs)
+    out = solve_body(
+        m, arm.closed_form, p, dict(arm.params), arm.branches, tol=tol, limits=arm.limits
+    )
+    for b in arm.branches:
+        for j, ppr in enumerate(arm.params.pulses_per_rev):
+            out[f"c:{b}:{j}"] = pulse_count(m, out[f"q:{b}:{j}"], float(ppr))
+    g.outputs = out
+    return g
+
+
+def frames_graph(arm) -> Graph:
+    """The origins of the arm's frames 0..n (:meth:`Arm.frames`) recorded from its D-H chain,
+    outputs ``f<i>:<x|y|z>`` [mm] for joint inputs ``q0 .. q<n-1>`` [rad]."""
+    g = Graph()
+    m = TraceOps(g)
+    q = [g.input(f"q{j}") for j in range(arm.n_joints)]
+    origins = chain_frames(m, arm.table, q)
+    g.outputs = {f"f{i}:{'xyz'[k]}": c for i, o in enumerate(origins) for k, c in enumerate(o)}
+    return g
+
+
+def _module(arm) -> str:
+    n_frames = len(frames_graph(arm).outputs) // 3
+    meta = {
+        "name": arm.name,
+        "title": arm.description.title,
+        "inputs": list(arm.inputs),
+        "units": list(arm.input_units),
+        "branches": list(arm.branches),
+        "joints": [j.name for j in arm.description.joints],
+        "limits": [None if lim is None else list(lim) for lim in arm.limits],
+        "pulses_per_rev": list(arm.params.pulses_per_rev),
+        "status_text": {int(k): v for k, v in STATUS_TEXT.items()},
+        "n_frames": n_frames,
+    }
+    return (
+        "(function () {\n"
+        f"// {arm.name}: printed by analysis.app.explore_js from the closed form "
+        f"'{arm.description.closed_form}' and the D-H chain of data/arms; do not edit\n"
+        "const raw_solve = function (a) {\n" + graph_js(solve_graph(arm)) + "\n};\n"
+        "const raw_frames = function (a) {\n" + graph_js(frames_graph(arm)) + "\n};\n"
+        f"const arm = {json.dumps(meta, ensure_ascii=False)};\n"
+        "arm.solve = function (p) {\n"
+        "  const r = raw_solve(p), out = {status: r.status, outside: r.outside, branches: {}};\n"
+        "  for (const b of arm.branches) {\n"
+        "    const q = [], c = [];\n"
+        "    for (let j = 0; j < arm.joints.length; j++) {\n"
+        "      q.push(r['q:' + b + ':' + j]); c.push(r['c:' + b + ':' + j]);\n"
+        "    }\n"
+        "    out.branches[b] = {ok: r['ok:' + b], q: q, c: c};\n"
+        "  }\n"
+        "  return out;\n"
+        "};\n"
+        "arm.frames = function (q) {\n"
+        "  const r = raw_frames(q), pts = [];\n"
+        "  for (let i = 0; i < arm.n_frames; i++) "
+        "pts.push([r['f' + i + ':x'], r['f' + i + ':y'], r['f' + i + ':z']]);\n"
+        "  return pts;\n"
+        "};\n"
+        "return arm;\n"
+        "})()"
+    )
+
+
+def arm_module_js(arm) -> str:
+    """A JavaScript expression whose value is the arm: ``name``, ``title``, ``inputs`` (with
+    ``units``: "mm" or "rad"), ``branches``, ``joints``, ``limits`` [rad], ``pulses_per_rev``,
+    ``status_text`` (code -> word), and two functions printed from the closed form:
+
+    * ``solve(p)``: ``{status, outside, branches: {name: {ok, q: [rad], c: [pulses]}}}`` for
+      one target ``p`` (the inputs' values, angles in rad), as :meth:`Arm.solve` (NaN angles
+      and pulses where a branch has no solution);
+    * ``frames(q)``: the frame origins [[x, y, z], ...] [mm] for joint angles ``q`` [rad], as
+      :meth:`Arm.frames`.
+
+    Arms whose forward kinematics is not a D-H chain raise ``ValueError`` (the explorer then
+    draws what the kernel sends)."""
+    return _module(arm)

@@ -1,0 +1,123 @@
+// The anywidget module of analysis.app.arm3d.Arm3DWidget (prefixed by arm3d_view.js).
+// The kernel sends the figure, the arm's kinematics printed as JavaScript (explore_js) and the
+// ids of the explorer's controls. On every change of a control the pose is drawn at once from
+// the printed kinematics, without a round trip to the kernel; the kernel's own pose (trait
+// `pose`, computed by Arm.solve/Arm.frames) is drawn when it arrives for the controls' current
+// values (and is what an arm without printed kinematics shows). plotly.js is not stored in the
+// widget's state: the kernel sends it once per page as a binary message (5 MB that a saved
+// notebook would otherwise carry).
+const A = globalThis.analysisArm3d;
+
+function fetchPlotly(model) {
+  return new Promise((resolve) => {
+    const onMsg = (msg, buffers) => {
+      if (msg && msg.type === "plotly" && buffers && buffers.length) {
+        model.off("msg:custom", onMsg);
+        resolve(new TextDecoder().decode(buffers[0]));
+      }
+    };
+    model.on("msg:custom", onMsg);
+    model.send({type: "plotly?"});
+  });
+}
+
+// a control's value: selection widgets (the branch buttons) sync an index into their labels
+function value(m) {
+  if (!m) return null;
+  const labels = m.get("_options_labels");
+  return labels ? labels[m.get("index")] : m.get("value");
+}
+
+function sameKey(a, b) {
+  if (!a || !b || a.length !== b.length) return false;
+  return a.every((v, i) => (typeof v === "number" && typeof b[i] === "number"
+    ? Math.abs(v - b[i]) <= 1e-9 * Math.max(1, Math.abs(v)) : v === b[i]));
+}
+
+async function render({model, el}) {
+  el.classList.add("arm3d-widget");
+  const Plotly = await A.plotly(() => fetchPlotly(model));
+  const view = new A.View(el, Plotly, model.get("figure"));
+  let arm = null;
+  let ctl = null;
+  const unhook = [];
+
+  function compile() {
+    const src = model.get("kinematics");
+    try {
+      arm = src ? new Function("return " + src)() : null;
+    } catch (e) {
+      console.error("arm3d: kinematics did not load", e);
+      arm = null;
+    }
+  }
+
+  async function wire() {
+    for (const f of unhook.splice(0)) f();
+    const ids = model.get("controls") || {};
+    const get = (id) => model.widget_manager.get_model(id.replace(/^IPY_MODEL_/, ""));
+    const one = async (id) => (id ? await get(id) : null);
+    const many = async (list) => Promise.all((list || []).map(get));
+    const c = {
+      inputs: await many(ids.inputs), joints: await many(ids.joints), units: ids.units || [],
+      branch: await one(ids.branch), fk: await one(ids.fk), axis: await one(ids.on_axis),
+      axisDeg: await one(ids.on_axis_deg),
+    };
+    for (const m of [...c.inputs, ...c.joints, c.branch, c.fk, c.axis, c.axisDeg]) {
+      if (!m) continue;
+      const cb = () => local();
+      m.on("change:value change:index", cb);
+      unhook.push(() => m.off("change:value change:index", cb));
+    }
+    ctl = c;
+  }
+
+  // the controls' values, in the order of Explorer.pose_key() (Python)
+  function key() {
+    if (!ctl) return null;
+    const v = value;
+    return [v(ctl.fk), v(ctl.branch), ...ctl.inputs.map(v), ...ctl.joints.map(v), v(ctl.axis), v(ctl.axisDeg)];
+  }
+
+  function local() {
+    if (!arm || !ctl || ctl.inputs.length !== arm.inputs.length) return;
+    const fk = value(ctl.fk);
+    if (!fk && value(ctl.axis)) return; // theta1 chosen on the axis: the kernel draws
+    const rad = Math.PI / 180;
+    let r;
+    if (fk) {
+      r = A.pose(arm, {q: ctl.joints.map((m) => value(m) * rad)});
+    } else {
+      const p = ctl.inputs.map((m, i) => value(m) * (ctl.units[i] === "rad" ? rad : 1));
+      r = A.pose(arm, {branch: value(ctl.branch), p});
+    }
+    view.draw(r.frames, r.target, r.title, "local");
+  }
+
+  function kernel() {
+    const p = model.get("pose");
+    if (!p || !p.title) return;
+    if (ctl && p.key && !sameKey(p.key, key())) return; // for values the controls have left
+    view.draw(p.frames, p.target, p.title, "kernel");
+  }
+
+  const onFigure = () => view.reset(model.get("figure")).then(kernel);
+  const onKin = () => { compile(); local(); };
+  const onCtl = () => wire().then(local);
+  model.on("change:figure", onFigure);
+  model.on("change:kinematics", onKin);
+  model.on("change:controls", onCtl);
+  model.on("change:pose", kernel);
+  compile();
+  await wire();
+  kernel();
+  return () => {
+    for (const f of unhook.splice(0)) f();
+    model.off("change:figure", onFigure);
+    model.off("change:kinematics", onKin);
+    model.off("change:controls", onCtl);
+    model.off("change:pose", kernel);
+  };
+}
+
+export default {render};

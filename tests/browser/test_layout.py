@@ -1,0 +1,210 @@
+"""The report as a reader sees it: phone width, legible figures, the front page, the PDF, size.
+
+* no page scrolls sideways at 390 px (a phone): wide tables, listings and maths scroll inside
+  their own box;
+* every figure: its text (the SVG's text elements, drawn by the browser) is at least 9 pt
+  when the figure is shown at the width of the page's text, and no two text boxes overlap;
+* the front page answers what is wrong (per paper), links each finding to its evidence, cites
+  the four papers, and highlights the wrong cells of its tables; code is hidden behind a
+  toggle; the PDF has no code and at most 40 pages; the site is at most 25 MB.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+
+MAX_SITE_MB = 25.0
+MAX_PDF_PAGES = 40
+MIN_PT = 9.0
+PHONE = {"width": 390, "height": 844}
+
+
+# Pages that still scroll sideways at 390 px, and why (this list can only shrink: a listed
+# page that fits fails the test until it is taken off).
+NOT_YET_NARROW: dict[str, str] = {}  # none left
+
+
+def test_no_page_scrolls_sideways_at_phone_width(context, site_url, pages):
+    page = context.new_page()
+    page.set_viewport_size(PHONE)
+    wide = []
+    try:
+        for p in pages:
+            page.goto(site_url + p, wait_until="load")
+            page.wait_for_timeout(50)
+            w = page.evaluate(
+                "() => [document.documentElement.scrollWidth, document.documentElement.clientWidth]"
+            )
+            if (w[0] > w[1] + 1) != (p in NOT_YET_NARROW):
+                if p in NOT_YET_NARROW:
+                    wide.append(f"{p}: fits now: take it off NOT_YET_NARROW")
+                    continue
+                culprit = page.evaluate(
+                    """() => { const cw = document.documentElement.clientWidth;
+                    const e = [...document.querySelectorAll('main *')].find(e =>
+                        e.getBoundingClientRect().right > cw + 1 && getComputedStyle(e).position
+                        !== 'fixed');
+                    return e ? e.tagName + '.' + e.className : ''; }"""
+                )
+                wide.append(f"{p}: {w[0]} px > {w[1]} px ({culprit})")
+    finally:
+        page.close()
+    assert not wide, wide
+
+
+_TEXT_BOXES = """async ([url, shown]) => {
+    const svg = await (await fetch(url)).text();
+    const host = document.createElement('div');
+    host.style.cssText = 'position:absolute;left:0;top:0;';
+    host.innerHTML = svg;
+    document.body.appendChild(host);
+    const root = host.querySelector('svg');
+    const width = root.getBoundingClientRect().width;
+    const k = shown / width;  // the figure as shown at the width of the page's text
+    const boxes = [...root.querySelectorAll('text')].filter(t => t.textContent.trim())
+        .map(t => { const r = t.getBoundingClientRect();
+            // SVG user units: pt at the figure's natural size
+            const fs = parseFloat(getComputedStyle(t).fontSize);
+            return {text: t.textContent.trim().slice(0, 30), x0: r.left, y0: r.top, x1: r.right,
+                    y1: r.bottom, pt: fs * k}; });
+    host.remove();
+    return boxes;
+}"""
+
+
+def _overlaps(boxes, pad: float = 0.5):
+    out = []
+    for i, a in enumerate(boxes):
+        for b in boxes[i + 1 :]:
+            w = min(a["x1"], b["x1"]) - max(a["x0"], b["x0"])
+            h = min(a["y1"], b["y1"]) - max(a["y0"], b["y0"])
+            if w > pad and h > pad:
+                out.append(f"{a['text']!r} / {b['text']!r}")
+    return out
+
+
+# Figures of notebooks other helpers own, not yet re-laid out (issue 23 item 3): listed so that
+# every other figure is held to the rule now, and so that this list can only shrink (a listed
+# figure that passes fails the test until it is taken off). Figure -> what is wrong.
+NOT_YET_LEGIBLE = {
+    "10-work-area": "legend and labels 6.7-7.7 pt",
+    "10-fx2n-vs-cubic": "ticks 6.2 pt (listed in issue 23)",
+    "10-table5-4-arm": "ticks 7.4 pt",
+    "12-picker-hidden-errors": "annotations 5.3 pt",
+}
+KNOWN_COLLISIONS = {
+    "04-pinocchio-table4": "a tick label on the axis label",
+    "07-rounding-margin": "the exponent of a log tick on the legend",
+}
+
+
+def test_figure_text_is_legible_and_never_collides(context, site_url, site_dir):
+    """Every figure's SVG, drawn by the browser at the width the page shows it: no text under
+    9 pt, no two text boxes overlapping (but the figures listed above, which must stay bad
+    to stay listed)."""
+    page = context.new_page()
+    try:
+        page.goto(site_url + "figures.html", wait_until="load")
+        shown = page.evaluate(
+            "() => document.querySelector('.bd-article').getBoundingClientRect().width"
+        )
+        svgs = sorted((site_dir / "_downloads").rglob("[0-9][0-9]-*.svg"))
+        assert svgs
+        bad = []
+        for svg in svgs:
+            url = site_url + svg.relative_to(site_dir).as_posix()
+            boxes = page.evaluate(_TEXT_BOXES, [url, shown])
+            small = sorted({f"{b['text']!r} {b['pt']:.1f} pt" for b in boxes
+                            if b["pt"] < MIN_PT - 0.05})  # fmt: skip
+            hits = _overlaps(boxes)
+            stem = svg.stem
+            if bool(small) != (stem in NOT_YET_LEGIBLE):
+                bad.append(f"{stem}: text under {MIN_PT:g} pt: {small[:4]}" if small else
+                           f"{stem}: legible now: take it off NOT_YET_LEGIBLE")  # fmt: skip
+            if bool(hits) != (stem in KNOWN_COLLISIONS):
+                bad.append(f"{stem}: overlapping text: {hits[:4]}" if hits else
+                           f"{stem}: no collision now: take it off KNOWN_COLLISIONS")  # fmt: skip
+    finally:
+        page.close()
+    assert not bad, "\n".join(bad)
+
+
+def test_front_page_verdicts_citations_and_highlights(page, site_url, shots):
+    page.goto(site_url + "index.html", wait_until="load")
+    text = page.locator("main").inner_text()
+    assert page.get_by_role("heading", name="The strongest findings").is_visible()
+    assert page.get_by_role("heading", name="What is wrong, how bad, what to take away").count()
+    for seed in ("000", "001", "002", "004"):
+        assert page.get_by_role("heading", name=re.compile(rf"^Seed {seed}:")).count(), seed
+    # the strongest findings are numbers computed for this build
+    assert re.search(r"c1 = \d+ pulses for Table 4 row 1 where 500 are needed", text), text[:800]
+    assert re.search(r"\d+-\d+ mm off the target in rows", text)
+    # full citations of the four papers
+    for needle in ("Food & Machinery", "Computer Knowledge and Technology",
+                   "doi:10.11975/j.issn.1002-6819.2016.09.008", "Xiangtan University"):  # fmt: skip
+        assert needle in text, needle
+    # wrong cells of Table 4 highlighted: exactly its wrong rows
+    from analysis.audit import table4
+
+    t4 = table4.report_table()
+    rows = page.locator("section#table-4-recomputed table tbody tr")
+    marked = [rows.nth(i).get_attribute("class") == "wrong-row" for i in range(rows.count())]
+    assert marked == list(t4["verdict"] == "wrong")
+    colour = page.locator("td.wrong-cell").first.evaluate(
+        "e => getComputedStyle(e).backgroundColor"
+    )
+    assert colour not in ("rgba(0, 0, 0, 0)", "transparent")
+    # every finding row names its cause, and each paper's section links to its evidence
+    evidence = page.locator("p:has-text('Evidence:') a").evaluate_all(
+        "as => as.map(a => a.getAttribute('href'))"
+    )
+    for nb in ("02_inverse_kinematics", "11_palletizer", "12_picker", "10_gr1_arm"):
+        assert f"notebooks/{nb}.html" in evidence, nb
+    page.screenshot(path=shots / "front-page-top.png")
+
+
+def test_code_is_hidden_behind_a_toggle(page, site_url):
+    page.goto(site_url + "notebooks/03_table4.html", wait_until="load")
+    cells = page.locator(".cell_input")
+    assert cells.count() > 0
+    assert not cells.first.is_visible()  # hidden by default
+    toggle = page.locator("details.hide summary").first
+    toggle.click()
+    assert cells.first.is_visible()
+
+
+def test_pdf_has_no_code_and_at_most_40_pages(site_dir):
+    pdfs = list((site_dir / "_downloads").rglob("report.pdf"))
+    if not pdfs:
+        pytest.skip("no report.pdf in this build (printed by make report, not by make test)")
+    assert len(pdfs) == 1 and not (site_dir / "report.pdf").exists()  # stored once
+    data = pdfs[0].read_bytes()
+    n = len(re.findall(rb"/Type\s*/Page[^s]", data))
+    assert 0 < n <= MAX_PDF_PAGES, n
+
+
+def test_printed_form_has_no_code(page, site_url):
+    """What report.pdf is printed from: the print media hide every code cell."""
+    page.goto(site_url + "notebooks/03_table4.html", wait_until="load")
+    page.emulate_media(media="print")
+    try:
+        shown = page.evaluate(
+            "() => [...document.querySelectorAll('.cell_input, details.hide')]"
+            ".filter(e => e.getClientRects().length).length"
+        )
+        outputs = page.evaluate(
+            "() => [...document.querySelectorAll('.cell_output')]"
+            ".filter(e => e.getClientRects().length).length"
+        )
+    finally:
+        page.emulate_media(media="screen")
+    assert shown == 0 and outputs > 0, (shown, outputs)
+
+
+def test_site_is_at_most_25_mb(site_dir):
+    size = sum(f.stat().st_size for f in Path(site_dir).rglob("*") if f.is_file())
+    big = sorted((f.stat().st_size, f) for f in Path(site_dir).rglob("*") if f.is_file())[-5:]
+    assert size <= MAX_SITE_MB * 1e6, (size / 1e6, [(s // 1000, str(f.name)) for s, f in big])
