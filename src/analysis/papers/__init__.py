@@ -12,6 +12,8 @@ References (:meth:`Paper.text`)::
 
     eq6                  the record's text in its notation ("lhs = rhs", a listing, a claim)
     eq3#2                part 2 of a multi-part equation (1-based)
+    3.17#printed         a named field of the record (the extraction's run where the
+                         record's text is its reading)
     eq12[2,3]            a matrix cell (row, column; 1-based)
     figure5:12-17        lines 12-17 of a listing (1-based, inclusive)
     table4[1].theta2_deg a table cell (row key, column)
@@ -26,6 +28,7 @@ from __future__ import annotations
 import csv
 import re
 import tomllib
+import warnings
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from functools import cache
@@ -60,7 +63,7 @@ FUNCTIONS: dict[str, object] = {
 """The one set of functions every paper's expressions may use."""
 _META = ("id", "type", "group", "key")
 _REF = re.compile(
-    r"^(?P<id>[^\[\]:#]+)(?:#(?P<part>\d+)|\[(?P<cell>[^\]]+)\](?:\.(?P<col>\w+))?|:(?P<a>\d+)-(?P<b>\d+))?$"
+    r"^(?P<id>[^\[\]:#]+)(?:#(?P<part>\d+)|#(?P<field>[a-z_]+)|\[(?P<cell>[^\]]+)\](?:\.(?P<col>\w+))?|:(?P<a>\d+)-(?P<b>\d+))?$"
 )
 
 
@@ -96,6 +99,8 @@ class Record:
         for key in ("text", "printed"):
             if isinstance(f.get(key), str):
                 return f[key]
+        if f.get("runs"):  # an extracted item: its verbatim runs
+            return "\n".join(f["runs"])
         raise ValueError(f"{self.paper}:{self.id} ({self.type}) has no single text; name a part")
 
 
@@ -123,8 +128,18 @@ class Paper:
 
     def parse(self, text: str, namespace: str = "main") -> sp.Expr:
         """Parse SymPy text over the paper's symbols and :data:`FUNCTIONS`; ``ValueError``
-        naming the text if it does not parse or uses an unknown name."""
-        return parse(text, self.symbols(namespace))
+        naming the text if it does not parse or uses an unknown name (memoized: SymPy
+        expressions are immutable)."""
+        key = (self.id, namespace, text)
+        if key not in _PARSED:
+            try:
+                _PARSED[key] = parse(text, self.symbols(namespace))
+            except ValueError as exc:
+                _PARSED[key] = exc
+        out = _PARSED[key]
+        if isinstance(out, ValueError):
+            raise ValueError(*out.args)
+        return out
 
     def matrix(self, rid: str) -> sp.Matrix:
         """A printed matrix (record id, or its key in the group ``MATRICES``) in SymPy."""
@@ -145,6 +160,8 @@ class Paper:
         if m["part"]:
             p = rec["parts"][int(m["part"]) - 1]
             return f"{p['lhs']} = {p['rhs']}"
+        if m["field"]:  # a named field: what the extraction gives where the record reads it
+            return str(rec[m["field"]])
         if m["a"]:
             lines = rec["text"].splitlines()
             a, b = int(m["a"]), int(m["b"])
@@ -163,7 +180,7 @@ class Paper:
         rows = self.table_rows(rec.id)
         if row not in rows or col not in rows[row]:
             raise ValueError(f"{self.id}:{rec.id} has no cell [{row}].{col}")
-        return str(rows[row][col])
+        return str(rows[row][col]) or rec.get("blank", "")
 
     def table_rows(self, rid: str) -> dict[str, dict[str, str]]:
         """A table as ``{row key: {column: cell}}`` (cells as printed)."""
@@ -217,12 +234,24 @@ def _frozen(v):
     return v
 
 
+@cache
+def _globals() -> dict:
+    """SymPy's namespace for parse_expr, built once (parse_expr would exec 'from sympy import
+    *' on every call without it)."""
+    g: dict = {}
+    exec("from sympy import *", g)
+    return g
+
+
 def parse(text: str, names: Mapping[str, object]) -> sp.Expr:
     """Parse SymPy ``text`` with ``names`` and :data:`FUNCTIONS` only (ValueError naming it)."""
     if not isinstance(text, str) or "__" in text or len(text) > 4000:
         raise ValueError(f"cannot parse {text!r}: not an expression of the transcription")
     try:
-        expr = sp.parse_expr(text, local_dict={**names, **FUNCTIONS}, evaluate=True)
+        with warnings.catch_warnings():  # Python's SyntaxWarning for text like "(a)(b)"
+            warnings.simplefilter("ignore", SyntaxWarning)
+            expr = sp.parse_expr(text, local_dict={**names, **FUNCTIONS}, global_dict=_globals(),
+                                 evaluate=True)  # fmt: skip
     except Exception as exc:  # sympy raises many types for bad syntax
         raise ValueError(f"cannot parse transcribed expression {text!r}: {exc}") from None
     if not isinstance(expr, sp.Basic):
@@ -234,6 +263,7 @@ def parse(text: str, names: Mapping[str, object]) -> sp.Expr:
 
 
 _SYMBOLS: dict[tuple[str, str], dict[str, object]] = {}
+_PARSED: dict[tuple[str, str, str], object] = {}
 
 
 def _symbols(spec: Mapping) -> dict[str, object]:

@@ -1,6 +1,5 @@
-"""Seed 001 (Li & Hu 2021, palletizer): the derivations and runs that
-:mod:`analysis.audit.palletizer_checks` holds the printed items against (the method and the
-corrected IK are described there).
+"""Seed 001 (Li & Hu 2021, the 4-axis palletizer): its printed method as a model, for the
+register's checks (``data/registers/palletizer.toml``) and notebook 11.
 
 Symbolic: the modified D-H table read off the five printed matrices of section 4.2
 (:func:`symbolic_table`), their product (eq. 9) as the reference of eq. 11, eq. 8 against
@@ -9,6 +8,17 @@ or corrected (:func:`ik_chain`), the four elbow/waist solutions (:func:`all_ik`)
 behind the uniqueness claim of section 2, Pinocchio's forward kinematics. Every function takes
 an :class:`~analysis.kinematics.arm.Arm` of ``data/arms/palletizer.toml``, whose lengths are
 ASSUMED (the paper prints none).
+
+Corrected IK (elbow above the shoulder-wrist line, waist facing the target)::
+
+    rho = hypot(X0, Y0);  gamma = atan2(Y0, X0)                      (eqs. 1, 6)
+    L4 = hypot(rho - L3, Z0 + h)                                     (eq. 2)
+    alpha1 = acos((L1^2 + L4^2 - L2^2) / (2 L1 L4))                  (eq. 3)
+    alpha2 = atan2(Z0 + h, rho - L3)      (H = Z0 + h; eq. 3 prints arcsin(H/L4'))
+    beta1  = acos((L1^2 + L2^2 - L4^2) / (2 L1 L2))  (eq. 3 prints no arccos)
+    alpha = alpha1 + alpha2 - pi/2  (eq. 4 prints pi/2 - alpha1 + alpha2);  beta = pi/2 - beta1
+    theta = -alpha + beta                                            (eq. 5)
+    theta1..4 = gamma, -pi/2 - alpha, pi/2 + beta, pi/2 - (theta2 + theta3)  (eq. 12)
 """
 
 from __future__ import annotations
@@ -19,6 +29,7 @@ import numpy as np
 import numpy.typing as npt
 import sympy as sp
 
+from analysis.audit.kinds.symbolic import is_zero
 from analysis.kinematics.arm import Arm
 from analysis.kinematics.dh import DHRow, DHTable, link_transform_sym
 from analysis.papers import palletizer as paper
@@ -75,18 +86,6 @@ def derived_tool_position() -> tuple[sp.Expr, sp.Expr, sp.Expr]:
     for name in ("T01", "T12", "T23", "T34", "T45"):
         T = T * paper.matrix(name)
     return tuple(sp.expand(T[i, 3]) for i in range(3))
-
-
-def is_zero(e: sp.Expr) -> bool:
-    """Exact zero test: polynomial expansion first (enough for products of the printed
-    matrices), trigonometric simplification only if that leaves terms."""
-    e = sp.expand(e)
-    if e == 0:
-        return True
-    probe = {x: sp.Rational(3 + 7 * k, 11) for k, x in enumerate(sorted(e.free_symbols, key=str))}
-    if abs(complex(e.subs(probe).evalf(30))) > 1e-20:  # a nonzero value decides at once
-        return False
-    return sp.simplify(sp.expand_trig(e)) == 0
 
 
 @cache
@@ -360,3 +359,91 @@ def workspace_grid(arm: Arm, n: int = 41) -> npt.NDArray[np.float64]:
     keep = np.isfinite(q).all(-1) & (L4 < 0.999 * (P.L1 + P.L2)) & (L4 > 1e-3)
     keep &= np.abs(P.L1 - P.L2) * 1.001 < L4
     return G[keep]
+
+
+def quadrant_misses(arm: Arm, fixed, **kw) -> npt.NDArray[np.float64]:
+    """Misses [mm] at :data:`QUADRANT_TARGETS` of :func:`ik_chain` with ``fixed`` corrected."""
+    return miss(arm, QUADRANT_TARGETS, ik_chain(arm, QUADRANT_TARGETS, fixed, **kw)["q"])
+
+# --------------------------------------------------------------------------- the register's domains
+def _arm(**changes) -> Arm:
+    """The palletizer of data/arms/palletizer.toml, with lengths changed where asked."""
+    from analysis.kinematics.arm import load_arm
+
+    arm = load_arm("palletizer")
+    return Arm(arm.params.with_(**changes)) if changes else arm
+
+
+def claim_grid() -> dict[str, np.ndarray]:
+    """Grid targets, reachable or not, on the assumed arm and on one with L2 = 150 mm: does the
+    triangle (L1, L2, L4) of eq. 2 (the waist facing the target) exist? The arm's solver, joint
+    limits off, on its front branches."""
+    out = []
+    for arm in (_arm(), _arm(L2=150.0)):
+        L1, L2, L3, h = lengths(arm)
+        xs, zs = np.linspace(-540, 540, 13), np.linspace(-h, L1 + L2, 7)
+        G = np.stack(np.meshgrid(xs, xs, zs, indexing="ij"), -1).reshape(-1, 3)
+        G = G[np.hypot(G[:, 0], G[:, 1]) > 1.0]
+        front = [b for b in arm.branches if b.startswith("front")]
+        exists = arm.solve(G, front, limits=False).ok.any(axis=-1)
+        L4 = np.hypot(np.hypot(G[:, 0], G[:, 1]) - L3, G[:, 2] + h)
+        out.append({"L1": np.full(len(G), L1), "L2": np.full(len(G), L2), "L4": L4,
+                    "triangle_exists": exists})  # fmt: skip
+    return {k: np.concatenate([o[k] for o in out]) for k in out[0]}
+
+
+def arm_family() -> dict[str, np.ndarray]:
+    """The assumed arm and one with L2 = 150 mm: is the triangle isosceles at every quadrant
+    target?"""
+    rows = []
+    for arm in (_arm(), _arm(L2=150.0)):
+        L1, L2, L3, h = lengths(arm)
+        G = QUADRANT_TARGETS
+        L4 = np.hypot(np.hypot(G[:, 0], G[:, 1]) - L3, G[:, 2] + h)
+        sides = np.stack([np.full_like(L4, L1), np.full_like(L4, L2), L4], -1)
+        d = np.abs(sides[:, [0, 0, 1]] - sides[:, [1, 2, 2]]).min(axis=-1)
+        rows.append((L1, L2, bool((d < 1e-9).all())))
+    return {k: np.array(v) for k, v in zip(("L1", "L2", "isosceles_everywhere"), zip(*rows, strict=True), strict=True)}  # noqa: E501
+
+
+def wrong_models() -> dict[str, np.ndarray]:
+    """Models with one length wrong (each by 25 %): the round trip FK(IK(G)) through the wrong
+    model, and the same angles on the arm, at 200 seeded targets."""
+    arm = _arm()
+    q = level_configurations(arm, 200, np.random.default_rng(5))
+    G, rt, miss = arm.fk(q), [], []
+    for k in ("L1", "L2", "L3", "h"):
+        model = _arm(**{k: 1.25 * arm.params[k]})
+        qm = model.solve(G).branch(model.branches[0])
+        ok = np.isfinite(qm).all(-1)
+        rt.append(np.linalg.norm(model.fk(qm[ok]) - G[ok], axis=-1).max())
+        miss.append(np.linalg.norm(arm.fk(qm[ok]) - G[ok], axis=-1).max())
+    return {"round_trip_mm": np.array(rt), "arm_miss_mm": np.array(miss)}
+
+
+def target_pairs() -> dict[str, np.ndarray]:
+    """Consecutive quadrant targets sent to steppers that count from where they stand: the
+    angles sent as computed (relative to the initial pose) and as the difference of two IKs."""
+    arm = _arm()
+    G = QUADRANT_TARGETS
+    q0 = np.array([0.0, -np.pi / 2, np.pi / 2, np.pi / 2])  # eq. 7, where the motors start
+    q = arm.solve(G).branch(arm.branches[0]) - q0  # motor moves from the initial pose
+    a, b = q[:-1], q[1:]
+    sent = np.linalg.norm(arm.fk(q0 + a + b) - G[1:], axis=-1)
+    diff = np.linalg.norm(arm.fk(q0 + a + (b - a)) - G[1:], axis=-1)
+    return {"miss_as_computed_mm": sent, "miss_as_difference_mm": diff}
+
+
+def senses() -> dict[str, np.ndarray]:
+    """At the initial pose: do the rotation vectors of a growing alpha (theta2 = -pi/2 - alpha)
+    and a growing beta (theta3 = pi/2 + beta) point the same way?"""
+    arm, eps = _arm(), 1e-6
+    q0 = np.array([0.0, -np.pi / 2, np.pi / 2, np.pi / 2])
+
+    def turn(i, j, dq):
+        u, v = (arm.frames(q)[j] - arm.frames(q)[i] for q in (q0, q0 + dq))
+        return np.cross(u, v - u)
+
+    wa = turn(2, 3, np.array([0, -eps, 0, 0]))
+    wb = turn(3, 4, np.array([0, 0, eps, 0]))
+    return {"same_sense": np.array([float(wa @ wb) > 0])}

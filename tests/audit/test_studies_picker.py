@@ -1,6 +1,6 @@
-"""Seed 002 checks (analysis.audit.picker_checks): the reading summary of the joint laws, the
-sensitivity of the sec. 4 comparison to model errors, the instrument misalignment and the
-findings list. Numbers that depend on the assumed dimensions are tested as properties
+"""Seed 002's studies (analysis.studies.picker, formerly analysis.audit.picker_checks): the
+reading summary of the joint laws, the sensitivity of the sec. 4 comparison to model errors and
+the instrument misalignment. Numbers that depend on the assumed dimensions are tested as properties
 (e.g. a roll about the jaw axis cannot move a marker on that axis), not as magic values."""
 
 from __future__ import annotations
@@ -10,9 +10,8 @@ import math
 import numpy as np
 import pytest
 
-from analysis.audit import picker_checks as chk
-from analysis.audit.findings import KINDS
 from analysis.kinematics import picker as pk
+from analysis.studies import picker as chk
 
 PICKER = pk.load_picker()
 
@@ -51,22 +50,3 @@ def test_planar_mobility():
     assert chk.planar_mobility(9, 9) == 6  # the two chains as sec. 3.2 lists them
     assert chk.planar_mobility(11, 14) == 2  # with fore-arm, link 5 and the triangle pivot
     assert chk.planar_mobility(4, 4) == 1  # a four-bar
-
-
-def test_findings():
-    found = {f.id: f for f in chk.findings(PICKER)}
-    assert all(f.kind in KINDS or not f.kind for f in found.values())
-    wrong = {k for k, f in found.items() if f.verdict == "wrong"}
-    assert {
-        "pick-units-omega",
-        "pick-xref-eq18",
-        "pick-xref-eq9",
-        "pick-reasoning-opening",
-        "pick-claim-random",
-        "pick-label-active-chain",
-    } <= wrong
-    assert found["pick-units-omega"].kind == "unit"
-    assert found["pick-reasoning-opening"].kind == "reasoning"
-    assert found["pick-claim-solvable"].verdict == "undecidable"
-    assert found["pick-topology"].verdict == "holds"
-    assert "18.0 mm" in found["pick-reasoning-opening"].evidence

@@ -1,5 +1,6 @@
-"""Seed 001 checks (analysis.audit.palletizer_checks): the symbolic verdicts on eqs. 8 and 11,
-the printed IK chain item by item, the four-solution enumeration and the findings list.
+"""Seed 001's studies (analysis.studies.palletizer, formerly analysis.audit.palletizer_checks):
+the symbolic verdicts on eqs. 8 and 11, the printed IK chain item by item, the four-solution
+enumeration (the register's checks are tests/audit/test_registers.py).
 
 Numeric tolerance 1e-9 mm: lengths are a few hundred mm (assumed, data/arms/palletizer.toml:
 the paper prints none), float64 round-off ~1e-13 mm; every printed error is >= several mm (the
@@ -15,9 +16,8 @@ import sympy as sp
 from hypothesis import given
 from hypothesis import strategies as st
 
-from analysis.audit import palletizer_checks as chk
-from analysis.audit.findings import KINDS, Finding
 from analysis.kinematics.arm import Arm, load_arm
+from analysis.studies import palletizer as chk
 from helpers import assert_points_close
 
 ATOL_MM = 1e-9
@@ -28,10 +28,6 @@ PAL = load_arm("palletizer")
 def pal():
     return load_arm("palletizer")
 
-
-@pytest.fixture(scope="module")
-def found(pal):
-    return {f.id: f for f in chk.findings(pal)}
 
 
 def test_eq11_rows_against_the_product_of_the_printed_matrices():
@@ -165,39 +161,6 @@ def test_ik_chain_rejects_unknown_items(pal):
         chk.ik_chain(pal, [100.0, 0.0, 50.0], (), H_reading="up")
 
 
-def test_findings_are_well_formed_and_cover_the_brief(found):
-    assert all(isinstance(f, Finding) and (f.kind in KINDS or not f.kind) for f in found.values())
-    wrong = {k for k, f in found.items() if f.verdict == "wrong"}
-    assert {
-        "pal-eq11-s4L3",
-        "pal-eq11-label",
-        "pal-eq3-H",
-        "pal-eq3-alpha2",
-        "pal-eq3-beta1",
-        "pal-eq4-alpha",
-        "pal-eq6-quadrant",
-        "pal-eq12-theta4",
-        "pal-claim-unique",
-        "pal-claim-isosceles",
-        "pal-claim-exact",
-    } <= wrong
-    assert {k for k, f in found.items() if f.verdict == "holds"} >= {
-        "pal-eq7",
-        "pal-eq2",
-        "pal-eq5",
-    }
-    assert found["pal-claim-metres"].verdict == "undecidable"
-    assert found["pal-eq11-label"].corrected == "t24"
-
-
-def test_finding_record_validates():
-    with pytest.raises(ValueError, match="kind"):
-        Finding("x", "y", "p", "c", "typo", "e")
-    with pytest.raises(ValueError, match="needs a kind"):
-        Finding("x", "y", "p", "", "sign", "e")
-
-
-# --- FK(IK) through Pinocchio, and the lengths as parameters -----------------------------------
 @pytest.mark.parametrize("L2", [200.0, 150.0])
 def test_fk_of_ik_through_pinocchio_on_10000_configurations(L2):
     """G = Pinocchio FK of 10,000 seeded level configurations inside the elbow stop; the
@@ -232,13 +195,3 @@ def test_the_stop_makes_the_front_solution_unique(pal):
     kept = c["stop"] > 0
     assert (c["stop+front"][kept] == 1).all() and (c["stop+front"][~kept] == 0).all()
     assert (c["stop"] == 2).any()  # the waist-reversed pose also fits the stop somewhere
-
-
-def test_verdicts_do_not_depend_on_the_assumed_lengths():
-    """The wrong items stay wrong, and the items that hold still hold, with L1 != L2 and
-    other gripper offsets: the verdicts are the paper's, not the assumed numbers'."""
-    base = {f.id: f.verdict for f in chk.findings(load_arm("palletizer"))}
-    other = Arm(load_arm("palletizer").params.with_(L2=150.0, L3=40.0, h=90.0))
-    found = {f.id: f for f in chk.findings(other)}
-    assert {k: f.verdict for k, f in found.items()} == base
-    assert "L2 = 150 mm" in found["pal-claim-unique"].evidence
