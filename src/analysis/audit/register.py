@@ -26,7 +26,7 @@ from analysis.audit.schema import COUNTED, COUNTING_RULE, STATUSES, Cause, Manif
 from analysis.paths import PROJECT, build_dir, data_dir
 
 __all__ = [
-    "BEGIN", "END", "PAPERS", "available", "check", "compare", "coverage", "headline", "items_table",  # noqa: E501
+    "BEGIN", "END", "PAPERS", "available", "check", "check_is_cached", "compare", "coverage", "headline", "items_table",  # noqa: E501
     "load", "register", "register_path", "render_markdown", "write_all",
 ]  # fmt: skip
 
@@ -336,6 +336,11 @@ def write_all(papers=None) -> list[str]:
         write_many_atomic(changed, make_parents=True)
     _store_digests(papers, files)
     return sorted(str(p.relative_to(PROJECT)) for p in changed)
+
+
+def check_is_cached(papers=None) -> bool:
+    """Can :func:`check` answer from the cache (no input changed since the last build)?"""
+    return _cached_digests(list(papers or available())) is not None
 
 
 def check(papers=None) -> list[str]:
