@@ -150,8 +150,8 @@ def sample_q(arm, rng: np.random.Generator, n: int, branch: str | None = None) -
     kept where ``arm.solve(arm.fk(q), branch)`` returns q."""
     hook = getattr(arm, "sample_q", None)
     branch = branch or arm.branches[0]
-    if hook is not None and branch == arm.branches[0]:
-        return np.asarray(hook(rng, n), dtype=float)
+    if hook is not None:  # interfaces item 1: Arm.sample_q(rng, n, *, branch=None)
+        return np.asarray(hook(rng, n, branch=branch), dtype=float)
     lim = [(-np.pi, np.pi) if not lh else lh for lh in arm.limits]
     out = np.empty((0, len(lim)))
     for _ in range(50):
