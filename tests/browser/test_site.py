@@ -44,14 +44,14 @@ def test_site_built_cleanly(site_dir, build_problems):
 
 
 def test_front_page_shows_the_verdicts(page, site_url, shots, blocked):
-    from analysis.audit import grabber_audit, register, table4
+    from analysis.audit import register, table4
     from analysis.audit.schema import COUNTED
 
     reg = register.register("grabber")
     c = reg.counts()
     causes = sum(c[s] for s in COUNTED)
     places = sum(len(x.manifestations) for x in reg.causes if x.status in COUNTED)
-    n = grabber_audit.coverage()[0]["items"]
+    n = register.coverage("grabber")[0]["items"]
     _goto(page, site_url + "index.html")
     page.screenshot(path=shots / "front-page.png", full_page=False)
     page.screenshot(path=shots / "front-page-full.png", full_page=True)

@@ -88,7 +88,7 @@ _LABEL = {  # status -> (singular, plural) for the count cards
 
 def _audit_verdict() -> Verdict:
     """The errata register of seed 000: root causes, where they show, the item audit."""
-    from analysis.audit import grabber_audit, register
+    from analysis.audit import register
     from analysis.audit.schema import COUNTED
 
     # --- the errata register: root causes and where they show ------------------------------
@@ -96,7 +96,7 @@ def _audit_verdict() -> Verdict:
     c = reg.counts()
     counted = [x for x in reg.causes if x.status in COUNTED]
     places = sum(len(x.manifestations) for x in counted)
-    items, _ = grabber_audit.coverage()
+    items, _ = register.coverage("grabber")
     n = items["items"]
     by_kind = (
         pd.DataFrame(

@@ -1,120 +1,366 @@
-"""The registers of every paper: build, write, check, render (the ``errata`` command).
+"""The registers of every paper, built from their data files, and what is generated from them.
 
-Each paper's audit module provides ``register()`` returning a
-:class:`~analysis.audit.schema.Register` (:data:`PAPERS`). This module writes them to
-``data/errata/<paper>.csv`` (the schema of :mod:`analysis.audit.schema`), writes seed 000's
-item-level audit to ``data/errata/grabber_items.csv``, and renders the README block between
-``<!-- errata:begin -->`` and ``<!-- errata:end -->``: per paper a headline that counts
-causes, and the causes with their manifestations beneath. ``check()`` names the files that
-differ from what the audits generate (the CI keeps them current).
+``data/registers/<paper>.toml`` holds a paper's causes, manifestations, statuses, kinds, check
+specs, evidence templates and its ``[summary]``; :func:`register` builds the
+:class:`~analysis.audit.schema.Register` (each manifestation's ``verify`` is its check kind,
+:mod:`analysis.audit.kinds`; each template filled from what the checks and the paper's facts
+computed). Generated from the registers: ``data/errata/<paper>.csv``, seed 000's item table
+``data/errata/grabber_items.csv``, the README block between ``<!-- errata:begin -->`` and
+``<!-- errata:end -->`` (:func:`render_markdown`) and the site's tables. :func:`check` names the
+generated files that differ; a cache keyed by the hash of every input (the data files, the
+package's source) answers it without building the registers when nothing changed.
 """
 
 from __future__ import annotations
 
 import csv
-import importlib
-import importlib.util
+import hashlib
 import io
+import json
+import re
+import tomllib
 from functools import cache
 from pathlib import Path
 
-from analysis.audit.schema import COUNTED, STATUSES, Register, read_rows
-from analysis.paths import PROJECT, data_dir
+from analysis.audit.schema import COUNTED, COUNTING_RULE, STATUSES, Cause, Manifestation, Register
+from analysis.paths import PROJECT, build_dir, data_dir
 
 __all__ = [
-    "BEGIN",
-    "END",
-    "PAPERS",
-    "check",
-    "load",
-    "register",
-    "register_path",
-    "render_markdown",
-    "write_all",
-]
+    "BEGIN", "END", "PAPERS", "available", "check", "check_is_cached", "compare", "coverage", "headline", "items_table",  # noqa: E501
+    "load", "register", "register_path", "render_markdown", "write_all",
+]  # fmt: skip
 
-PAPERS: dict[str, str] = {
-    "grabber": "analysis.audit.grabber_causes",
-    "palletizer": "analysis.audit.palletizer_causes",
-    "picker": "analysis.audit.picker_causes",
-    "gr1": "analysis.audit.gr1_causes",
-}
-"""Paper name -> the module whose ``register()`` builds its register."""
+PAPERS: dict[str, str] = {p: f"registers/{p}.toml" for p in ("grabber", "palletizer", "picker", "gr1")}  # noqa: E501
+"""Paper name -> its register file under ``data/``."""
 BEGIN, END = "<!-- errata:begin -->", "<!-- errata:end -->"
+ITEM_COLUMNS = ("id", "location", "verdict", "kind", "printed", "derived", "evidence", "check")
+VERDICT = {"error": "wrong", "omission": "wrong", "unsupported": "wrong", "holds": "holds"}
 
 
 def available() -> tuple[str, ...]:
-    """Papers whose audit module exists in this checkout."""
-    return tuple(p for p, m in PAPERS.items() if importlib.util.find_spec(m) is not None)
-
-
-@cache
-def register(paper: str) -> Register:
-    """The register of one paper (built by its audit; cached)."""
-    if paper not in PAPERS:
-        raise ValueError(f"no paper {paper!r}; expected one of {', '.join(PAPERS)}")
-    return importlib.import_module(PAPERS[paper]).register()
+    """Papers whose register file exists in this checkout."""
+    return tuple(p for p, f in PAPERS.items() if (data_dir() / f).is_file())
 
 
 def register_path(paper: str) -> Path:
     return data_dir() / "errata" / f"{paper}.csv"
 
 
+class _Namespace:
+    """``{facts.name}`` in a template: the paper's computed facts, by name."""
+
+    def __init__(self, get):
+        self._get = get
+
+    def __getattr__(self, name):
+        return self._get(name)
+
+
+def _printed(spec, paper) -> str:
+    """The printed text a manifestation names: a reference, references, a network order."""
+    if isinstance(spec, str):
+        if not spec.startswith("@"):
+            raise ValueError(f"printed {spec!r}: a reference into the paper ('@id') expected")
+        text = paper.text(spec[1:])
+        rec = paper.record(spec[1:].split("[")[0].split(":")[0].split("#")[0])
+        if rec.type == "listing":  # the transcription's '//' notes are not printed
+            text = "\n".join(ln.split("//")[0].rstrip() for ln in text.splitlines())
+        if rec.type == "extracted":  # nor are the extraction's pinyin glosses, e.g. 運(yùn)
+            text = re.sub(r"\([a-zāáǎàēéěèīíǐìōóǒòūúǔùǖǘǚǜü]+\)", "", text)
+        return text.strip("\n")
+    if isinstance(spec, list):
+        return "\n".join(_printed(s, paper) for s in spec)
+    if "excerpt" in spec:
+        if spec["excerpt"] not in _printed(spec["of"], paper):
+            raise ValueError(f"{spec['excerpt']!r} is not printed in {spec['of']}")
+        return spec["excerpt"]
+    if "order" in spec:
+        return "network order " + ", ".join(r.removeprefix("@figure") for r in spec["order"])
+    raise ValueError(f"printed {spec!r} is not a reference")
+
+
+def _location(spec, paper, given: str | None) -> str:
+    if given:
+        return given
+    if isinstance(spec, dict) and "of" in spec:
+        spec = spec["of"]
+    refs = [spec] if isinstance(spec, str) else spec if isinstance(spec, list) else spec["order"]
+    out = []
+    for r in refs:
+        m = re.match(r"@([^\[\]:#]+)(?:\[(\d+),(\d+)\]|\[(\w+)\]\.(\w+))?", r)
+        loc = paper.record(m[1]).location
+        if m[2]:
+            loc = f"{loc} row {m[2]} col {m[3]}"
+        elif m[4]:
+            loc = f"{loc.split(',')[0].split(' ')[0]} {loc.split(' ')[1]} row {m[4]} {m[5]}"
+        out.append(loc)
+    return "; ".join(dict.fromkeys(out))
+
+
+def _manifestation(cause: dict, m: dict, ctx, check) -> Manifestation:
+    paper = ctx.paper
+    spec = m["check"]
+    printed = _printed(m["printed"], paper)
+    holds = cause["status"] == "holds"
+    corrected = m.get("corrected", (m.get("reading") or printed) if holds else "")
+    memo: dict[str, object] = {}
+
+    def result(text: str):
+        if text not in memo:
+            memo[text] = check(spec, text, ctx)
+        return memo[text]
+
+    readings = tuple(m.get("readings", ()))
+    mm = Manifestation(
+        id=f"{cause['id']}/{m['id']}", cause=cause["id"], status=cause["status"],
+        location=_location(m["printed"], paper, m.get("location")), printed=printed,
+        corrected=corrected, reading=m.get("reading", ""), readings=readings,
+        alternatives=tuple(m.get("alternatives", ())),
+        rests_on=tuple(m.get("rests_on", cause.get("rests_on", ()))),
+        equivalent=tuple(m.get("equivalent", ())), source=repr(m["printed"]) if not
+        isinstance(m["printed"], str) else m["printed"], spec=spec, result=result,
+    )  # fmt: skip
+    ns = {
+        "printed": result(mm.checked), "corrected": result(corrected),
+        "facts": _Namespace(ctx.fact), "readings": [result(t) for t in readings],
+    }  # fmt: skip
+    try:
+        evidence = m.get("evidence", "").format_map(ns)
+    except (AttributeError, KeyError, IndexError, TypeError, ValueError) as exc:
+        raise ValueError(
+            f"{mm.id}: evidence template needs {exc!r}; printed check gave {ns['printed']}, "
+            f"corrected {ns['corrected']}"
+        ) from None
+    return _with(mm, evidence=evidence)
+
+
+def _with(m: Manifestation, **changes) -> Manifestation:
+    from dataclasses import replace
+
+    return replace(m, **changes)
+
+
+def _cells(e: dict, paper):
+    """(slug, reference, location, cell spec) of every cell a ``[[cause.each]]`` names: the
+    cells of a printed matrix, or the given columns of every row of a printed table."""
+    if "matrix" in e:
+        rec = paper.record(e["matrix"])
+        for i, row in enumerate(rec["rows"][: e.get("rows", 4)], start=1):
+            for j in range(1, len(row) + 1):
+                yield (f"{rec.id.lower().replace('_', '-')}-r{i}c{j}", f"@{rec.id}[{i},{j}]",
+                       f"{rec.location} row {i} col {j}", {"cells": [[i, j]]})  # fmt: skip
+    else:
+        rec = paper.record(e["table"])
+        for r in paper.table_rows(rec.id):
+            for c in e["columns"]:
+                yield (f"{rec.id.replace('_', '-')}-r{r}-{c.replace('_', '-')}", f"@{rec.id}[{r}].{c}",  # noqa: E501
+                       f"{rec.location.split(',')[0]} row {r} {c}", {"row": r, "column": c})
+
+
+def _each(cause: dict, e: dict, ctx, check) -> list[Manifestation]:
+    """The printed cells that hold (a ``holds`` cause's ``[[cause.each]]``): one manifestation
+    per cell; the cells that fail are other causes' manifestations (a test checks it)."""
+    out = []
+    for slug, ref, where, cell in _cells(e, ctx.paper):
+        m = {"id": slug, "printed": ref, "check": {**e["check"], **cell}, "location": where}
+        mm = _manifestation(cause, m, ctx, check)
+        if mm.verify(mm.printed):
+            out.append(mm)
+    return out
+
+
+def _also(cause: dict, ctx, check):
+    """The cause's further demonstration: claims over its paper that must hold."""
+    specs = cause.get("also", ())
+
+    def extra() -> bool:
+        return all(check({"kind": "claim"}, s, ctx).ok for s in specs)
+
+    return extra
+
+
+@cache
+def register(paper: str) -> Register:
+    """The register of ``paper``, built from its data file (cached; takes seconds)."""
+    if paper not in PAPERS:
+        raise ValueError(f"no paper {paper!r}; expected one of {', '.join(PAPERS)}")
+    from analysis.audit.context import context
+    from analysis.audit.kinds import check
+
+    raw = tomllib.loads((data_dir() / PAPERS[paper]).read_text(encoding="utf-8"))
+    ctx = context(paper)
+    causes = []
+    for c in raw["cause"]:
+        ms = [_manifestation(c, m, ctx, check) for m in c.get("manifestation", ())]
+        ms += [x for e in c.get("each", ()) for x in _each(c, e, ctx, check)]
+        ns = {"facts": _Namespace(ctx.fact)}
+        if ms:  # a cause's template may name its first manifestation's checks
+            ns.update(printed=ms[0].result(ms[0].checked), corrected=ms[0].result(ms[0].corrected))
+        try:
+            title, evidence = (c[k].format_map(ns) if k in c else "" for k in ("title", "evidence"))
+        except (AttributeError, KeyError, IndexError, TypeError, ValueError) as exc:
+            raise ValueError(f"{c['id']}: evidence template needs {exc!r}; {ns}") from None
+        causes.append(
+            Cause(
+                id=c["id"], title=title, status=c["status"], kind=c["kind"],
+                evidence=evidence, manifestations=tuple(ms),
+                severity=c.get("severity", ""), consequence=c.get("consequence", ""),
+                rests_on=tuple(c.get("rests_on", ())), extra=_also(c, ctx, check),
+            )
+        )
+    ns = {"facts": _Namespace(ctx.fact)}
+    summary = {k: v.format_map(ns) for k, v in raw.get("summary", {}).items()}
+    head = raw["register"]
+    return Register(paper, head["title"], tuple(causes), summary, tuple(raw.get("change", ())))
+
+
+def manifestations():
+    """Every manifestation of every paper's register (the audit API, a contract)."""
+    for p in available():
+        yield from register(p).manifestations
+
+
 def load(paper: str = "grabber"):
     """A paper's register file as a validated DataFrame (for reports and notebooks)."""
     import pandas as pd
 
-    from analysis.audit.schema import COLUMNS
+    from analysis.audit.schema import COLUMNS, read_rows
 
     return pd.DataFrame(read_rows(register_path(paper)), columns=list(COLUMNS))
 
 
-def _items_text() -> str:
-    from analysis.audit.grabber_audit import AUDIT_COLUMNS, audit_table
+# --- the item table: every printed item checked, from the register --------------------------
+def items_table(paper: str = "grabber") -> list[dict[str, str]]:
+    """Every checked printed item of a paper: the manifestations of its causes (verdict from
+    the cause's status) and the checks that hold; one source with the register."""
+    reg = register(paper)
+    return [
+        {"id": m.id, "location": m.location, "verdict": VERDICT.get(c.status, c.status),
+         "kind": c.kind, "printed": m.printed, "derived": m.corrected,
+         "evidence": m.evidence or c.title, "check": m.check}
+        for c in reg.causes
+        for m in c.manifestations
+    ]
 
+
+def compare(paper: str, *records: str):
+    """The checked items printed in the given records (``"eq12"``, ``"T3"``: every manifestation
+    whose printed text is a reference into one of them), printed beside corrected, with the
+    verdict and the evidence: a DataFrame indexed by manifestation id (for notebooks)."""
+    import pandas as pd
+
+    def refs(src: str) -> set[str]:
+        return {m[1] for m in re.finditer(r"@([^\[\]:#',}]+)", src)}
+
+    rows = [dict(r, cause=r["id"].split("/")[0]) for r, m in
+            zip(items_table(paper), register(paper).manifestations, strict=True)
+            if refs(m.source) & set(records)]  # fmt: skip
+    cols = ["cause", "verdict", "printed", "derived", "evidence"]
+    return pd.DataFrame(rows, columns=["id", *cols]).set_index("id")
+
+
+def coverage(paper: str = "grabber"):
+    """Items per verdict, and wrong items per kind of cause (two DataFrames)."""
+    import pandas as pd
+
+    rows = items_table(paper)
+    order = ["holds", "wrong", "uncertain", "notation", "extraction"]
+    verdicts = pd.Series([r["verdict"] for r in rows]).value_counts().reindex(order, fill_value=0)
+    kinds = pd.Series([r["kind"] for r in rows if r["verdict"] == "wrong"]).value_counts()
+    return verdicts.rename("items").to_frame(), kinds.rename("wrong items").to_frame()
+
+
+def _csv(rows, columns) -> str:
     buf = io.StringIO()
-    w = csv.DictWriter(buf, fieldnames=list(AUDIT_COLUMNS), lineterminator="\n")
+    w = csv.DictWriter(buf, fieldnames=list(columns), lineterminator="\n")
     w.writeheader()
-    w.writerows(audit_table())
+    w.writerows(rows)
     return buf.getvalue()
 
 
-def _generated(papers=None) -> dict[Path, str]:
-    """Every file the audits of ``papers`` generate (default: all): path -> content.
+# --- generated files, and the cache that answers check() ------------------------------------
+def _inputs_hash() -> str:
+    """Hash of everything the generated files depend on: the package's source, ``data/``
+    (without the generated errata) and the README outside the block."""
+    h = hashlib.sha256()
+    src = Path(__file__).resolve().parents[1]
+    files = sorted(src.rglob("*.py")) + sorted(
+        p for p in data_dir().rglob("*") if p.is_file() and "errata" not in p.parts
+    )
+    for p in files:
+        h.update(str(p.relative_to(p.anchor)).encode() + b"\0" + p.read_bytes())
+    readme = PROJECT / "README.md"
+    if readme.exists():
+        h.update(_outside_block(readme.read_text(encoding="utf-8")).encode())
+    return h.hexdigest()
 
-    The README block lists every paper, so it is generated only when all are selected: from
-    some papers alone it would drop the others' rows."""
+
+def _outside_block(text: str) -> str:
+    head, _, rest = text.partition(BEGIN)
+    return head + rest.partition(END)[2]
+
+
+def _generated(papers=None) -> dict[Path, str]:
+    """Every file the registers of ``papers`` generate (default: all): path -> content. The
+    README block lists every paper, so it is generated only when all are selected."""
     papers = list(papers or available())
     out = {register_path(p): register(p).csv_text() for p in papers}
     if "grabber" in papers:
-        out[data_dir() / "errata" / "grabber_items.csv"] = _items_text()
+        out[data_dir() / "errata" / "grabber_items.csv"] = _csv(items_table(), ITEM_COLUMNS)
     if set(papers) >= set(available()):
         readme = PROJECT / "README.md"
         out[readme] = readme_text(readme)
     return out
 
 
+def _cached_digests(papers) -> dict[str, str] | None:
+    path = build_dir() / "errata-cache" / f"{_inputs_hash()}-{'-'.join(papers)}.json"
+    return json.loads(path.read_text()) if path.exists() else None
+
+
+def _store_digests(papers, files: dict[Path, str]) -> None:
+    path = build_dir() / "errata-cache" / f"{_inputs_hash()}-{'-'.join(papers)}.json"
+    path.parent.mkdir(parents=True, exist_ok=True)
+    digests = {str(p): hashlib.sha256(t.encode()).hexdigest() for p, t in files.items()}
+    path.write_text(json.dumps(digests))
+
+
 def write_all(papers=None) -> list[str]:
-    """Rewrite every register, the item audit and the README block; return what changed."""
+    """Rewrite every register CSV, the item table and the README block; what changed."""
     from analysis.app.safe_io import write_many_atomic
 
+    papers = list(papers or available())
     files = _generated(papers)
     changed = {p: t for p, t in files.items() if not p.exists() or p.read_text("utf-8") != t}
     if changed:
         write_many_atomic(changed, make_parents=True)
+    _store_digests(papers, files)
     return sorted(str(p.relative_to(PROJECT)) for p in changed)
 
 
+def check_is_cached(papers=None) -> bool:
+    """Can :func:`check` answer from the cache (no input changed since the last build)?"""
+    return _cached_digests(list(papers or available())) is not None
+
+
 def check(papers=None) -> list[str]:
-    """The generated files that are missing or out of date (empty: all current)."""
-    files = _generated(papers)
-    stale = [p for p, t in files.items() if not p.exists() or p.read_text("utf-8") != t]
-    return sorted(str(p.relative_to(PROJECT)) for p in stale)
+    """The generated files that are missing or out of date (empty: all current). Answered
+    from the cache when every input is unchanged since the registers were last built."""
+    papers = list(papers or available())
+    digests = _cached_digests(papers)
+    if digests is None:
+        files = _generated(papers)
+        _store_digests(papers, files)
+        digests = {str(p): hashlib.sha256(t.encode()).hexdigest() for p, t in files.items()}
+    stale = []
+    for p, d in digests.items():
+        path = Path(p)
+        if not path.exists() or hashlib.sha256(path.read_bytes()).hexdigest() != d:
+            stale.append(str(path.relative_to(PROJECT)))
+    return sorted(stale)
 
 
-# ---------------------------------------------------------------------------------------------
-# README
-# ---------------------------------------------------------------------------------------------
+# --- the README block ----------------------------------------------------------------------
 def _md(s: str, limit: int | None = None) -> str:
     s = " ".join(str(s).split())
     if limit and len(s) > limit:
@@ -122,28 +368,18 @@ def _md(s: str, limit: int | None = None) -> str:
     return s.replace("|", "\\|")
 
 
+_NAMES = {
+    "error": ("error", "errors"), "omission": ("omission", "omissions"),
+    "unsupported": ("unsupported claim", "unsupported claims"),
+    "uncertain": ("reading the extraction leaves uncertain", "readings the extraction leaves uncertain"),  # noqa: E501
+    "notation": ("notation variant", "notation variants"),
+    "extraction": ("extraction artefact", "extraction artefacts"),
+    "holds": ("audited claim that holds", "audited claims that hold"),
+}  # fmt: skip
+
+
 def _n(n: int, status: str) -> str:
-    return f"{n} {_SINGULAR[status] if n == 1 else _PLURAL[status]}"
-
-
-_SINGULAR = {
-    "error": "error",
-    "omission": "omission",
-    "unsupported": "unsupported claim",
-    "uncertain": "reading the extraction leaves uncertain",
-    "notation": "notation variant",
-    "extraction": "extraction artefact",
-    "holds": "audited claim that holds",
-}
-_PLURAL = {
-    "error": "errors",
-    "omission": "omissions",
-    "unsupported": "unsupported claims",
-    "uncertain": "readings the extraction leaves uncertain",
-    "notation": "notation variants",
-    "extraction": "extraction artefacts",
-    "holds": "audited claims that hold",
-}
+    return f"{n} {_NAMES[status][n != 1]}"
 
 
 def headline(reg: Register) -> str:
@@ -161,43 +397,43 @@ def headline(reg: Register) -> str:
     return text
 
 
+def _cause_row(c: Cause) -> str:
+    where = ""
+    if c.manifestations and c.status != "holds":
+        where = f"{len(c.manifestations)}: " + _md(c.locations, 90)
+    return f"| `{c.id}` | {c.status} | {c.severity} | {c.kind} | {_md(c.title, 140)} | {where} |"
+
+
 def render_paper(reg: Register) -> str:
-    lines = [
-        f"### {reg.title}",
+    lines = [f"### {reg.title}", "", headline(reg)]
+    if reg.summary.get("verdict"):
+        lines += ["", f"*Verdict.* {_md(reg.summary['verdict'])}"]
+    if reg.summary.get("take_away"):
+        lines += ["", f"*Take away.* {_md(reg.summary['take_away'])}"]
+    lines += [
         "",
-        headline(reg),
-        f"Register: `data/errata/{reg.paper}.csv` (one row per cause, its manifestations "
-        "beneath; every row names its test).",
+        f"Register: `data/registers/{reg.paper}.toml`, generated `data/errata/{reg.paper}.csv` "
+        "(one row per cause, its manifestations beneath; every row names its test).",
         "",
-        "| cause | status | kind | what | where |",
-        "|---|---|---|---|---|",
+        "| cause | status | severity | kind | what | where |",
+        "|---|---|---|---|---|---|",
     ]
     order = {s: i for i, s in enumerate(STATUSES)}
-    for c in sorted(reg.causes, key=lambda c: order[c.status]):
-        where = f"{len(c.manifestations)}: " + _md(c.locations, 90) if c.manifestations else ""
-        lines.append(f"| `{c.id}` | {c.status} | {c.kind} | {_md(c.title, 140)} | {where} |")
+    lines += [_cause_row(c) for c in sorted(reg.causes, key=lambda c: order[c.status])]
     return "\n".join(lines) + "\n"
 
 
 def render_markdown(papers=None) -> str:
-    """The README block: each paper's headline and causes."""
+    """The README block: the counting rule, then each paper's headline, summary and causes."""
     papers = papers or available()
     blocks = [
-        "_Generated from the audits by `python -m analysis errata --write`; do not edit by hand._",
+        "_Generated from `data/registers/` by `python -m analysis errata --write`; do not edit "
+        "by hand._",
+        "",
+        "**Counting rule** (every paper): " + " ".join(COUNTING_RULE),
         "",
     ]
-    for p in papers:
-        blocks.append(render_paper(register(p)))
-        if p == "grabber":  # its uncertain readings right under its table
-            from analysis.papers import grabber as paper
-
-            blocks += [
-                "Left undecidable by the text extraction of seed 000 (`analysis.papers.grabber."
-                "UNCERTAIN`):",
-                "",
-                *[f"- **{_md(k)}**: {_md(v)}" for k, v in paper.UNCERTAIN.items()],
-                "",
-            ]
+    blocks += [render_paper(register(p)) for p in papers]
     return "\n".join(blocks)
 
 

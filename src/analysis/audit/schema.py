@@ -1,25 +1,22 @@
-"""One register schema for every paper: root causes, their manifestations, a test for each.
+"""One register schema for every paper: root causes, where each shows, the check of each.
 
-A :class:`Cause` is one thing the paper got wrong (or left out, or that the extraction makes
-undecidable), stated once: a single-argument arctangent is one cause even where it shows up
-in five equations, a figure and three table cells. Each place it shows is a
-:class:`Manifestation` with the printed text, the corrected text and a ``verify`` predicate
-that must reject the printed text and accept the corrected one. Each cause has a
-``demonstrate`` function: its test, which fails if the printed form were right.
+A :class:`Cause` is one thing the paper got wrong (or left out, or cannot be decided), stated
+once; each place it shows is a :class:`Manifestation` with the printed text (a reference into
+``analysis.papers``), the corrected text and ``verify(text) -> bool``, a shared check kind
+(:mod:`analysis.audit.kinds`) that decides a text by computation. ``demonstrate()`` is the
+cause's test: the printed forms fail and the corrections pass; it fails once the printed texts
+are replaced by the corrected ones. An ``uncertain`` cause demonstrates the ambiguity instead:
+its readings differ in what they imply (one is right, one is not).
 
-Statuses (:data:`STATUSES`)
----------------------------
-``error``        the paper states something wrong
-``omission``     the paper leaves out what its claim needs (a missing check, routine, step)
-``unsupported``  a claim with no evidence in the paper
-``uncertain``    the reading depends on how the extraction is put back together
-``notation``     a variant of notation, not an error (counted apart)
-``extraction``   damage done by the text extraction, not by the paper (counted apart)
-``holds``        an audited claim that the checks confirm
+Statuses (:data:`STATUSES`): ``error`` the paper states something wrong; ``omission`` it leaves
+out what its claim needs; ``unsupported`` a claim with no evidence in the paper; ``uncertain``
+what cannot be decided without what the extraction lost; ``notation`` a variant of notation;
+``extraction`` damage done by the text extraction; ``holds`` what the checks confirm.
 
-Files: one CSV per paper, ``data/errata/<paper>.csv``, columns :data:`COLUMNS`. A cause row
-has an empty ``cause`` column; its manifestation rows name it there. ``check`` is the test
-node id (``tests/audit/test_register.py::test_cause[<id>]`` or ``::test_manifestation[<id>]``).
+Severity of a counted cause (:data:`SEVERITIES`): ``breaks`` the robot or program does not work
+(no motion, a crash, nonsense commands); ``wrong-result`` it works and gives wrong numbers;
+``misleading`` a claim or reasoning a reader would act on wrongly; ``cosmetic`` a slip a reader
+corrects without consequence.
 """
 
 from __future__ import annotations
@@ -27,99 +24,82 @@ from __future__ import annotations
 import csv
 import io
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from pathlib import Path
 
 __all__ = [
-    "COLUMNS",
-    "KINDS",
-    "STATUSES",
-    "Cause",
-    "Manifestation",
-    "Register",
-    "all_fail",
-    "make_cause",
-    "read_rows",
-    "safe",
-    "validate_rows",
-]
+    "COLUMNS", "COUNTED", "COUNTING_RULE", "KINDS", "SEVERITIES", "STATUSES", "Cause",
+    "Manifestation", "Register", "read_rows", "validate_rows",
+]  # fmt: skip
 
-STATUSES: tuple[str, ...] = (
-    "error",
-    "omission",
-    "unsupported",
-    "uncertain",
-    "notation",
-    "extraction",
-    "holds",
-)
+STATUSES = ("error", "omission", "unsupported", "uncertain", "notation", "extraction", "holds")
 COUNTED = ("error", "omission", "unsupported")
-"""Statuses that count against the paper in a headline."""
-KINDS: tuple[str, ...] = (
-    "sign",
-    "index",
-    "label",
-    "missing term",
-    "branch/quadrant",
-    "transcription",
-    "unit",
-    "cross-reference",
-    "undefined symbol",
-    "PLC semantics",
-    "VB semantics",
-    "implementation",
-    "claim",
-    "reasoning",
-    "notation",
-    "extraction",
+"""Statuses that count against the paper."""
+SEVERITIES = ("breaks", "wrong-result", "misleading", "cosmetic")
+KINDS = (
+    "sign", "index", "label", "missing term", "branch/quadrant", "transcription", "unit",
+    "cross-reference", "undefined symbol", "PLC semantics", "VB semantics", "implementation",
+    "claim", "reasoning", "notation", "extraction",
+)  # fmt: skip
+COUNTING_RULE = (
+    "A root cause is counted once, however many places it shows in.",
+    "A table cell or figure that follows from another cause is a manifestation of that cause.",
+    "A sub-point of a cause is one of its manifestations, not a cause of its own.",
+    "What a paper does not list but any reader would take from a library (a vendor's "
+    "subroutine, a standard formula) is not an omission.",
+    "What cannot be decided without data the extraction lost is uncertain, not counted.",
+    "The item table and the register are one source (the items are the register's "
+    "manifestations and the checks that hold) and never disagree.",
 )
-COLUMNS: tuple[str, ...] = (
-    "id",
-    "cause",
-    "status",
-    "kind",
-    "location",
-    "printed",
-    "corrected",
-    "evidence",
-    "check",
-)
+"""The one counting rule for every paper (shown in the README block and on the site)."""
+COLUMNS = (
+    "id", "cause", "status", "kind", "severity", "location", "printed", "reading", "corrected",
+    "alternatives", "rests_on", "evidence", "check",
+)  # fmt: skip
 _ID = re.compile(r"^[a-z0-9][a-z0-9.-]*(/[a-z0-9][a-z0-9.-]*)?$")
-_CHECK = re.compile(r"^tests/(\w+/)*test_\w+\.py::\w+(\[[^\]]+\])?$")
-TEST_FILE = "tests/audit/test_register.py"
-
-
-def _never(text: str) -> bool:
-    return False
+TEST = "tests/audit/test_registers.py"
 
 
 @dataclass(frozen=True)
 class Manifestation:
-    """One place a cause shows: a printed item, its correction and the check between them.
-
-    ``verify(text)`` decides whether a text of the same notation is right; the register
-    test asserts ``verify(printed)`` is False and ``verify(corrected)`` is True (for an
-    ``uncertain`` cause: that the two readings differ).
-    """
+    """One place a cause shows. ``verify(text)`` is True only when ``text`` states what the
+    paper should have printed, decided by the check kind ``spec`` (never by the register's
+    words). ``reading``: the printed item put in the check's notation, where the print is not
+    already in it (a claim as a predicate); ``readings``: the readings an uncertain print allows."""
 
     id: str
+    cause: str
+    status: str
     location: str
     printed: str
     corrected: str
-    evidence: str
-    verify: Callable[[str], bool] = field(default=_never, repr=False, compare=False)
-    source: str = field(default="", compare=False)
-    """The audit item it comes from, if any (seed 000's item audit)."""
+    evidence: str = ""
+    reading: str = ""
+    readings: tuple[str, ...] = ()
+    alternatives: tuple[str, ...] = ()
+    rests_on: tuple[str, ...] = ()
+    equivalent: tuple[str, ...] = ()
+    source: str = ""
+    """The reference(s) into the paper the printed text comes from (``@eq12[2,2]``)."""
+    spec: Mapping = field(default_factory=dict, repr=False, compare=False)
+    result: Callable = field(default=lambda text: None, repr=False, compare=False)
+
+    def verify(self, text: str) -> bool:
+        return bool(self.result(text))
+
+    @property
+    def checked(self) -> str:
+        """The text in the check's notation that stands for what the paper prints."""
+        return self.reading or self.printed
 
     @property
     def check(self) -> str:
-        return f"{TEST_FILE}::test_manifestation[{self.id}]"
+        return f"{TEST}::test_manifestation[{self.id}]"
 
 
 @dataclass(frozen=True)
 class Cause:
-    """A root cause with its manifestations and the test that demonstrates it."""
+    """A root cause, its manifestations and its demonstration."""
 
     id: str
     title: str
@@ -127,7 +107,10 @@ class Cause:
     kind: str
     evidence: str
     manifestations: tuple[Manifestation, ...] = ()
-    demonstrate: Callable[[], bool] = field(default=lambda: False, repr=False, compare=False)
+    severity: str = ""
+    consequence: str = ""
+    rests_on: tuple[str, ...] = ()
+    extra: Callable = field(default=lambda: True, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         if not _ID.match(self.id) or "/" in self.id:
@@ -136,26 +119,50 @@ class Cause:
             raise ValueError(f"cause {self.id}: status {self.status!r} not in {STATUSES}")
         if self.kind not in KINDS:
             raise ValueError(f"cause {self.id}: kind {self.kind!r} not in {KINDS}")
+        if self.status in COUNTED and (self.severity not in SEVERITIES or not self.consequence):
+            raise ValueError(f"cause {self.id}: a counted cause needs a severity and consequence")
         for m in self.manifestations:
             if not m.id.startswith(self.id + "/") or not _ID.match(m.id):
                 raise ValueError(f"manifestation {m.id!r} must be named {self.id}/<slug>")
 
     @property
     def check(self) -> str:
-        return f"{TEST_FILE}::test_cause[{self.id}]"
+        return f"{TEST}::test_cause[{self.id}]"
 
     @property
     def locations(self) -> str:
         return "; ".join(dict.fromkeys(m.location for m in self.manifestations))
 
+    def demonstrate(self, texts: Mapping[str, str] | None = None) -> bool:
+        """The cause's test, on the printed texts (or on ``texts``: manifestation id -> text in
+        place of the printed one). A finding: every printed text fails and every correction
+        passes. Uncertain: each manifestation's readings differ in verdict. Holds: every printed
+        text passes."""
+        texts = texts or {}
+        ms = self.manifestations
+        if self.status == "holds":
+            return all(m.verify(texts.get(m.id, m.checked)) for m in ms) and self.extra()
+        if self.status == "uncertain":  # the print's readings differ (with a text printed: one)
+            return all(
+                len({m.verify(t) for t in ((texts[m.id],) if m.id in texts else m.readings)}) == 2
+                for m in ms
+            ) and self.extra()
+        return (
+            bool(ms)
+            and all(not m.verify(texts.get(m.id, m.checked)) and m.verify(m.corrected) for m in ms)
+            and self.extra()
+        )
+
 
 @dataclass(frozen=True)
 class Register:
-    """The causes found in one paper."""
+    """The causes found in one paper, its summary and the changes against earlier versions."""
 
     paper: str
     title: str
     causes: tuple[Cause, ...]
+    summary: Mapping = field(default_factory=dict)
+    changes: tuple[Mapping, ...] = ()
 
     def __post_init__(self) -> None:
         ids = [c.id for c in self.causes] + [m.id for c in self.causes for m in c.manifestations]
@@ -170,11 +177,14 @@ class Register:
         raise ValueError(f"register {self.paper} has no cause {cause_id!r}")
 
     def manifestation(self, mid: str) -> Manifestation:
-        cause = self.cause(mid.split("/")[0])
-        for m in cause.manifestations:
+        for m in self.cause(mid.split("/")[0]).manifestations:
             if m.id == mid:
                 return m
         raise ValueError(f"register {self.paper} has no manifestation {mid!r}")
+
+    @property
+    def manifestations(self) -> tuple[Manifestation, ...]:
+        return tuple(m for c in self.causes for m in c.manifestations)
 
     def counts(self) -> dict[str, int]:
         """Causes per status (every status present, zero included)."""
@@ -182,39 +192,32 @@ class Register:
 
     @property
     def n_manifestations(self) -> int:
-        return sum(len(c.manifestations) for c in self.causes)
+        return sum(len(c.manifestations) for c in self.causes if c.status != "holds")
 
     def rows(self) -> list[dict[str, str]]:
-        """The CSV rows: each cause, then its manifestations."""
+        """The CSV rows: each cause, then its manifestations (the checks that hold are the
+        item table's, not rows here)."""
         out = []
         for c in self.causes:
-            out.append(
-                {
-                    "id": c.id,
-                    "cause": "",
-                    "status": c.status,
-                    "kind": c.kind,
-                    "location": c.locations or "(the paper as a whole)",
-                    "printed": "",
-                    "corrected": "",
-                    "evidence": f"{c.title} {c.evidence}".strip(),
-                    "check": c.check,
-                }
-            )
-            for m in c.manifestations:
-                out.append(
-                    {
-                        "id": m.id,
-                        "cause": c.id,
-                        "status": c.status,
-                        "kind": c.kind,
-                        "location": m.location,
-                        "printed": m.printed,
-                        "corrected": m.corrected,
-                        "evidence": m.evidence,
-                        "check": m.check,
-                    }
-                )
+            if c.status == "holds" and len(c.manifestations) > 3:
+                shown = ()
+            else:
+                shown = c.manifestations
+            out.append({
+                "id": c.id, "cause": "", "status": c.status, "kind": c.kind,
+                "severity": c.severity, "location": c.locations or "(the paper as a whole)",
+                "printed": "", "reading": "", "corrected": "", "alternatives": "",
+                "rests_on": "; ".join(c.rests_on), "evidence": f"{c.title} {c.evidence}".strip(),
+                "check": c.check,
+            })  # fmt: skip
+            for m in shown:
+                out.append({
+                    "id": m.id, "cause": c.id, "status": c.status, "kind": c.kind,
+                    "severity": c.severity, "location": m.location, "printed": m.printed,
+                    "reading": m.reading, "corrected": m.corrected,
+                    "alternatives": " | ".join(m.alternatives), "rests_on": "; ".join(m.rests_on),
+                    "evidence": m.evidence, "check": m.check,
+                })  # fmt: skip
         return out
 
     def csv_text(self) -> str:
@@ -225,9 +228,9 @@ class Register:
         return buf.getvalue()
 
 
-def read_rows(path: Path) -> list[dict[str, str]]:
+def read_rows(path) -> list[dict[str, str]]:
     """Read and validate a register CSV (see :func:`validate_rows`)."""
-    with path.open(newline="", encoding="utf-8") as fh:
+    with open(path, newline="", encoding="utf-8") as fh:
         reader = csv.DictReader(fh)
         header = tuple(reader.fieldnames or ())
         rows = list(reader)
@@ -238,7 +241,7 @@ def read_rows(path: Path) -> list[dict[str, str]]:
 
 
 def validate_rows(rows: list[dict[str, str]], where: str = "register") -> None:
-    """Raise ValueError naming the line for any row that breaks the schema."""
+    """Raise ValueError naming the line of a row that breaks the schema."""
     causes: dict[str, str] = {}
     seen: set[str] = set()
     for n, r in enumerate(rows, start=2):
@@ -248,48 +251,18 @@ def validate_rows(rows: list[dict[str, str]], where: str = "register") -> None:
         if not rid or rid in seen or not _ID.match(rid):
             raise ValueError(f"{where} line {n}: id {rid!r} is empty, malformed or duplicated")
         seen.add(rid)
-        if r["status"] not in STATUSES:
-            raise ValueError(f"{where} line {n} ({rid}): status {r['status']!r} not in {STATUSES}")
-        if r["kind"] not in KINDS:
-            raise ValueError(f"{where} line {n} ({rid}): kind {r['kind']!r} not in {KINDS}")
-        if not _CHECK.match(r["check"]):
-            raise ValueError(f"{where} line {n} ({rid}): check {r['check']!r} is not a test id")
-        for col in ("location", "evidence"):
-            if not r[col].strip():
-                raise ValueError(f"{where} line {n} ({rid}): column {col!r} is empty")
+        if r["status"] not in STATUSES or r["kind"] not in KINDS:
+            raise ValueError(f"{where} line {n} ({rid}): status or kind not in the schema")
+        if r["status"] in COUNTED and r["severity"] not in SEVERITIES:
+            raise ValueError(f"{where} line {n} ({rid}): severity {r['severity']!r}")
+        if not r["check"].startswith(TEST + "::") or not r["location"].strip():
+            raise ValueError(f"{where} line {n} ({rid}): no test id or no location")
         if r["cause"]:
-            if r["cause"] not in causes:
-                raise ValueError(f"{where} line {n} ({rid}): cause {r['cause']!r} not above it")
-            if not rid.startswith(r["cause"] + "/") or r["status"] != causes[r["cause"]]:
-                raise ValueError(f"{where} line {n} ({rid}): not consistent with its cause")
-            if not (r["printed"].strip() and r["corrected"].strip()):
-                raise ValueError(f"{where} line {n} ({rid}): a manifestation needs both texts")
+            if r["cause"] not in causes or not rid.startswith(r["cause"] + "/"):
+                raise ValueError(f"{where} line {n} ({rid}): not under its cause")
+            if r["status"] != causes[r["cause"]] or not r["printed"] or not r["corrected"]:
+                raise ValueError(f"{where} line {n} ({rid}): status or texts missing")
+        elif "/" in rid:
+            raise ValueError(f"{where} line {n} ({rid}): a cause id has no '/'")
         else:
-            if "/" in rid:
-                raise ValueError(f"{where} line {n} ({rid}): a cause id has no '/'")
             causes[rid] = r["status"]
-
-
-# --- building registers ------------------------------------------------------------------
-def safe(fn):
-    """A verify predicate that answers False instead of raising on a malformed text."""
-
-    def wrapped(text: str) -> bool:
-        try:
-            return bool(fn(text))
-        except Exception:  # a text the predicate cannot read is not a right text
-            return False
-
-    return wrapped
-
-
-def all_fail(ms) -> bool:
-    """The printed texts fail and the corrections pass every manifestation's check."""
-    return all(not m.verify(m.printed) and m.verify(m.corrected) for m in ms)
-
-
-def make_cause(cid, title, status, kind, evidence, ms, demo=None) -> Cause:
-    """A :class:`Cause` whose demonstration is ``demo`` or, by default, :func:`all_fail` of
-    its manifestations."""
-    ms = tuple(ms)
-    return Cause(cid, title, status, kind, evidence, ms, demo or (lambda: all_fail(ms)))

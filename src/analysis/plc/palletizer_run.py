@@ -60,13 +60,13 @@ def _grasp(arm: Arm, wrist_dist, elev, phi) -> npt.NDArray[np.float64]:
 def half_pulse_targets(arm: Arm, n: int, rng: np.random.Generator) -> npt.NDArray[np.float64]:
     """Targets whose exact pulse value of one joint lies within 1e-7 .. 1e-3 pulse of k + 1/2.
 
-    Level configurations inside the elbow stop (:func:`analysis.audit.palletizer_checks.
+    Level configurations inside the elbow stop (:func:`analysis.studies.palletizer.
     level_configurations`); joint j = 0, 1, 2, 3 in turn is moved to ``(k + 1/2 + delta)``
     pulses (theta4 through theta2, since the gripper stays level: theta4 = pi/2 - theta2 -
     theta3), and the target is the forward kinematics. These are the targets where float32
     arithmetic may legitimately round to the other side.
     """
-    from analysis.audit.palletizer_checks import level_configurations
+    from analysis.studies.palletizer import level_configurations
 
     ppr = np.asarray(arm.params.pulses_per_rev, dtype=float)
     out = []
@@ -99,7 +99,7 @@ def cut_targets(arm: Arm, n: int, rng: np.random.Generator) -> npt.NDArray[np.fl
     with that joint set there (theta2 or theta4 moved with it, to keep the gripper level),
     the waist facing the target. Float32 and float64 may wrap such an angle to opposite ends
     of (-180, 180]: the same joint position, counted one revolution apart."""
-    from analysis.audit.palletizer_checks import level_configurations
+    from analysis.studies.palletizer import level_configurations
 
     out = []
     lo, hi = arm.limits[2]

@@ -45,6 +45,8 @@ Semantics modelled (each has a test in ``tests/audit/test_vb6.py``)
   ``Enabled``), ``FrameN``, ``PictureN`` (PictureBox; ``Cls``, ``Scale``, ``Line``,
   ``PSet``, ``Print`` and property writes are recorded, nothing is drawn).
 
+``Exit Sub`` is modelled for the audit's corrections (a refusal that leaves the procedure).
+
 Not modelled (the listing does not use them): arrays, user functions, ``Select Case``,
 ``Do`` loops, ``GoTo``, ``On Error``, Currency, Decimal, Date, Null.
 

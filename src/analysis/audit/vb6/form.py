@@ -5,12 +5,14 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
+from functools import lru_cache
 from typing import Any, ClassVar
 
 from analysis.audit.vb6.functions import CONSTANTS, call_builtin
 from analysis.audit.vb6.parser import Parser
 from analysis.audit.vb6.values import (
     BOOLEAN,
+    DOUBLE,
     EMPTY_VALUE,
     INTEGER,
     LONG,
@@ -29,6 +31,10 @@ from analysis.audit.vb6.values import (
 )
 
 # --------------------------------------------------------------------------- runtime
+
+
+class _ExitSub(Exception):
+    """``Exit Sub``: leaves the procedure (caught by :meth:`VB6Form.call`)."""
 
 
 @dataclass
@@ -77,6 +83,12 @@ def _dims(body: list):
             yield from _dims(st[5])
 
 
+@lru_cache(maxsize=512)
+def _parse(source: str) -> tuple[list, dict]:
+    """The parsed module (the statements are never changed by running them: shared)."""
+    return Parser(source).module()
+
+
 class VB6Form:
     """One form of the listing: module variables, controls, and the event procedures.
 
@@ -90,7 +102,8 @@ class VB6Form:
     ) -> None:
         self.dim_types_all = dim_types_all
         self.trig_degrees = trig_degrees
-        module_dims, self.subs = Parser(source).module()
+        module_dims, subs = _parse(source)
+        self.subs = dict(subs)
         self.controls: dict[str, Control] = {}
         self.module_vars: dict[str, list] = {}  # key -> [display name, type, Value]
         self.writes: list[tuple[str, str, Any]] = []
@@ -142,8 +155,10 @@ class VB6Form:
         return self.module_vars.get(key)
 
     # -- execution
-    def call(self, sub: str) -> dict[str, Any]:
-        """Run the event procedure ``sub``; return its local variables (name -> Value)."""
+    def call(self, sub: str, preset: dict[str, float] | None = None) -> dict[str, Any]:
+        """Run the event procedure ``sub``; return its local variables (name -> Value).
+        ``preset``: locals declared Double with these values on entry (what a statement
+        under test reads, without parsing a Dim and an assignment for each)."""
         key = sub.casefold()
         if key not in self.subs:
             raise ValueError(f"no procedure {sub!r} in the listing; have {sorted(self.subs)}")
@@ -153,7 +168,12 @@ class VB6Form:
         # Dim is not executable in VB: every local exists from procedure entry
         for names in _dims(body):
             self._declare(locals_, names)
-        self._exec_block(body, locals_, display)
+        for name, v in (preset or {}).items():
+            locals_[name.casefold()] = [name, DOUBLE, Value(DOUBLE, float(v))]
+        try:
+            self._exec_block(body, locals_, display)
+        except _ExitSub:
+            pass
         return {v[0]: v[2] for v in locals_.values()}
 
     def _exec_block(self, body: list, locals_: dict, where: str) -> None:
@@ -170,6 +190,8 @@ class VB6Form:
         kind = st[0]
         if kind == "dim":
             return  # declared at procedure entry (see call)
+        if kind == "exit":
+            raise _ExitSub
         if kind == "assign":
             _, name, prop, expr, _line = st
             self._assign(locals_, name, prop, self._eval(expr, locals_))

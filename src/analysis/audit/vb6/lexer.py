@@ -23,7 +23,7 @@ _TOKEN_RE = re.compile(
     re.VERBOSE,
 )
 _KEYWORDS = {
-    "dim", "as", "private", "public", "sub", "end", "if", "then", "else", "elseif", "for",
+    "dim", "as", "private", "public", "sub", "end", "exit", "if", "then", "else", "elseif", "for",
     "to", "step", "next", "and", "or", "not", "mod", "true", "false",
 }  # fmt: skip
 

@@ -171,6 +171,10 @@ class Parser:
             return (*st, line)
         if self.accept("kw", "if"):
             return self.if_statement(line)
+        if self.accept("kw", "exit"):
+            self.expect("kw", "sub")
+            self.end_of_statement()
+            return ("exit", line)
         if self.accept("kw", "for"):
             var = self.expect("name").text
             self.expect("op", "=")

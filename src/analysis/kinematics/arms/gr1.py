@@ -10,7 +10,7 @@ about the axis z4, which lies in the arm plane, perpendicular to the hand. The t
 Inputs: the pose ``(px, py, pz)`` [mm] and the RPY angles ``(alpha, beta, gamma)`` [rad] of
 eqs. 3.14-3.15 (:mod:`analysis.kinematics.rpy`), the thesis's Table 5-3 columns.
 
-Corrected closed form (the errata register, ``analysis.audit.gr1_causes``, says what the
+Corrected closed form (the errata register, ``data/registers/gr1.toml``, says what the
 thesis printed)::
 
     theta1   = atan2(py, px)                   (prints arctan(py/px); + pi: "back")

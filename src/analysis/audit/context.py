@@ -1,0 +1,165 @@
+"""What a paper's checks compute against: its printed records, its arm and the few things a
+paper defines for itself (:class:`Bespoke`: named domains, matrices, substitutions, values,
+predicates and facts, in ``analysis.audit.bespoke.<paper>``, at most 250 lines each).
+
+:func:`context` builds one :class:`Context` per paper and caches what it computes (a domain is
+sampled once per process). Valid configurations come from the arm hook
+:func:`sample_q` (``Arm.sample_q(rng, n)`` where the arm has it, interfaces item 1; until then
+the same contract here: seeded, within the joint limits, solved back to themselves by the arm's
+closed form on the named branch).
+"""
+
+from __future__ import annotations
+
+import importlib
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from functools import cache, reduce
+
+import numpy as np
+import sympy as sp
+
+from analysis import papers
+
+__all__ = ["Bespoke", "Context", "Product", "context", "sample_q"]
+
+
+@dataclass
+class Bespoke:
+    """What one paper defines for its checks, each registered by name."""
+
+    paper: str
+    domains: dict[str, Callable] = field(default_factory=dict)
+    matrices: dict[str, Callable] = field(default_factory=dict)
+    substitutions: dict[str, Callable] = field(default_factory=dict)
+    values: dict[str, Callable] = field(default_factory=dict)
+    predicates: dict[str, Callable] = field(default_factory=dict)
+    facts: dict[str, Callable] = field(default_factory=dict)
+
+    def _add(self, table: str, name: str | None = None):
+        def deco(fn):
+            getattr(self, table)[name or fn.__name__] = fn
+            return fn
+
+        return deco
+
+    def domain(self, name=None):
+        """``fn() -> {symbol name: array}``: a named set of samples (sampled, claim, stl)."""
+        return self._add("domains", name)
+
+    def matrix(self, name=None):
+        """``fn() -> sympy.Matrix``: a named matrix for products."""
+        return self._add("matrices", name)
+
+    def substitution(self, name=None):
+        """``fn() -> {symbol: expression}``."""
+        return self._add("substitutions", name)
+
+    def value(self, name=None):
+        """``fn(row, column) -> float``: a recomputed table cell."""
+        return self._add("values", name)
+
+    def predicate(self, name=None):
+        """``fn(text, ctx) -> Result``: a check no kind expresses."""
+        return self._add("predicates", name)
+
+    def fact(self, name=None):
+        """``fn() -> value``: a computed number an evidence template names."""
+        return self._add("facts", name)
+
+
+@dataclass
+class Context:
+    """A paper, its bespoke definitions and the caches of what they compute."""
+
+    paper: papers.Paper
+    bespoke: Bespoke
+    _cache: dict = field(default_factory=dict, repr=False)
+
+    def _cached(self, table: str, name: str, *args):
+        key = (table, name, args)
+        if key not in self._cache:
+            fns = getattr(self.bespoke, table)
+            if name not in fns:
+                raise ValueError(f"{self.paper.id}: no {table[:-1]} {name!r}")
+            self._cache[key] = fns[name](*args)
+        return self._cache[key]
+
+    def domain(self, name: str) -> Mapping[str, np.ndarray]:
+        return self._cached("domains", name)
+
+    def substitution(self, name: str) -> Mapping:
+        return self._cached("substitutions", name)
+
+    def value(self, name: str, *args) -> float:
+        return self._cached("values", name, *args)
+
+    def fact(self, name: str):
+        return self._cached("facts", name)
+
+    def predicate(self, name: str) -> Callable:
+        if name not in self.bespoke.predicates:
+            raise ValueError(f"{self.paper.id}: no predicate {name!r}")
+        return self.bespoke.predicates[name]
+
+    def matrix(self, name: str) -> sp.Matrix:
+        if name.startswith("@"):
+            return self.paper.matrix(name[1:])
+        return self._cached("matrices", name)
+
+    def product(self, names) -> Product:
+        """The product of named matrices; each entry expanded (trigonometric functions of sums
+        too) when it is first read, ``M[i, j]`` (``M.full()``: every entry)."""
+        names = [names] if isinstance(names, str) else list(names)
+        key = ("product", tuple(names))
+        if key not in self._cache:
+            self._cache[key] = Product(reduce(lambda a, b: a * b, (self.matrix(n) for n in names)))
+        return self._cache[key]
+
+    def facts(self) -> dict:
+        return {k: self.fact(k) for k in self.bespoke.facts}
+
+
+class Product:
+    """A matrix product whose entries are expanded when first read (a check reads a few)."""
+
+    def __init__(self, M: sp.Matrix) -> None:
+        self._M, self._done = M, {}
+        self.shape = M.shape
+
+    def __getitem__(self, ij):
+        if ij not in self._done:
+            self._done[ij] = sp.expand(sp.expand_trig(self._M[ij]))
+        return self._done[ij]
+
+    def full(self) -> sp.Matrix:
+        return sp.Matrix(self.shape[0], self.shape[1], lambda i, j: self[i, j])
+
+
+@cache
+def context(paper: str) -> Context:
+    """The context of ``paper`` (cached for the process)."""
+    mod = importlib.import_module(f"analysis.audit.bespoke.{paper}")
+    return Context(papers.load(paper), mod.B)
+
+
+def sample_q(arm, rng: np.random.Generator, n: int, branch: str | None = None) -> np.ndarray:
+    """``n`` seeded configurations (n, n_joints) [rad] of ``arm`` that its closed form solves
+    back to themselves on ``branch`` (default: the arm's first, the paper's): the arm hook
+    ``Arm.sample_q`` where it exists, else uniform in the joint limits (+-pi where none),
+    kept where ``arm.solve(arm.fk(q), branch)`` returns q."""
+    hook = getattr(arm, "sample_q", None)
+    branch = branch or arm.branches[0]
+    if hook is not None:  # interfaces item 1: Arm.sample_q(rng, n, *, branch=None)
+        return np.asarray(hook(rng, n, branch=branch), dtype=float)
+    lim = [(-np.pi, np.pi) if not lh else lh for lh in arm.limits]
+    out = np.empty((0, len(lim)))
+    for _ in range(50):
+        q = np.column_stack([rng.uniform(lo, hi, 4 * n) for lo, hi in lim])
+        sol = arm.solve(arm.fk(q), branch)
+        back = sol.theta[:, 0]
+        d = np.abs(np.mod(back - q + np.pi, 2 * np.pi) - np.pi)
+        out = np.vstack([out, q[sol.ok[:, 0] & (d.max(axis=-1) < 1e-9)]])
+        if len(out) >= n:
+            return out[:n]
+    raise RuntimeError(f"{arm.name}: fewer than {n} configurations solve back on {branch}")
