@@ -337,3 +337,13 @@ def test_program_with_a_waist_angle_for_the_base_axis(variant):
     on = np.hypot(targets["x_mm"], targets["y_mm"]).to_numpy() <= 1e-6
     assert on[axis].sum() >= 5 and res.reachable[on].all()  # no base-axis refusal left
     assert (res.pulses[on, 0] == round(np.degrees(waist) / 360 * 4000)).all()  # c1 = 318
+
+
+def test_the_scan_watchdog_allows_a_loaded_machine():
+    """awlsim's scan watchdog is wall-clock (1 s by default): under load 8 on two cores one scan
+    of the translated GR-1 program exceeded it ("Cycle time exceed 1.000 seconds", a failure of
+    the machine, not of the program). The runner sets it to CYCLE_TIME_LIMIT_S."""
+    from analysis.plc.runner import CYCLE_TIME_LIMIT_S
+
+    r = AwlRunner(generate("s7-300")[0], default_map("s7-300"))
+    assert r.sim.getCPU().cycleTimeLimit == CYCLE_TIME_LIMIT_S >= 30
