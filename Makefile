@@ -84,7 +84,7 @@ test: $(STAMP) $(ST_ENGINE)
 # The developer loop (about 22 s): the unit tests without those marked slow (the awlsim sweeps,
 # the subprocess sessions, the site build; tests/conftest.py), stopping at the first failure.
 test-fast: $(STAMP) $(ST_ENGINE)
-	MPLBACKEND=Agg $(PY) -m pytest -n 2 --dist worksteal -x -m "not slow" tests --ignore=tests/browser
+	MPLBACKEND=Agg $(PY) -m pytest -n 2 --dist worksteal -x -m "not slow" -p no:nbval tests --ignore=tests/browser
 
 # The browser tests against build/report as `make report` left it (no rebuild).
 test-browser: $(STAMP)

@@ -2,6 +2,12 @@
 
 import gc
 import os
+import sys
+
+# The grammar that jsonschema's optional "iri" format checker builds at import (0.8-1.4 s of CPU
+# per pytest process), blocked as tests/nbval_kernel.py explains; here for the sessions that do
+# not load that plugin (make test-fast, which also leaves nbval out: -p no:nbval).
+sys.modules.setdefault("rfc3987_syntax", None)  # type: ignore[arg-type]
 
 os.environ.setdefault("MPLBACKEND", "Agg")
 
