@@ -120,6 +120,10 @@ class IKSolutions(NamedTuple):
         <= 0 reachable (its magnitude is the margin to the nearer boundary).
     branches : tuple of str
         Branch names along axis -2 of ``theta``.
+    branch_status : ndarray of int8, shape (..., B)
+        :class:`Status` code per target and branch: 0 where ``ok``, else the branch's true
+        reason (the target's refusal, the branch's own, e.g. the GR-1's back wrist out of
+        reach, or ``JOINT_LIMITS``), from :func:`status_of`.
     """
 
     theta: npt.NDArray[np.float64]
@@ -127,6 +131,7 @@ class IKSolutions(NamedTuple):
     status: npt.NDArray[np.int8]
     outside_mm: npt.NDArray[np.float64]
     branches: tuple[str, ...]
+    branch_status: npt.NDArray[np.int8] | None = None
 
     @property
     def reachable(self) -> npt.NDArray[np.bool_]:
@@ -320,7 +325,8 @@ def solve_body(
     front and back wrists lie at different points, so one may be out of reach while the
     other is not): a branch is ok where none of its own conditions holds. A target that
     passes the closed form's refusals but has no ok branch gets the first requested
-    branch's reason (its first true condition, else ``JOINT_LIMITS``), which is what a
+    branch's reason (``status:b`` is each branch's own status, :func:`status_of` over the
+    target's refusals, the branch's and its joint limits) (its first true condition, else ``JOINT_LIMITS``), which is what a
     one-branch PLC program reports.
 
     The tolerance is the true one: the closed form decides its reach (and, without
@@ -350,6 +356,12 @@ def solve_body(
                 inside = m.and_(m.ge(qj, lo), m.le(qj, hi))
                 ok = m.and_(ok, inside)
                 within = inside if within is None else m.and_(within, inside)
+        # the branch's own status, by the one refusal-to-status function: the target's
+        # refusals, then the branch's, then its joint limits (0 where the branch is ok)
+        own = [*sol.refusals, *sol.branch_refusals[b]]
+        if within is not None:
+            own.append((Status.JOINT_LIMITS, m.not_(within)))
+        out[f"status:{b}"] = status_of(m, own)
         if has_branch and within is not None:
             stop = m.not_(within) if isinstance(reason, float) else (
                 m.and_(m.eq(reason, 0.0), m.not_(within))
