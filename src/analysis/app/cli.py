@@ -522,7 +522,9 @@ def _cmd_errata(args: argparse.Namespace) -> int:
 def _cmd_arms(args: argparse.Namespace) -> int:
     from analysis.kinematics.catalog import list_arms
 
-    docs = list_arms()
+    from analysis.kinematics.catalog import describe_arm
+
+    docs = [describe_arm(a) for a in args.arm] if args.arm else list_arms()
     if args.json:
         print(_json(docs))
         return 0
@@ -706,9 +708,12 @@ def _add_arms(sub) -> None:
     p = sub.add_parser(
         "arms",
         help="list the arms and their parameters",
-        description="The arms described in data/arms/*.toml, with each parameter's value and "
-        "whether it is printed in the paper or assumed.",
+        description="The arms described in data/arms/*.toml (or the description files given "
+        "with --arm), with each parameter's value and whether it is printed in the paper or "
+        "assumed; a description that does not load is listed with the reason.",
     )
+    p.add_argument("--arm", action="append", metavar="NAME|PATH", default=[],
+                   help="list this arm (a name or a description file; repeatable) instead")
     p.add_argument("--json", action="store_true", help="machine-readable output")
     p.set_defaults(func=_cmd_arms)
 
