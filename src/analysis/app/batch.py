@@ -19,8 +19,9 @@ clashes with an output column (or with a name given to another clash) gets the p
 Output: the input columns, then ``branch, reachable``, the joint values (``Arm.joint_labels``:
 ``theta1_deg .. thetan_deg``; a prismatic joint's in mm), ``c1 .. cn, status, reason``, one row
 per target and branch, targets in input order. ``reachable`` is true where the row has a
-solution; ``status`` says why not (ok, out-of-reach, inside-reach, base-axis, joint-limits,
-degenerate, orientation, invalid). Unsolved rows leave angles and pulses empty, never "nan".
+solution; ``status`` says why not, branch by branch (ok, out-of-reach, inside-reach, base-axis,
+joint-limits, degenerate, orientation, invalid: :attr:`IKSolutions.branch_status`, so a GR-1
+back branch whose wrist is out of reach says out-of-reach, not joint-limits). Unsolved rows leave angles and pulses empty, never "nan".
 Angles are written in full (the shortest text that reads back as the same float). A row whose
 numbers are bad (not a number by :mod:`analysis.validate`'s rules, or outside its range) is not
 solved: its status is ``invalid`` and ``reason`` names the line, the column, the value and the
@@ -207,6 +208,7 @@ def solve_csv(
                 theta = np.full((k, nb, nj), np.nan)
                 ok = np.zeros((k, nb), dtype=bool)
                 status = np.full(k, int(Status.INVALID), dtype=np.int64)
+                row_status = np.full((k, nb), int(Status.INVALID), dtype=np.int64)
                 if valid.any():
                     sol = arm.solve(
                         arm.from_user(values[s:e][valid]),
@@ -216,14 +218,12 @@ def solve_csv(
                     )
                     theta[valid], ok[valid] = sol.theta, sol.ok
                     status[valid] = sol.status
+                    row_status[valid] = sol.branch_status  # each branch's own reason
                 counts.update(status_text[status].tolist())
                 total += k
                 solved += int(ok.any(axis=-1).sum())
-                row_status = np.repeat(status, nb)
+                row_status = row_status.reshape(-1)
                 flat_ok = ok.reshape(-1)
-                # a branch without a solution of a target that has one: outside its limits
-                row_status = np.where((row_status == Status.OK) & ~flat_ok,
-                                      int(Status.JOINT_LIMITS), row_status)  # fmt: skip
                 out: list[list[str]] = []
                 for col in rec.cells:
                     part = col[s:e]

@@ -368,30 +368,34 @@ def _ik_single(args: argparse.Namespace, arm) -> int:
 
 
 def _missing_branches(arm, target, names, sols, args) -> list[dict]:
-    """Why each requested branch without a solution has none: its own refusal (the GR-1's
-    back wrist out of reach, ...) or the joint limit it crosses, with the angle."""
+    """Why each requested branch without a solution has none: its own status
+    (:attr:`IKSolutions.branch_status`: the target's refusal, the branch's own, such as the
+    GR-1's back wrist out of reach, or the joint limits) with the closed form's reason, or
+    for the joint limits the angles that cross them."""
     import numpy as np
 
     from analysis.kinematics.status import Status
 
+    missing = [b for b in names if b not in sols]
+    if not missing:
+        return []
+    one = arm.solve(target, missing, tol=args.tol, theta1_on_axis=_axis(args))
+    free = arm.solve(target, missing, tol=args.tol, theta1_on_axis=_axis(args), limits=False)
     out = []
-    for b in names:
-        if b in sols:
-            continue
-        one = arm.solve(target, [b], tol=args.tol, theta1_on_axis=_axis(args))
-        status = Status(int(one.status))
-        reason = status.text
-        if status in (Status.OK, Status.JOINT_LIMITS):
-            free = arm.solve(target, [b], tol=args.tol, theta1_on_axis=_axis(args),
-                             limits=False)  # fmt: skip
-            status = Status.JOINT_LIMITS
+    for k, b in enumerate(missing):
+        status = Status(int(one.branch_status[k]))
+        if status == Status.JOINT_LIMITS:
             crossed = []
-            for j, (q, lim) in enumerate(zip(free.theta[0], arm.limits, strict=True), 1):
+            for j, (q, lim, name, unit) in enumerate(
+                zip(free.theta[k], arm.limits, arm.joint_names, arm.joint_units, strict=True)
+            ):
                 if lim is not None and not (lim[0] <= q <= lim[1]):
-                    crossed.append(
-                        f"theta{j} = {np.degrees(q):.2f} deg outside "
-                        f"[{np.degrees(lim[0]):g}, {np.degrees(lim[1]):g}] deg"
-                    )
+                    if unit == "rad":
+                        crossed.append(f"{name} = {np.degrees(q):.2f} deg outside "
+                                       f"[{np.degrees(lim[0]):g}, {np.degrees(lim[1]):g}] deg")
+                    else:
+                        crossed.append(f"{name} = {q:.3f} mm outside [{lim[0]:g}, "
+                                       f"{lim[1]:g}] mm")  # fmt: skip
             reason = "; ".join(crossed) or "outside the joint limits"
         else:
             message, _ = arm.closed_form.refusal(
@@ -518,7 +522,9 @@ def _cmd_errata(args: argparse.Namespace) -> int:
 def _cmd_arms(args: argparse.Namespace) -> int:
     from analysis.kinematics.catalog import list_arms
 
-    docs = list_arms()
+    from analysis.kinematics.catalog import describe_arm
+
+    docs = [describe_arm(a) for a in args.arm] if args.arm else list_arms()
     if args.json:
         print(_json(docs))
         return 0
@@ -702,9 +708,12 @@ def _add_arms(sub) -> None:
     p = sub.add_parser(
         "arms",
         help="list the arms and their parameters",
-        description="The arms described in data/arms/*.toml, with each parameter's value and "
-        "whether it is printed in the paper or assumed.",
+        description="The arms described in data/arms/*.toml (or the description files given "
+        "with --arm), with each parameter's value and whether it is printed in the paper or "
+        "assumed; a description that does not load is listed with the reason.",
     )
+    p.add_argument("--arm", action="append", metavar="NAME|PATH", default=[],
+                   help="list this arm (a name or a description file; repeatable) instead")
     p.add_argument("--json", action="store_true", help="machine-readable output")
     p.set_defaults(func=_cmd_arms)
 

@@ -650,7 +650,10 @@ class Arm:
         ok = np.stack([np.broadcast_to(r[f"ok:{b}"], shape) for b in names], axis=-1)
         status = np.broadcast_to(r["status"], shape).astype(np.int8)
         outside = np.broadcast_to(r["outside"], shape).astype(float)
-        return IKSolutions(theta, ok.copy(), status, outside, names)
+        branch_status = np.stack(
+            [np.broadcast_to(r[f"status:{b}"], shape) for b in names], axis=-1
+        ).astype(np.int8)
+        return IKSolutions(theta, ok.copy(), status, outside, names, branch_status)
 
     def ik(
         self,

@@ -403,6 +403,7 @@ def ik_kernel(closed_form: str, params: tuple, names: tuple, limits: tuple) -> K
     n_joints = cf.probe(params)
     outputs = {"status": "i1", "outside": "f8"}
     outputs.update({f"ok:{b}": "b1" for b in names})
+    outputs.update({f"status:{b}": "i1" for b in names})
     outputs.update({f"q:{b}:{j}": "f8" for b in names for j in range(n_joints)})
     return build(body, cf.INPUTS, (*params, "tol"), outputs)
 
@@ -416,12 +417,14 @@ def allocate(n_joints: int, shape: tuple, branches: Sequence[str]):
     B = len(branches)
     theta = pool.empty((B, n_joints, n))
     ok = pool.empty((B, n), dtype=bool)
+    branch_status = pool.empty((B, n), dtype=np.int8)
     return IKSolutions(
         np.moveaxis(theta, -1, 0).reshape(*shape, B, n_joints),
         np.moveaxis(ok, -1, 0).reshape(*shape, B),
         pool.empty(shape, dtype=np.int8),
         pool.empty(shape),
         tuple(branches),
+        np.moveaxis(branch_status, -1, 0).reshape(*shape, B),
     )
 
 
@@ -469,13 +472,17 @@ def solve(arm, p: npt.NDArray[np.float64], names, *, tol: float, limits, out=Non
     theta = _storage(res.theta, (n, len(names), nj))  # (B, J, n)
     ok = _storage(res.ok, (n, len(names)))  # (B, n)
     outs = [res.status.reshape(n, copy=False), res.outside_mm.reshape(n, copy=False)]
+    if res.branch_status is None:
+        raise ValueError("out= buffers must come from analysis.kinematics.compiled.allocate")
+    bstat = _storage(res.branch_status, (n, len(names)))  # (B, n)
     outs += [ok[b] for b in range(len(names))]
+    outs += [bstat[b] for b in range(len(names))]
     outs += [theta[b, j] for b in range(len(names)) for j in range(nj)]
     limits = input_limits(arm.input_units)
     if kern.run(p.reshape(n, p.shape[-1]), [*arm.params.values(), tol], outs, limits):
         # raises, naming the first target outside analysis.validate's ranges
         as_points(p, inputs=arm.inputs, units=arm.input_units)
-    return IKSolutions(res.theta, res.ok, res.status, res.outside_mm, names)
+    return IKSolutions(res.theta, res.ok, res.status, res.outside_mm, names, res.branch_status)
 
 
 # --------------------------------------------------------------------------------------------

@@ -27,6 +27,7 @@ __all__ = [
     "MAX_JOINT_DEG",
     "MAX_JOINT_MM",
     "MAX_TOL_MM",
+    "ROUNDOFF_REL",
     "BaseAxisError",
     "IKSolutions",
     "OrientationError",
@@ -34,6 +35,7 @@ __all__ = [
     "as_points",
     "check_joints",
     "check_tol",
+    "decision_tol",
     "refusal_options",
     "solve_body",
     "status_of",
@@ -42,8 +44,19 @@ __all__ = [
 DEFAULT_TOL_MM = 1e-6
 """Default distance tolerance [mm]: targets this close outside the reach shell are put on
 the shell (cos theta3 clipped to +-1), and targets this close to the base axis count as on
-it. 1 nm is far below any mechanical meaning and far above float64 round-off at this
-scale (|p| ~ 1e3 mm, eps * |p| ~ 2e-13 mm)."""
+it. It is the true bound of the position error: every ok solution of :meth:`Arm.solve`
+(numpy and compiled) reaches its target within it, float64 round-off included
+(:data:`ROUNDOFF_REL`; tests/hostile/test_hostile.py draws the boundaries of every arm).
+1 nm is far below any mechanical meaning and far above float64 round-off at this scale
+(|p| ~ 1e3 mm, eps * |p| ~ 2e-13 mm)."""
+ROUNDOFF_REL = 64 * 2.0**-52
+"""Relative float64 round-off allowed for in the reach decisions (64 ulps, 1.4e-14): a target
+is solved only where it lies within ``tol`` minus ``ROUNDOFF_REL`` times the scale of the
+problem (the target's coordinates and the arm's lengths summed, 1 mm added: 3.5e-11 mm for
+the paper's arm at (100, 100, 600)) outside a reach boundary, so that a solution reaches its
+target within ``tol`` itself, round-off included (:func:`solve_body`). Measured at the
+boundaries (tests/hostile/test_hostile.py, class 7): without it a target exactly ``tol``
+outside the shell was solved with a position error of tol + 1.8e-13 mm."""
 JOINT_STOP_SLACK_RAD = 1e-12
 """A joint angle this far past a stop counts as on it (and is returned as the stop): the
 backends compute the same angle to a few ulps apart (the compiled ``atan2`` is not libm's,
@@ -107,6 +120,10 @@ class IKSolutions(NamedTuple):
         <= 0 reachable (its magnitude is the margin to the nearer boundary).
     branches : tuple of str
         Branch names along axis -2 of ``theta``.
+    branch_status : ndarray of int8, shape (..., B)
+        :class:`Status` code per target and branch: 0 where ``ok``, else the branch's true
+        reason (the target's refusal, the branch's own, e.g. the GR-1's back wrist out of
+        reach, or ``JOINT_LIMITS``), from :func:`status_of`.
     """
 
     theta: npt.NDArray[np.float64]
@@ -114,6 +131,7 @@ class IKSolutions(NamedTuple):
     status: npt.NDArray[np.int8]
     outside_mm: npt.NDArray[np.float64]
     branches: tuple[str, ...]
+    branch_status: npt.NDArray[np.int8] | None = None
 
     @property
     def reachable(self) -> npt.NDArray[np.bool_]:
@@ -261,6 +279,28 @@ def status_of(m: Ops, refusals: Sequence, default=0.0):
     return status
 
 
+def decision_tol(m: Ops, cf, p, P, tol):
+    """The tolerance the closed form decides with: ``tol - ROUNDOFF_REL * scale``, the scale
+    being the sum of the magnitudes of the target's coordinates (its "mm" inputs) and of the
+    arm's lengths, plus 1 mm (:data:`ROUNDOFF_REL`). In namespace ``m`` (the compiled kernel
+    records it; ``tol`` may be one of its values).
+
+    >>> from analysis.kinematics.ops import numpy_ops
+    >>> from analysis.kinematics.arm import paper_arm
+    >>> arm = paper_arm()
+    >>> t = decision_tol(numpy_ops, arm.closed_form, (100.0, 100.0, 600.0), arm.params, 1e-6)
+    >>> 0 < 1e-6 - float(t) < 1e-10
+    True
+    """
+    scale = 1.0
+    for v, unit in zip(p, cf.input_units, strict=True):
+        if unit == "mm":
+            scale = scale + m.abs(v)
+    for v in P.values():
+        scale = scale + m.abs(v)
+    return tol - ROUNDOFF_REL * scale
+
+
 def solve_body(
     m: Ops,
     cf,
@@ -285,10 +325,17 @@ def solve_body(
     front and back wrists lie at different points, so one may be out of reach while the
     other is not): a branch is ok where none of its own conditions holds. A target that
     passes the closed form's refusals but has no ok branch gets the first requested
-    branch's reason (its first true condition, else ``JOINT_LIMITS``), which is what a
+    branch's reason (``status:b`` is each branch's own status, :func:`status_of` over the
+    target's refusals, the branch's and its joint limits) (its first true condition, else ``JOINT_LIMITS``), which is what a
     one-branch PLC program reports.
+
+    The tolerance is the true one: the closed form decides its reach (and, without
+    ``axis_tol``, its singular sets) with ``tol`` less the round-off of the problem's scale
+    (:func:`decision_tol`), so an ok solution reaches its target within ``tol`` on every
+    backend (float64 round-off included). The generated PLC programs call the closed form with
+    their own band instead (:mod:`analysis.plc.model`).
     """
-    sol = cf.solve(m, p, P, tol=tol, **options)
+    sol = cf.solve(m, p, P, tol=decision_tol(m, cf, p, P, tol), **options)
     status = status_of(m, sol.refusals)
     good = m.eq(status, 0.0)
     out = {"outside": sol.outside}
@@ -309,6 +356,12 @@ def solve_body(
                 inside = m.and_(m.ge(qj, lo), m.le(qj, hi))
                 ok = m.and_(ok, inside)
                 within = inside if within is None else m.and_(within, inside)
+        # the branch's own status, by the one refusal-to-status function: the target's
+        # refusals, then the branch's, then its joint limits (0 where the branch is ok)
+        own = [*sol.refusals, *sol.branch_refusals[b]]
+        if within is not None:
+            own.append((Status.JOINT_LIMITS, m.not_(within)))
+        out[f"status:{b}"] = status_of(m, own)
         if has_branch and within is not None:
             stop = m.not_(within) if isinstance(reason, float) else (
                 m.and_(m.eq(reason, 0.0), m.not_(within))

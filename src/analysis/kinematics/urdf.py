@@ -4,11 +4,12 @@
 description file (a user's own arm included):
 
 - **D-H arms** (standard or modified, ``data/arms/*.toml``): one link per D-H frame, one
-  joint per revolute row, its origin the row's constant part (standard: the previous row's
+  joint per revolute or prismatic row, its origin the row's constant part (standard: the previous row's
   ``Tz(d) Tx(a) Rx(alpha)`` then ``Rz(theta_offset)``; modified: ``Rx(alpha) Tx(a) Tz(d)
   Rz(theta_offset)``), its axis z; fixed rows and the tool become a fixed joint to a
-  ``tool`` link whose frame is the chain's last frame. Each link frame is the D-H frame of
-  the description, so a user sees the table's frames in RViz, and a joint value is the
+  ``tool`` link whose frame is the chain's last frame. A prismatic row is a ``prismatic``
+  joint along the same z axis (its value adds to ``d``), its stroke the limits. Each link
+  frame is the D-H frame of the description, so a user sees the table's frames in RViz, and a joint value is the
   description's joint variable (``theta_i = q_i + theta_offset_i``).
 - **the picker** (seed 002, a closed chain: :mod:`analysis.kinematics.picker`): its open-chain
   equivalent from the screws at the reference pose. URDF describes trees, so the loop is cut
@@ -165,31 +166,48 @@ def dh_joints(desc) -> tuple[list[str], list[UrdfJoint]]:
         else:
             place = pending @ _rx(row.alpha) @ _trans(row.a, row.d) @ _rz(row.theta_offset)
             after = np.eye(4)
-        if row.kind != "revolute":
+        if row.kind == "fixed":
             pending = place @ after if table.convention == "standard" else place
             continue
+        # a prismatic row slides along the same z axis a revolute row turns about: standard
+        # Rz(off) Tz(d + q) Tx(a) Rx(alpha) = [Rz(off)] Tz(q) [Tz(d) Tx(a) Rx(alpha)], modified
+        # Rx(alpha) Tx(a) Rz(off) Tz(d + q) = [Rx Tx Tz(d) Rz(off)] Tz(q): the same place
         spec = next(specs)
         child = f"link{len(joints) + 1}_{_slug(raw.get('link', ''), spec.name)}"
         links.append(child)
-        limited = not spec.unlimited
-        notes = [
-            f"joint {spec.name} (D-H row {i + 1}{', ' + raw['link'] if raw.get('link') else ''}): "
-            f"{'revolute, limits' if limited else 'continuous (a full turn allowed)'} "
-            f"{math.degrees(spec.lower):g} .. {math.degrees(spec.upper):g} deg"
-            + (f" [{spec.limits_status}]" if spec.limits_status else ""),
-            f"{spec.name}: {spec.pulses_per_rev} pulses per revolution [{spec.pulses_status}]"
-            + (
-                f"; theta = {spec.name} + {math.degrees(row.theta_offset):g} deg (offset)"
-                if row.theta_offset
-                else ""
-            ),
-        ]
+        where = f"joint {spec.name} (D-H row {i + 1}{', ' + raw['link'] if raw.get('link') else ''})"
+        status = f" [{spec.limits_status}]" if spec.limits_status else ""
+        if row.kind == "prismatic":
+            limited = True
+            kind = "prismatic"
+            notes = [
+                f"{where}: prismatic along z, d = {row.d:g} mm + {spec.name}, stroke "
+                f"{spec.lower:g} .. {spec.upper:g} mm{status}",
+                f"{spec.name}: {spec.pulses_per_rev} pulses per revolution [{spec.pulses_status}]"
+                + (f", lead {spec.lead_mm:g} mm per revolution" if spec.lead_mm else "")
+                + (f"; theta = {math.degrees(row.theta_offset):g} deg (fixed)"
+                   if row.theta_offset else ""),  # fmt: skip
+            ]
+        else:
+            limited = not spec.unlimited
+            kind = "revolute" if limited else "continuous"
+            notes = [
+                f"{where}: "
+                f"{'revolute, limits' if limited else 'continuous (a full turn allowed)'} "
+                f"{math.degrees(spec.lower):g} .. {math.degrees(spec.upper):g} deg{status}",
+                f"{spec.name}: {spec.pulses_per_rev} pulses per revolution [{spec.pulses_status}]"
+                + (
+                    f"; theta = {spec.name} + {math.degrees(row.theta_offset):g} deg (offset)"
+                    if row.theta_offset
+                    else ""
+                ),
+            ]
         if limited:
             notes.append("effort and velocity: not printed in the paper (0 = not given)")
         joints.append(
             UrdfJoint(
                 spec.name,
-                "revolute" if limited else "continuous",
+                kind,
                 parent,
                 child,
                 place,

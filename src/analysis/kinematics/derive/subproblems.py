@@ -117,9 +117,23 @@ def pk3_cos(m, d2, la2, lb2, la, lb):
     Returns ``(c, gamma, s)``: the cosine, the bend ``gamma = acos(c)`` in [0, pi] and
     ``sin(gamma) = sqrt((1 - c)(1 + c)) >= 0``. The two solutions are the bends ``+gamma``
     and ``-gamma`` (the elbow on either side of the shoulder-wrist line).
+
+    ``1 - c`` and ``1 + c`` are computed in factored form, ``(La + Lb - d)(La + Lb + d) / den``
+    and ``(d - |La - Lb|)(d + |La - Lb|) / den``, and ``gamma = atan2(s, c)``, as the
+    palletizer's hand-written beta1 (kinematics/arms/palletizer.py): from ``c`` they keep half
+    the digits where ``c`` nears -1 or 1, and with La = Lb that is the wrist near the
+    shoulder, where an error in the bend moves the wrist by La times it (a derived palletizer
+    missed a target 2.0e-6 mm from its shoulder by 2.0e-6 mm against the 1e-6 mm tolerance;
+    tests/hostile/test_hostile.py, class 7).
     """
-    c = m.clip((d2 - (la2 + lb2)) / (2.0 * (la * lb)), -1.0, 1.0)
-    return c, m.acos(c), m.sqrt((1.0 - c) * (1.0 + c))
+    den = 2.0 * (la * lb)
+    c = m.clip((d2 - (la2 + lb2)) / den, -1.0, 1.0)
+    d = m.sqrt(d2)
+    outer, inner = la + lb, m.abs(la - lb)
+    om = m.clip((outer - d) * (outer + d) / den, 0.0, 2.0)  # 1 - c
+    op = m.clip((d - inner) * (d + inner) / den, 0.0, 2.0)  # 1 + c
+    s = m.sqrt(om * op)
+    return c, m.atan2(s, c), s
 
 
 def waist_offset(m, rho2, ell):
