@@ -99,10 +99,8 @@ class SweepSizes:
 
     def scaled(self, factor: float) -> SweepSizes:
         """Every size times ``factor`` (rounded; at least 1 where it was not 0)."""
-        return SweepSizes(
-            **{f.name: (max(1, round(getattr(self, f.name) * factor))
-                        if getattr(self, f.name) else 0) for f in fields(self)}  # fmt: skip
-        )
+        sizes = {f.name: getattr(self, f.name) for f in fields(self)}
+        return SweepSizes(**{k: max(1, round(v * factor)) if v else 0 for k, v in sizes.items()})
 
 
 def _table4(arm: Arm) -> npt.NDArray[np.float64]:
@@ -240,7 +238,6 @@ def boundary_targets(
     steps = np.linspace(0.02, 4.0, 200) if angle else 2.0 ** np.arange(13)
     revolute = np.flatnonzero(np.array(arm.joint_units) == "rad")
     joints = revolute if angle else (revolute[:1] if waist else revolute[:0])
-    n, k = start.shape
     theta0 = arm.solve(start, [branch], limits=limits).theta[:, 0, :]
     pts = start[:, None, :] + steps[None, :, None] * direction[:, None, :]
     sol = arm.solve(pts, [branch], limits=limits)
