@@ -99,11 +99,12 @@ def test_sweep_matches_python(variant, branch, targets):
     assert (step["plc"] - step["python"]).abs().max() <= 1
     assert cmp.all_explained, t
     assert cmp.max_real_error < 0.05
-    # every one within 1e-3 pulse of a half pulse (within the float32 error bound of 0.05
+    # every one within 2e-3 pulse of a half pulse (the half-pulse targets are pinned within
+    # 1e-3 before the inputs are rounded to REALs; within the float32 error bound of 0.05
     # within 1 mm of a reach shell, where acos is ill-conditioned): mostly the half-pulse
     # targets, a few of other kinds that happen to lie that close
     shell = step["kind"].str.endswith("-1mm")
-    assert (step["dist_half"][~shell] < 1e-3).all() and (step["dist_half"] < 0.05).all(), step
+    assert (step["dist_half"][~shell] < 2e-3).all() and (step["dist_half"] < 0.05).all(), step
     half = int((step["kind"] == "half-pulse").sum())
     assert 0 < half <= 60 and len(step) - half <= 12, step["kind"].value_counts()
     # ... or on the other side of the wrap cut of theta1/theta2 (+-180 deg): one revolution

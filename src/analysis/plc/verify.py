@@ -169,7 +169,8 @@ class Comparison:
 
 def _limit_straddles(arm, xyz, branch, theta32, theta1_on_axis) -> npt.NDArray[np.bool_]:
     """Targets where the float32 angles and the exact ones (joint limits not applied) fall on
-    different sides of a joint limit."""
+    different sides of a joint limit: the exact ones against the limits, the float32 ones
+    against the limits as REALs (as the program compares them)."""
     bounds = arm.limits
     if all(b is None for b in bounds):
         return np.zeros(len(xyz), dtype=bool)
@@ -183,16 +184,17 @@ def _limit_straddles(arm, xyz, branch, theta32, theta1_on_axis) -> npt.NDArray[n
         margin_rad=PLC_MARGIN_RAD,
     )
 
-    def inside(theta):
+    def inside(theta, real=False):
         ok = np.ones(len(xyz), dtype=bool)
         for j, b in enumerate(bounds):
             if b is not None:
-                ok &= (theta[:, j] >= b[0]) & (theta[:, j] <= b[1])
+                lo, hi = np.float32(b) if real else b  # the program's limits are REALs
+                ok &= (theta[:, j] >= lo) & (theta[:, j] <= hi)
         return ok
 
     exact = sol.theta[:, 0, :]
     solved = np.isfinite(exact).all(axis=1) & finite
-    return solved & (inside(exact) != inside(np.asarray(theta32, dtype=float)))
+    return solved & (inside(exact) != inside(np.asarray(theta32, dtype=np.float32), True))
 
 
 def _status_counts(
@@ -215,7 +217,10 @@ def _status_counts(
     unsafe = plc_ok & ~refs[0.0][1]
     missed = plc_ok & ~refs[0.5][1]
     extra = ~plc_ok & refs[2.0][1]
+    # a refusal's code may be the band's: within the band of one boundary (the base axis)
+    # and beyond another (a joint limit), Python with twice the band gives the PLC's code
     code = ~plc_ok & ~refs[0.5][1] & (result.status != refs[0.5][2])
+    code &= result.status != refs[2.0][2]
     # near a joint limit the PLC decides with its float32 angle: a disagreement there is
     # explained where the float32 and the exact angle lie on opposite sides of the limit
     across = _limit_straddles(arm, xyz, branch, theta32, theta1_on_axis)
@@ -318,7 +323,7 @@ def compare(
     band): it must be 0. ``band_refusals`` counts targets only the band refuses.
     ``status_mismatch`` counts what neither explains: a target the PLC accepts that Python
     with half the band refuses, one it refuses that Python with twice the band accepts, or a
-    refusal whose code differs from Python's with half the band. Pulses are compared with
+    refusal whose code differs from Python's with half the band and with twice the band. Pulses are compared with
     Python solving as the program does (band 1).
     """
     branch = branch or arm.branches[0]
