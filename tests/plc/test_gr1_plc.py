@@ -85,10 +85,10 @@ def test_sweep_matches_python(variant, branch, targets):
     seen = set(np.unique(res.status).tolist())
     assert {0, 1, 4, 6, 7} | ({3} if branch == ARM.branches[0] else set()) <= seen, seen
     # float32 lands on the other side of a half pulse within one pulse, each explained by
-    # the model, within 2e-3 pulse of it (the half-pulse
-    # poses are pinned within 1e-3 of it before their inputs are rounded to REALs; 0.05 within 1 mm of a reach shell, where acos is
-    # ill-conditioned), mostly on the half-pulse poses; the REAL error before ROUND stays
-    # far below half a pulse
+    # the model, within 2e-3 pulse of it (the half-pulse poses are pinned within 1e-3 of
+    # it before their inputs are rounded to REALs; 0.05 within 1 mm of a reach shell, where
+    # acos is ill-conditioned), mostly on the half-pulse poses; the REAL error before ROUND
+    # stays far below half a pulse
     t = cmp.mismatch_table
     assert cmp.all_explained, t
     # ... or one revolution apart on the wrap cut of the free joints (theta1, theta5)

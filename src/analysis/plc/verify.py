@@ -323,8 +323,8 @@ def compare(
     band): it must be 0. ``band_refusals`` counts targets only the band refuses.
     ``status_mismatch`` counts what neither explains: a target the PLC accepts that Python
     with half the band refuses, one it refuses that Python with twice the band accepts, or a
-    refusal whose code differs from Python's with half the band and with twice the band. Pulses are compared with
-    Python solving as the program does (band 1).
+    refusal whose code differs from Python's with half the band and with twice the band.
+    Pulses are compared with Python solving as the program does (band 1).
     """
     branch = branch or arm.branches[0]
     rounding = "half-even" if dialect == "s7-300" else "half-away"
