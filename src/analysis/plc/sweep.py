@@ -12,8 +12,7 @@ name except :data:`PAPER_TARGETS` (the targets a paper prints, as data).
 Kinds (in this order; a kind may be empty for an arm that has no such boundary):
 
 ``paper``
-    The arm's start-up target and the targets its paper prints (Table 4 of seed 000,
-    Table 5-3 of seed 004).
+    The arm's start-up target and the targets its paper prints (:data:`PAPER_TARGETS`).
 ``config``
     Targets of valid configurations (any branch): within the reach and the joint limits.
 ``box``
@@ -120,12 +119,19 @@ def _table5_3(arm: Arm) -> npt.NDArray[np.float64]:
     return thesis_poses()
 
 
+def _initial_pose(arm: Arm) -> npt.NDArray[np.float64]:
+    """Seed 001 sec. 3: the initial pose, theta = (0, -90, 90, 90) deg (on the elbow stop)."""
+    return arm.target(np.radians([[0.0, -90.0, 90.0, 90.0]]))
+
+
 PAPER_TARGETS: dict[str, Callable[[Arm], npt.NDArray[np.float64]]] = {
     "grabber": _table4,
+    "palletizer": _initial_pose,
     "gr1": _table5_3,
 }
-"""Per closed form, the targets its paper prints (seed 000's Table 4, seed 004's Table
-5-3); an arm with that closed form (any lengths) is swept on them too."""
+"""Per closed form, the targets its paper prints (seed 000's Table 4, seed 001's initial
+pose, seed 004's Table 5-3); an arm with that closed form (any lengths) is swept on them
+too."""
 
 
 def _wrap(a):
