@@ -22,8 +22,8 @@ from analysis.plc.ir import build_program
 from analysis.plc.memmap import default_map
 from analysis.plc.paper_listings import figure_text, run_paper_listings
 from analysis.plc.runner import AwlRunner, sweep
-from analysis.plc.translate import I_BASE, PLS_LOG, Q_BASE, SM_BASE, translate_s7200
 from analysis.plc.sweep import SweepSizes, sweep_targets
+from analysis.plc.translate import I_BASE, PLS_LOG, Q_BASE, SM_BASE, translate_s7200
 from analysis.plc.verify import compare, table4_targets
 
 pytestmark = pytest.mark.slow  # seconds per test: run first (tests/conftest.py)
