@@ -121,7 +121,7 @@ def test_s7300_runs_awl_on_awlsim(programs, capsys):
     ("args", "why"),
     [
         (["--set", "VD0=100"], "reads VD0 as a REAL; write 100.0"),
-        (["--set", "VD0=1e39"], "beyond the REAL range"),
+        (["--set", "VD0=1e39"], "beyond 3.403e+38, the largest REAL"),
         (["--set", "VB120=300"], "outside the BYTE range 0..255"),
         (["--set", "VD0"], "expected ADDRESS=VALUE"),
         (["--read", "VD100"], "expected ADDRESS:TYPE"),
@@ -140,6 +140,8 @@ def test_s7300_runs_awl_on_awlsim(programs, capsys):
         (["--set", "VW4=\u0663"], "digits must be ASCII"),
         (["--set", "VW4=1.5"], "a INT is a whole number, not '1.5'"),
         (["--set", "VD0=1e999"], "beyond the float range"),
+        (["--set", "VD0="], "the value is empty"),
+        (["--set", "VW4=1\u00a0"], "is not a number"),
     ],
 )
 def test_bad_input_is_one_line_and_exit_2(programs, capsys, args, why):

@@ -99,9 +99,12 @@ def parse_set(text: str, dialect: str) -> tuple[str, str, object, bool]:
     """``"VD0=100.0"`` -> (address, type, value, explicit type?); ValueError naming the
     value and the limit."""
     addr, sep, value = text.partition("=")
-    if not sep or not addr.strip() or not value.strip():
+    if not sep or not addr.strip():
         raise ValueError(f"--set {text!r}: expected ADDRESS=VALUE (e.g. VD0=100.0)")
-    addr, value = addr.strip().upper(), value.strip()
+    if not value.strip():
+        raise ValueError(f"--set {text!r}: the value is empty; a number is required")
+    # only ASCII blanks around the value: a no-break space is not one (analysis.validate)
+    addr, value = addr.strip().upper(), value.strip(" \t")
     kind = _address_kind(addr, dialect)
     typ = None
     m = re.fullmatch(r"(.*?):([A-Za-z]+)", value)
@@ -144,7 +147,8 @@ def parse_set(text: str, dialect: str) -> tuple[str, str, object, bool]:
         x = float(value)
         if abs(x) > FLT_MAX:
             raise ValueError(
-                f"--set {text!r}: {value} is beyond the REAL range (|x| <= 3.402823E+38)"
+                f"--set {text!r}: {value} is beyond {FLT_MAX:.4g}, the largest REAL "
+                "(|x| <= 3.402823E+38)"
             )
         return addr, typ, x, explicit
     if not is_int:
