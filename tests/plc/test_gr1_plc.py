@@ -100,7 +100,8 @@ def test_sweep_matches_python(variant, branch, targets):
     assert (t["dist_half"][~shell] < 2e-3).all() and (t["dist_half"] < 0.05).all(), t
     assert cmp.max_real_error < 0.05
     half = int((t["kind"] == "half-pulse").sum())
-    assert 0 < half <= 75 and len(t) - half <= 12, t["kind"].value_counts()
+    assert (10 if branch == ARM.branches[0] else 5) <= half <= 75, t["kind"].value_counts()
+    assert len(t) - half <= 12, t["kind"].value_counts()
 
 
 def test_table5_3_on_the_plc():

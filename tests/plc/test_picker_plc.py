@@ -71,7 +71,9 @@ def test_sweep_matches_python(dialect, trig, targets):
     assert (step["plc"] - step["python"]).abs().max() <= 1
     assert set(cut["kind"]) <= {"cut"}, cut  # a revolution apart only on the cut
     half = int((step["kind"] == "half-pulse").sum())
-    assert 0 < half and len(step) - half <= 12, step["kind"].value_counts()
+    # measured 37 of the 150 half-pulse targets (S7-300); with them no nearer than 0.2 pulse
+    # to a half pulse, 1: the count says the sweep puts its half pulses where they belong
+    assert half >= 10 and len(step) - half <= 12, step["kind"].value_counts()
     # the REAL error before ROUND (float32 positions of ~1.5 m: 1.2e-4 mm = 0.05 pulse of a
     # slider; the wrist near its singular band)
     assert cmp.max_real_error < 0.1

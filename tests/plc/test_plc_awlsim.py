@@ -106,7 +106,7 @@ def test_sweep_matches_python(variant, branch, targets):
     shell = step["kind"].str.endswith("-1mm")
     assert (step["dist_half"][~shell] < 2e-3).all() and (step["dist_half"] < 0.05).all(), step
     half = int((step["kind"] == "half-pulse").sum())
-    assert 0 < half <= 60 and len(step) - half <= 12, step["kind"].value_counts()
+    assert 10 <= half <= 60 and len(step) - half <= 12, step["kind"].value_counts()
     # ... or on the other side of the wrap cut of theta1/theta2 (+-180 deg): one revolution
     # apart, the same joint position; only on the cut targets, only on joints c1 and c2
     assert set(cut["kind"]) <= {"cut"} and set(cut["joint"]) <= {"c1", "c2"}, cut
