@@ -117,7 +117,8 @@ def test_st_pulses_against_awlsim(case, engine):
             from analysis.plc.model import predict
 
             m = predict(arm.params, xyz, ops=PlcFloat32Ops("st", "function"))
-            frac = np.abs(m.counts - np.trunc(m.counts))
+            with np.errstate(invalid="ignore"):  # a refused target's count may be inf
+                frac = np.abs(m.counts - np.trunc(m.counts))
             assert (frac[differ] == 0.5).all()
             assert (np.abs(st.pulses - s7.pulses)[differ] == 1).all()
 
