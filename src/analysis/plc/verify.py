@@ -276,6 +276,8 @@ def _mismatch_table(
 def _all_explained(table: pd.DataFrame) -> bool:
     """Every mismatch of :func:`_mismatch_table` is a straddle of one half pulse, and every
     one-revolution difference lies at the wrap cut (+-ppr/2)."""
+    if table.empty:  # nothing to explain (most calls: pandas would cost more than compare)
+        return True
     # in one revolution: the PLC's count and float32 value moved by the whole turns between them
     shift = (table["ppr"] * np.round((table["plc"] - table["python"]) / table["ppr"])).to_numpy()
     plc = table["plc"].to_numpy() - shift
