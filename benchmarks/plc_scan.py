@@ -17,22 +17,20 @@ import time
 
 def plc_scan_times(n: int = 300) -> dict:
     from analysis.kinematics.arm import load_arm
-    from analysis.plc import palletizer_run as pr
     from analysis.plc import st_engine
     from analysis.plc.generate import generate
     from analysis.plc.ir import build_program
     from analysis.plc.memmap import MemoryMap
-    from analysis.plc.pose_targets import pose_sweep_targets
     from analysis.plc.runner import AwlRunner, S7200Runner
     from analysis.plc.st import block_name, emit_st
+    from analysis.plc.sweep import sweep_targets
     from analysis.plc.translate import translate_s7200
-    from analysis.plc.verify import input_columns, sweep_targets
+    from analysis.plc.verify import input_columns
 
-    sweeps = {"grabber": sweep_targets, "palletizer": pr.sweep_targets, "gr1": pose_sweep_targets}
     out = {}
-    for name, make in sweeps.items():
+    for name in ("grabber", "palletizer", "gr1", "picker"):
         arm = load_arm(name)
-        xyz = make(arm)[input_columns(arm)].to_numpy(dtype=float)[:n]
+        xyz = sweep_targets(arm)[input_columns(arm)].to_numpy(dtype=float)[:n]
         text, map_text = generate("s7-300", params=arm.params)
         runner = AwlRunner(text, MemoryMap.from_dict(json.loads(map_text)))
         t0 = time.perf_counter()

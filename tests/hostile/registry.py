@@ -275,6 +275,22 @@ def toml_literal(value) -> str:
              kind=lambda a, s: ("len", "ppr", "deg")[s], cost=3)  # fmt: skip
 def _toml_value(arm: str, slot: int, value) -> Outcome:
     """A length, a pulses_per_rev or a joint limit of ``data/arms/<arm>.toml``, rewritten."""
+    with _toml_folder(arm, slot, value) as path, _captured() as (_out, _err, warned):
+        try:
+            from analysis.kinematics.arm import Arm, Params
+            from analysis.kinematics.description import load_description
+
+            a = Arm(Params.from_description(load_description(str(path))))
+            result = a.solve(np.array(a.from_user(default_target(arm))))
+        except ValueError as exc:
+            return Outcome(True, str(exc), warned=list(warned))
+    return Outcome(False, result=result, warned=list(warned))
+
+
+@contextlib.contextmanager
+def _toml_folder(arm: str, slot: int, value):
+    """``data/arms/<arm>.toml`` with its ``slot``-th number (a length, a pulses_per_rev, a
+    joint limit) rewritten as ``value``, in a folder with the tables it may read."""
     import re
 
     from analysis.paths import data_dir
@@ -297,16 +313,51 @@ def _toml_value(arm: str, slot: int, value) -> Outcome:
         path.write_text(text, encoding="utf-8")
         for csv_file in data_dir().glob("*.csv"):  # the tables a description may read
             (Path(tmp) / csv_file.name).write_bytes(csv_file.read_bytes())
-        with _captured() as (_out, _err, warned):
-            try:
-                from analysis.kinematics.arm import Arm, Params
-                from analysis.kinematics.description import load_description
+        yield path
 
-                a = Arm(Params.from_description(load_description(str(path))))
-                result = a.solve(np.array(a.from_user(default_target(arm))))
-            except ValueError as exc:
-                return Outcome(True, str(exc), warned=list(warned))
-        return Outcome(False, result=result, warned=list(warned))
+
+@entry_point("cli urdf --arm TOML value", "toml", 3,
+             kind=lambda a, s: ("len", "ppr", "deg")[s], cost=4)  # fmt: skip
+def _cli_urdf(arm: str, slot: int, value) -> Outcome:
+    """``urdf --arm FILE`` on a description with one number rewritten (as typed in the TOML)."""
+    with _toml_folder(arm, slot, value) as path:
+        urdf = path.parent / "arm.urdf"
+        out = cli("urdf", "--arm", str(path), "-o", str(urdf), "--json")
+        if urdf.exists():
+            out.files["urdf"] = urdf.read_text(encoding="utf-8")
+    return out
+
+
+@cache
+def s7200_program(arm: str) -> tuple[str, dict]:
+    """The arm's generated S7-200 program (a file kept for the session) and its MAP.json."""
+    from analysis.plc.generate import generate
+
+    text, mjson = generate("s7-200", params=arm_of(arm).params)
+    path = Path(tempfile.mkdtemp(prefix="hostile-stl-run-")) / f"{arm}.awl"
+    path.write_text(text, encoding="utf-8")
+    return str(path), json.loads(mjson)
+
+
+def _stl_run_kind(arm: str, slot: int) -> str:
+    """A coordinate in mm, or an orientation angle the program takes in radians (any)."""
+    return "ang" if arm_of(arm).input_units[slot] == "rad" else "mm"
+
+
+@entry_point("cli stl-run --set", "text", lambda arm: len(arm_of(arm).inputs),
+             kind=_stl_run_kind, cost=4)  # fmt: skip
+def _cli_stl_run(arm: str, slot: int, value) -> Outcome:
+    """``stl-run`` of the arm's S7-200 program, its inputs ``--set`` to a reachable target
+    (radians for angles, as the program takes them) and the ``slot``-th to ``value``."""
+    path, doc = s7200_program(arm)
+    target = list(arm_of(arm).from_user(default_target(arm)))
+    sets = [f"{addr}={float(v)!r}" for addr, v in zip(doc["inputs"].values(), target,
+                                                       strict=True)]  # fmt: skip
+    addr = list(doc["inputs"].values())[slot]
+    sets[slot] = f"{addr}={_text(value)}"
+    reads = [f"{a}:DINT" for k, a in doc["outputs"].items() if k.startswith("c")]
+    argv = [a for s_ in sets for a in ("--set", s_)] + [a for r in reads for a in ("--read", r)]
+    return cli("stl-run", path, "--dialect", "s7-200", *argv, "--json")
 
 
 # --------------------------------------------------------------------------------------------

@@ -121,7 +121,7 @@ def test_s7300_runs_awl_on_awlsim(programs, capsys):
     ("args", "why"),
     [
         (["--set", "VD0=100"], "reads VD0 as a REAL; write 100.0"),
-        (["--set", "VD0=1e39"], "beyond the REAL range"),
+        (["--set", "VD0=1e39"], "beyond 3.403e+38, the largest REAL"),
         (["--set", "VB120=300"], "outside the BYTE range 0..255"),
         (["--set", "VD0"], "expected ADDRESS=VALUE"),
         (["--read", "VD100"], "expected ADDRESS:TYPE"),
@@ -131,7 +131,17 @@ def test_s7300_runs_awl_on_awlsim(programs, capsys):
         (["--read", "MD100:DINT"], "beyond the CPU 224's M memory (MB0-MB31)"),
         (["--read", "DB1.DBD0:DINT"], "not an s7-200 address"),
         (["--scans", "0"], "at least one scan"),
-        (["--cpu", "CPU 314"], "not an S7-200 CPU"),
+        (["--cpu", "CPU 314"], "is an s7-300 CPU, not an s7-200 one"),
+        (["--cpu", "CPU 999"], "not known for s7-200 (known: CPU 221"),
+        (["--set", "VD0=nan"], "'nan' is not a finite number; to store a REAL nan on purpose"),
+        (["--set", "VD0=1_000.0"], "no underscores"),
+        (["--set", "VD0=1,5"], "the decimal mark is '.'"),
+        (["--set", "VD0=\u0663.0"], "digits must be ASCII"),
+        (["--set", "VW4=\u0663"], "digits must be ASCII"),
+        (["--set", "VW4=1.5"], "a INT is a whole number, not '1.5'"),
+        (["--set", "VD0=1e999"], "beyond the float range"),
+        (["--set", "VD0="], "the value is empty"),
+        (["--set", "VW4=1\u00a0"], "is not a number"),
     ],
 )
 def test_bad_input_is_one_line_and_exit_2(programs, capsys, args, why):
@@ -163,7 +173,7 @@ def test_a_cpu_stop_is_reported_with_what_was_read(tmp_path, capsys):
     p = tmp_path / "cmp.awl"
     p.write_text("LD SM0.0\nMOVR 1.0, VD4\nLDR< VD0, 1.0\n= V8.0\n")  # a bare listing
     code, out, _ = _run(
-        capsys, p, "--dialect", "s7-200", "--set", "VD0=nan", "--read", "VD4:REAL", "--json"
+        capsys, p, "--dialect", "s7-200", "--set", "VD0=nan:REAL", "--read", "VD4:REAL", "--json"
     )
     doc = json.loads(out)
     assert code == 2 and "line 3" in doc["error"] and "STOP" in doc["error"]
@@ -174,7 +184,7 @@ def test_a_cpu_stop_is_reported_with_what_was_read(tmp_path, capsys):
         "--dialect",
         "s7-200",
         "--set",
-        "VD0=-inf",
+        "VD0=-inf:REAL",
         "--read",
         "VD0:REAL",
         "--read",
@@ -182,3 +192,31 @@ def test_a_cpu_stop_is_reported_with_what_was_read(tmp_path, capsys):
         "--json",
     )
     assert code == 0 and json.loads(out) == {"values": {"VD0": "-Infinity", "V8.0": True}}
+
+
+@pytest.mark.parametrize(
+    ("argv", "code", "said"),
+    [
+        (["--dialect", "s7-200", "--arm", "gr1", "--cpu", "221"], 0, "CPU 221"),
+        (["--dialect", "s7-300", "--cpu", "cpu317-2dp"], 0, "CPU 317-2 DP"),
+        (["--dialect", "s7-300", "--arm", "gr1", "--cpu", "314"], 2,
+         "the work area ends at MB351, beyond the CPU 314's M memory (MB0-MB255)"),
+        (["--dialect", "s7-300", "--cpu", "312"], 2, "beyond the CPU 312's M memory (MB0-MB127)"),
+        (["--dialect", "s7-200", "--cpu", "999"], 2, "target CPU '999' is not known for s7-200"),
+        (["--dialect", "s7-300", "--cpu", "224"], 2, "is an s7-200 CPU, not an s7-300 one"),
+        (["--dialect", "st", "--cpu", "224"], 2, "--cpu applies to --dialect s7-200 and s7-300"),
+    ],
+)  # fmt: skip
+def test_stl_checks_the_target_cpu(tmp_path, capsys, argv, code, said):
+    """``stl --cpu NAME``: the program and MAP.json checked against that CPU's memory at
+    generation (memmap.CPUS); the map names it; a program that does not fit is refused with
+    the CPU and the limit."""
+    prog, mp = tmp_path / "p.awl", tmp_path / "p.json"
+    got = main(["stl", *argv, "-o", str(prog), "--map", str(mp), "--json"])
+    out = capsys.readouterr().out
+    doc = json.loads(out)
+    assert got == code, out
+    if code == 0:
+        assert doc["cpu"] == said == json.loads(mp.read_text())["target_cpu"]["name"]
+    else:
+        assert said in doc["error"] and not prog.exists()

@@ -131,7 +131,7 @@ def test_a_generated_program_leaves_the_same_memory_after_every_scan(dialect):
     """The GR-1 program (its S7-200 text translated), with and without the pass: the whole
     M area equal after each of 60 scans over the seeded pose sweep."""
     from analysis.plc.generate import generate
-    from analysis.plc.pose_targets import pose_sweep_targets
+    from analysis.plc.sweep import sweep_targets
     from analysis.plc.translate import translate_s7200
     from analysis.studies.gr1 import gr1_arm
 
@@ -144,7 +144,7 @@ def test_a_generated_program_leaves_the_same_memory_after_every_scan(dialect):
         plain, optimized = generate(dialect, "front-up", "subroutine", params=arm.params,
                                     optimize=False)[0], text  # fmt: skip
     assert len(optimized.splitlines()) < len(plain.splitlines())
-    targets = pose_sweep_targets(arm)[list(arm.inputs)].to_numpy()[::17][:60]
+    targets = sweep_targets(arm)[list(arm.inputs)].to_numpy()[::19][:60]
     runs = [AwlRunner(src, mmap) for src in (plain, optimized)]
     for target in targets:
         for r in runs:

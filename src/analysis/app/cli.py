@@ -422,6 +422,16 @@ def _cmd_stl(args: argparse.Namespace) -> int:
     )
     arm = _arm(args)
     mmap = _layout(args.layout, MemoryMap) if args.layout else None
+    cpu = None
+    if args.cpu is not None:
+        from analysis.plc.memmap import cpu_name
+
+        if args.dialect not in ("s7-200", "s7-300"):
+            raise UsageError(
+                f"--cpu applies to --dialect s7-200 and s7-300 (a {args.dialect} program "
+                "names no addresses)"
+            )
+        cpu = cpu_name(args.cpu, args.dialect)  # checked at generation: the map's areas
     text, mjson = generate(
         args.dialect,
         args.branch,
@@ -430,6 +440,7 @@ def _cmd_stl(args: argparse.Namespace) -> int:
         params=arm.params,
         motion=not args.no_motion,
         theta1_on_axis=_axis(args),
+        cpu=cpu,
     )
     files = {p: c for p, c in ((args.output, text), (args.map, mjson)) if p and str(p) != "-"}
     if files:
@@ -446,6 +457,8 @@ def _cmd_stl(args: argparse.Namespace) -> int:
         "branch": args.branch or arm.branches[0],
         "lines": text.count("\n"),
     }
+    if args.dialect in ("s7-200", "s7-300"):
+        doc["cpu"] = json.loads(mjson)["target_cpu"]["name"]
     if args.json:
         print(_json(doc))
     else:
@@ -662,6 +675,13 @@ def _add_stl(sub) -> None:
         "ATAN), native or subroutine",
     )
     p.add_argument("--layout", type=Path, help="memory map (MAP.json format) to use")
+    p.add_argument(
+        "--cpu",
+        metavar="NAME",
+        help="S7 target CPU whose memory limits the program and MAP.json are checked "
+        "against (S7-200: CPU 221, 222, 224, 224XP, 226, default CPU 224; S7-300: CPU 312, "
+        "314, 315-2 DP, 317-2 DP, default CPU 315-2 DP; e.g. --cpu 224XP)",
+    )
     p.add_argument("--no-motion", action="store_true", help="S7-200: omit the PTO motion networks")
     p.add_argument(
         "--theta1-on-axis", type=_finite, metavar="DEG", help="waist angle on the base axis"

@@ -35,6 +35,8 @@ import re
 import sys
 from pathlib import Path
 
+from analysis import validate
+
 __all__ = ["add_stl_run", "parse_read", "parse_set", "run"]
 
 TYPES = ("BOOL", "BYTE", "INT", "WORD", "DINT", "DWORD", "REAL")
@@ -97,9 +99,12 @@ def parse_set(text: str, dialect: str) -> tuple[str, str, object, bool]:
     """``"VD0=100.0"`` -> (address, type, value, explicit type?); ValueError naming the
     value and the limit."""
     addr, sep, value = text.partition("=")
-    if not sep or not addr.strip() or not value.strip():
+    if not sep or not addr.strip():
         raise ValueError(f"--set {text!r}: expected ADDRESS=VALUE (e.g. VD0=100.0)")
-    addr, value = addr.strip().upper(), value.strip()
+    if not value.strip():
+        raise ValueError(f"--set {text!r}: the value is empty; a number is required")
+    # only ASCII blanks around the value: a no-break space is not one (analysis.validate)
+    addr, value = addr.strip().upper(), value.strip(" \t")
     kind = _address_kind(addr, dialect)
     typ = None
     m = re.fullmatch(r"(.*?):([A-Za-z]+)", value)
@@ -112,7 +117,7 @@ def parse_set(text: str, dialect: str) -> tuple[str, str, object, bool]:
                 f"--set {text!r}: a {_WORD[kind]} holds {' or '.join(_TYPES_OF[kind])}, not {typ}"
             )
     explicit = typ is not None
-    is_int = re.fullmatch(r"[+-]?\d+", value) is not None
+    is_int = re.fullmatch(r"[+-]?[0-9]+", value) is not None  # ASCII digits (validate's rule)
     if typ is None:
         if kind == "X":
             typ = "BOOL"
@@ -128,19 +133,28 @@ def parse_set(text: str, dialect: str) -> tuple[str, str, object, bool]:
             raise ValueError(f"--set {text!r}: a BOOL is 0, 1, true or false")
         return addr, typ, v, explicit
     if typ == "REAL":
-        try:
-            x = float(value)
-        except ValueError:
-            raise ValueError(f"--set {text!r}: {value!r} is not a number") from None
-        if math.isfinite(x) and abs(x) > FLT_MAX:
+        if value.lower().lstrip("+-") in ("nan", "inf", "infinity"):
+            # a NaN or inf only on purpose (to see what the program does with one): typed
+            if not explicit:
+                raise ValueError(
+                    f"--set {text!r}: {value!r} is not a finite number; to store a REAL "
+                    f"{value} on purpose write {addr}={value}:REAL"
+                )
+            return addr, typ, float(value), explicit
+        problem = validate.number_problem(value)  # one rule for every number a user types
+        if problem:
+            raise ValueError(f"--set {text!r}: {problem}")
+        x = float(value)
+        if abs(x) > FLT_MAX:
             raise ValueError(
-                f"--set {text!r}: {value} is beyond the REAL range (|x| <= 3.402823E+38)"
+                f"--set {text!r}: {value} is beyond {FLT_MAX:.4g}, the largest REAL "
+                "(|x| <= 3.402823E+38)"
             )
-        if math.isnan(x) and value.lower().lstrip("+-") != "nan":
-            raise ValueError(f"--set {text!r}: {value!r} is not a number")
         return addr, typ, x, explicit
     if not is_int:
-        raise ValueError(f"--set {text!r}: a {typ} is a whole number, not {value!r}")
+        problem = validate.number_problem(value)
+        why = problem if problem else f"a {typ} is a whole number, not {value!r}"
+        raise ValueError(f"--set {text!r}: {why}")
     v = int(value)
     lo, hi = _LIMITS[typ]
     if not lo <= v <= hi:
@@ -211,21 +225,20 @@ def run(
         raise ValueError(f"--scans {scans}: at least one scan")
     if scans > 1_000_000:
         raise ValueError(f"--scans {scans}: at most 1,000,000 scans")
-    if cpu is not None and not cpu.upper().startswith("CPU"):
-        cpu = f"CPU {cpu}"  # --cpu 224 means the CPU 224
-    cpu = cpu.upper().replace("CPU", "CPU", 1) if cpu else None
+    if cpu is not None and dialect != "s7-200":
+        raise ValueError("--cpu applies to --dialect s7-200 (awlsim's M area is 2048 bytes)")
+    if cpu is not None:
+        from analysis.plc.memmap import cpu_name
+
+        cpu = cpu_name(cpu, "s7-200")  # --cpu 224 means the CPU 224
     writes = [parse_set(s, dialect) for s in sets]
     wanted = [parse_read(r, dialect) for r in reads]
     if not wanted:
         raise ValueError("nothing to read: give at least one --read ADDRESS:TYPE")
     if dialect == "s7-200":
-        from analysis.plc.memmap import CPUS
         from analysis.plc.stl_eval import S7200, load_program
         from analysis.plc.stl_eval.legacy import PAPER_SYMBOLS
 
-        if cpu is not None and (cpu not in CPUS or CPUS[cpu].dialect != "s7-200"):
-            known = ", ".join(k for k, c in CPUS.items() if c.dialect == "s7-200")
-            raise ValueError(f"--cpu {cpu!r} is not an S7-200 CPU ({known})")
         loaded = load_program(program, symbols=PAPER_SYMBOLS, cpu=cpu, source=source)
         plc = S7200(loaded)
         for addr, typ, v, explicit in writes:
@@ -243,8 +256,6 @@ def run(
         if plc.stopped_by:
             raise _Refused(f"the CPU went to STOP: {plc.stopped_by}", values)
         return {"values": values}
-    if cpu is not None:
-        raise ValueError("--cpu applies to --dialect s7-200 (awlsim's M area is 2048 bytes)")
     from analysis.plc.memmap import default_map
     from analysis.plc.runner import AwlRunner
 

@@ -182,8 +182,9 @@ def _plc_verdict(arm) -> Verdict:
     from analysis.plc.memmap import default_map
     from analysis.plc.paper_listings import run_paper_listings
     from analysis.plc.runner import sweep
+    from analysis.plc.sweep import sweep_targets
     from analysis.plc.translate import translate_s7200
-    from analysis.plc.verify import compare, sweep_targets, table4_targets
+    from analysis.plc.verify import compare, table4_targets
 
     # --- the PLC program on awlsim ---------------------------------------------------------
     xyz = table4_targets()

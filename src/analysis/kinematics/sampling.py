@@ -23,7 +23,7 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["SAMPLE_MARGIN_MM", "SAMPLE_MARGIN_RAD", "SOLVE_BACK_TOL", "sample_q"]
+__all__ = ["SAMPLE_MARGIN_MM", "SAMPLE_MARGIN_RAD", "SOLVE_BACK_TOL", "candidates", "sample_q"]
 
 SAMPLE_MARGIN_MM = 0.01
 """Default band [mm] kept clear of every reach shell and singular set: ten times the band
@@ -42,6 +42,30 @@ MAX_ROUNDS = 64
 
 def _uniform(rng: np.random.Generator, n: int, bounds: npt.NDArray[np.float64]):
     return bounds[:, 0] + rng.random((n, len(bounds))) * (bounds[:, 1] - bounds[:, 0])
+
+
+def candidates(
+    arm, rng: np.random.Generator, n: int, bounds: npt.ArrayLike | None = None
+) -> npt.NDArray[np.float64]:
+    """``n`` candidate configurations (n, n_joints) within ``bounds`` (n_joints, 2) (default
+    :attr:`~analysis.kinematics.arm.Arm.bounds`): the closed form's ``sample_q`` hook, or
+    uniform draws; not yet checked against the solver (:func:`sample_q` does that). A bound
+    with lower = upper pins a joint (the hook may derive a joint from others instead: the
+    palletizer's theta4; check the result).
+
+    >>> import numpy as np
+    >>> from analysis.kinematics.arm import load_arm
+    >>> arm = load_arm("palletizer")
+    >>> b = arm.bounds.copy(); b[2] = np.pi
+    >>> q = candidates(arm, np.random.default_rng(0), 3, b)
+    >>> level = np.exp(1j * q[:, 1:].sum(axis=1))  # theta2 + theta3 + theta4 = pi/2 (mod 2 pi)
+    >>> bool((q[:, 2] == np.pi).all()), bool(np.allclose(level, 1j))
+    (True, True)
+    """
+    b = arm.bounds if bounds is None else np.asarray(bounds, dtype=float)
+    propose = arm.closed_form.propose
+    q = propose(rng, n, arm.params, b) if propose else _uniform(rng, n, b)
+    return np.asarray(q, dtype=float).reshape(n, arm.n_joints)
 
 
 def sample_q(
@@ -91,15 +115,13 @@ def sample_q(
     n = int(n)
     bounds = arm.bounds
     angle = np.array([u == "rad" for u in arm.joint_units])
-    propose = arm.closed_form.propose
     kept: list[npt.NDArray[np.float64]] = []
     have = drawn = 0
     for _ in range(MAX_ROUNDS):
         if have >= n:
             break
         k = max(64, 2 * (n - have))
-        q = propose(rng, k, arm.params, bounds) if propose else _uniform(rng, k, bounds)
-        q = np.asarray(q, dtype=float).reshape(k, arm.n_joints)
+        q = candidates(arm, rng, k, bounds)
         drawn += k
         inside = ((q >= bounds[:, 0]) & (q <= bounds[:, 1])).all(axis=1)
         q = q[inside]

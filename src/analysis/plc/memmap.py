@@ -152,6 +152,25 @@ DEFAULT_CPU = {"s7-200": "CPU 224", "s7-300": "CPU 315-2 DP"}
 """The paper's CPU 224 (Section 2.3), and the S7-300 whose M area awlsim has by default."""
 
 
+def cpu_name(text: str, dialect: str) -> str:
+    """The :data:`CPUS` name a user means by ``text`` for ``dialect`` (``"224"``, ``"cpu
+    224xp"``, ``"CPU 315-2DP"``: case, spaces and the ``CPU`` prefix free), else a
+    ValueError naming the value and the CPUs known for that dialect.
+
+    >>> cpu_name("224xp", "s7-200"), cpu_name("cpu315-2 dp", "s7-300")
+    ('CPU 224XP', 'CPU 315-2 DP')
+    """
+    if not isinstance(text, str) or not text.strip():
+        raise ValueError(f"target CPU {text!r}: expected a CPU name (e.g. CPU 224)")
+
+    def key(s: str) -> str:
+        s = re.sub(r"[\s_]", "", s.upper())
+        return s[3:] if s.startswith("CPU") else s
+
+    match = [name for name in CPUS if key(name) == key(text)]
+    return _cpu(match[0] if match else text.strip(), dialect).name
+
+
 def _cpu(name: str | None, dialect: str) -> Cpu:
     name = name or DEFAULT_CPU[dialect]
     cpu = CPUS.get(name)

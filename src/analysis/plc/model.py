@@ -128,7 +128,9 @@ def predict(
     c = np.stack([np.broadcast_to(cj, status.shape) for cj in r["c"]], axis=-1)
     theta = np.stack([np.broadcast_to(q, status.shape) for q in r["theta"]], axis=-1)
     counts = np.stack([np.broadcast_to(v, status.shape) for v in r["count"]], axis=-1)
-    computed = np.where(np.isfinite(c), c, 0).astype(np.int64)
+    # a refused target's count may be any REAL (a huge one on a joint beyond its limit):
+    # only the DINT range is a count
+    computed = np.where(np.isfinite(c) & (np.abs(c) < 2.0**31), c, 0).astype(np.int64)
     pulses = np.where(ok[:, None], computed, 0)
     return Prediction(
         pulses, status, ok, theta.astype(np.float32), counts.astype(np.float32), computed

@@ -13,12 +13,15 @@ to (-180, 180] deg (:mod:`analysis.kinematics.arms.grabber`, "Conventions at the
 so where the exact angle lies within float32 error of +-180 deg the PLC may give -ppr/2 where
 Python gives +ppr/2 (or the reverse): the same joint position, counted one revolution apart.
 :func:`compare` tells the two kinds apart (``cut`` column) and measures the float32 error
-modulo one revolution; ``sweep_targets`` includes targets on the cut (kind ``cut``).
+modulo one revolution; :func:`analysis.plc.sweep.sweep_targets` includes targets on the cut
+(kind ``cut``).
 """
 
 from __future__ import annotations
 
+import json
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 import numpy.typing as npt
@@ -28,20 +31,27 @@ from analysis.kinematics.arm import Arm
 from analysis.kinematics.status import Status
 from analysis.paths import data_dir
 from analysis.plc.approx import PlcFloat32Ops
+from analysis.plc.memmap import MemoryMap
 from analysis.plc.model import PLC_MARGIN_MM, PLC_MARGIN_RAD, predict
-from analysis.plc.runner import RunResult
+from analysis.plc.runner import RunResult, sweep
 
 __all__ = [
+    "SENTINEL",
     "Comparison",
+    "PlcRun",
     "compare",
-    "cut_targets",
-    "half_pulse_targets",
     "input_columns",
     "plc_targets",
+    "program",
+    "real_errors",
     "reference_pulses",
-    "sweep_targets",
+    "run",
     "table4_targets",
 ]
+
+
+SENTINEL = -999_999
+"""Written to the outputs before each cycle by :func:`run`: a refused target must leave it."""
 
 
 def input_columns(arm: Arm) -> list[str]:
@@ -55,101 +65,6 @@ def table4_targets() -> npt.NDArray[np.float64]:
     """The ten Table 4 targets (x, y, z) [mm], shape (10, 3)."""
     t4 = pd.read_csv(data_dir() / "table4.csv")
     return t4[["x_mm", "y_mm", "z_mm"]].to_numpy(dtype=float)
-
-
-def half_pulse_targets(arm: Arm, n: int, rng: np.random.Generator) -> npt.NDArray[np.float64]:
-    """Targets whose front-up pulse value for one joint lies within 1e-3 pulse of k + 1/2.
-
-    Joint angles are drawn in the front-up range (theta3 < 0), one joint (cycling
-    c1, c2, c3) is moved to ``(k + 1/2 + delta) * 360 / ppr`` deg with |delta| in
-    [1e-7, 1e-3] pulse, and the target is its forward kinematics. These are the targets
-    where float32 PLC arithmetic can legitimately round the other way.
-    """
-    ppr = np.asarray(arm.params.pulses_per_rev, dtype=float)
-    q = np.stack(
-        [rng.uniform(-np.pi, np.pi, n), rng.uniform(-1.2, 1.2, n), rng.uniform(-2.8, -0.3, n)],
-        axis=1,
-    )
-    j = np.arange(n) % 3
-    c = q[np.arange(n), j] / (2 * np.pi) * ppr[j]
-    delta = rng.choice([-1.0, 1.0], n) * 10.0 ** rng.uniform(-7, -3, n)
-    q[np.arange(n), j] = (np.floor(c) + 0.5 + delta) * 2 * np.pi / ppr[j]
-    return arm.fk(q)
-
-
-def cut_targets(arm: Arm, n: int, rng: np.random.Generator) -> npt.NDArray[np.float64]:
-    """Targets where a solution's theta1 or theta2 is +-180 deg (the wrap cut), and neighbours.
-
-    Joint configurations with theta1 (even rows) or theta2 (odd rows) set to pi, the other
-    joints random (theta3 of either sign, so up and down branches both meet the cut), moved
-    off the cut by 0 or +-1e-9 .. 1e-4 rad; the target is their forward kinematics. On these,
-    float32 and float64 may wrap to opposite ends of (-pi, pi].
-    """
-    q = np.stack(
-        [
-            rng.uniform(-np.pi, np.pi, n),
-            rng.uniform(-np.pi, np.pi, n),
-            rng.choice([-1.0, 1.0], n) * rng.uniform(0.3, 2.8, n),
-        ],
-        axis=1,
-    )
-    j = np.arange(n) % 2
-    off = rng.choice([-1.0, 0.0, 1.0], n) * 10.0 ** rng.uniform(-9, -4, n)
-    q[np.arange(n), j] = np.pi + off
-    return arm.fk(q)
-
-
-def sweep_targets(
-    arm: Arm, n_random: int = 700, seed: int = 20160501, n_half: int = 150, n_cut: int = 60
-) -> pd.DataFrame:
-    """Test targets across the workspace, labelled by kind.
-
-    Kinds: ``table4`` (10), ``random`` (uniform in a box around the reach shell, about
-    half reachable), ``outer-1mm``/``inner-1mm`` (within 1 mm of the outer/inner reach
-    sphere, both sides, distances 1e-3 .. 1 mm), ``axis`` (0 to 1 mm from the base
-    axis, including exactly on it), ``half-pulse`` (:func:`half_pulse_targets`),
-    ``cut`` (:func:`cut_targets`, drawn after the others so earlier kinds are unchanged),
-    ``bad`` (NaN/inf coordinates), ``huge`` (finite, squares overflow float32).
-
-    Returns
-    -------
-    DataFrame
-        Columns ``kind, x_mm, y_mm, z_mm``.
-    """
-    rng = np.random.default_rng(seed)
-    P = arm.params
-    sh = arm.shoulder
-    R = P.reach_outer
-    parts = [("table4", table4_targets())]
-    box = rng.uniform(-1.1 * R, 1.1 * R, size=(n_random, 3)) + sh
-    parts.append(("random", box))
-
-    def sphere_pts(radius_fn, n):
-        d = rng.normal(size=(n, 3))
-        d /= np.linalg.norm(d, axis=1, keepdims=True)
-        off = rng.choice([-1.0, 1.0], n) * 10.0 ** rng.uniform(-3, 0, n)
-        return sh + d * radius_fn(off)[:, None]
-
-    parts.append(("outer-1mm", sphere_pts(lambda off: R + off, 120)))
-    parts.append(("inner-1mm", sphere_pts(lambda off: P.reach_inner + off, 80)))
-    n_ax = 100
-    rho = np.concatenate([[0.0] * 5, 10.0 ** rng.uniform(-3, 0, n_ax - 5)])
-    phi = rng.uniform(-np.pi, np.pi, n_ax)
-    zr = rng.uniform(-(R - 1), R - 1, n_ax)
-    zr = np.where(np.abs(zr) < P.reach_inner + 1, np.sign(zr + 1e-9) * (P.reach_inner + 1), zr)
-    axis = np.stack([rho * np.cos(phi), rho * np.sin(phi), P.L1 + zr], axis=1)
-    parts.append(("axis", axis))
-    parts.append(("half-pulse", half_pulse_targets(arm, n_half, rng)))
-    bad = np.array([[np.nan, 100, 600], [100, np.inf, 600], [100, 100, -np.inf]])
-    parts.append(("bad", bad))
-    # finite but huge: squares overflow float32 unless the program checks the box first
-    parts.append(
-        ("huge", np.array([[1e20, -1e20, 960.0], [3e38, 0.0, 660.0], [-1e30, 1e30, -1e30]]))
-    )
-    parts.append(("cut", cut_targets(arm, n_cut, rng)))
-    rows = [pd.DataFrame(p, columns=["x_mm", "y_mm", "z_mm"]).assign(kind=k) for k, p in parts]
-    df = pd.concat(rows, ignore_index=True)
-    return df[["kind", "x_mm", "y_mm", "z_mm"]]
 
 
 def plc_targets(targets: npt.ArrayLike) -> tuple[npt.NDArray, npt.NDArray]:
@@ -254,7 +169,8 @@ class Comparison:
 
 def _limit_straddles(arm, xyz, branch, theta32, theta1_on_axis) -> npt.NDArray[np.bool_]:
     """Targets where the float32 angles and the exact ones (joint limits not applied) fall on
-    different sides of a joint limit."""
+    different sides of a joint limit: the exact ones against the limits, the float32 ones
+    against the limits as REALs (as the program compares them)."""
     bounds = arm.limits
     if all(b is None for b in bounds):
         return np.zeros(len(xyz), dtype=bool)
@@ -268,16 +184,17 @@ def _limit_straddles(arm, xyz, branch, theta32, theta1_on_axis) -> npt.NDArray[n
         margin_rad=PLC_MARGIN_RAD,
     )
 
-    def inside(theta):
+    def inside(theta, real=False):
         ok = np.ones(len(xyz), dtype=bool)
         for j, b in enumerate(bounds):
             if b is not None:
-                ok &= (theta[:, j] >= b[0]) & (theta[:, j] <= b[1])
+                lo, hi = np.float32(b) if real else b  # the program's limits are REALs
+                ok &= (theta[:, j] >= lo) & (theta[:, j] <= hi)
         return ok
 
     exact = sol.theta[:, 0, :]
     solved = np.isfinite(exact).all(axis=1) & finite
-    return solved & (inside(exact) != inside(np.asarray(theta32, dtype=float)))
+    return solved & (inside(exact) != inside(np.asarray(theta32, dtype=np.float32), True))
 
 
 def _status_counts(
@@ -300,7 +217,10 @@ def _status_counts(
     unsafe = plc_ok & ~refs[0.0][1]
     missed = plc_ok & ~refs[0.5][1]
     extra = ~plc_ok & refs[2.0][1]
+    # a refusal's code may be the band's: within the band of one boundary (the base axis)
+    # and beyond another (a joint limit), Python with twice the band gives the PLC's code
     code = ~plc_ok & ~refs[0.5][1] & (result.status != refs[0.5][2])
+    code &= result.status != refs[2.0][2]
     # near a joint limit the PLC decides with its float32 angle: a disagreement there is
     # explained where the float32 and the exact angle lie on opposite sides of the limit
     across = _limit_straddles(arm, xyz, branch, theta32, theta1_on_axis)
@@ -356,6 +276,8 @@ def _mismatch_table(
 def _all_explained(table: pd.DataFrame) -> bool:
     """Every mismatch of :func:`_mismatch_table` is a straddle of one half pulse, and every
     one-revolution difference lies at the wrap cut (+-ppr/2)."""
+    if table.empty:  # nothing to explain (most calls: pandas would cost more than compare)
+        return True
     # in one revolution: the PLC's count and float32 value moved by the whole turns between them
     shift = (table["ppr"] * np.round((table["plc"] - table["python"]) / table["ppr"])).to_numpy()
     plc = table["plc"].to_numpy() - shift
@@ -403,8 +325,8 @@ def compare(
     band): it must be 0. ``band_refusals`` counts targets only the band refuses.
     ``status_mismatch`` counts what neither explains: a target the PLC accepts that Python
     with half the band refuses, one it refuses that Python with twice the band accepts, or a
-    refusal whose code differs from Python's with half the band. Pulses are compared with
-    Python solving as the program does (band 1).
+    refusal whose code differs from Python's with half the band and with twice the band.
+    Pulses are compared with Python solving as the program does (band 1).
     """
     branch = branch or arm.branches[0]
     rounding = "half-even" if dialect == "s7-300" else "half-away"
@@ -446,3 +368,73 @@ def compare(
         explained,
         model_exact,
     )
+
+
+def program(arm: Arm, dialect: str = "s7-200", branch: str | None = None) -> tuple[str, str]:
+    """The program text and its MAP.json, exactly as ``python -m analysis stl --arm <arm>
+    --dialect <dialect>`` writes them (default trigonometry of the dialect)."""
+    from analysis.plc.generate import generate
+
+    return generate(dialect, branch=branch, params=arm.params)
+
+
+class PlcRun(NamedTuple):
+    """One program executed on awlsim over a target set, and its comparison with Python."""
+
+    comparison: Comparison
+    result: RunResult
+    targets: pd.DataFrame
+    stopped: bool
+    """True if a REAL compare saw a NaN (an S7-200 CPU would stop)."""
+
+    def status_table(self) -> pd.DataFrame:
+        """Targets per kind and PLC status code (rows: kind; columns: status)."""
+        t = self.targets.assign(status=self.result.status)
+        return pd.crosstab(t["kind"], t["status"])
+
+
+def run(
+    arm: Arm,
+    dialect: str = "s7-200",
+    targets: pd.DataFrame | None = None,
+    branch: str | None = None,
+    text: tuple[str, str] | None = None,
+) -> PlcRun:
+    """Execute the arm's program on awlsim (S7-200 STL through the project's translation to
+    AWL; S7-300 AWL as is) over ``targets`` (default
+    :func:`analysis.plc.sweep.sweep_targets` of the branch) and compare.
+
+    ``text`` may pass ``(program text, MAP.json text)`` as written by the command line;
+    by default :func:`program` generates them.
+    """
+    from analysis.plc.sweep import sweep_targets
+    from analysis.plc.translate import translate_s7200
+
+    branch = branch or arm.branches[0]
+    targets = sweep_targets(arm, branch=branch) if targets is None else targets
+    src, map_text = text if text is not None else program(arm, dialect, branch)
+    mmap = MemoryMap.from_dict(json.loads(map_text))
+    awl = translate_s7200(src).awl if dialect == "s7-200" else src
+    xyz = targets[input_columns(arm)].to_numpy(dtype=float)
+    done = sweep(awl, mmap, xyz, sentinel=SENTINEL)
+    trig = "subroutine" if "ATAN2/ACOS: generated subroutines" in src else "native"
+    cmp = compare(done.result, targets, arm, branch, dialect, SENTINEL, trig)
+    return PlcRun(cmp, done.result, targets, done.stopped)
+
+
+def real_errors(arm: Arm, targets: pd.DataFrame, dialect: str = "s7-200") -> pd.DataFrame:
+    """Largest |float32 value handed to ROUND - exact pulse value| [pulses] per target kind
+    and joint, modulo one revolution (at the wrap cut the two may be a turn apart), over the
+    targets both Python and the program solve (the float32 model of the program,
+    :func:`analysis.plc.model.predict`, which reproduces awlsim bit for bit)."""
+    xyz = targets[input_columns(arm)].to_numpy(dtype=float)
+    rounding = "half-away" if dialect == "s7-200" else "half-even"
+    _, ok, _, exact = reference_pulses(arm, xyz, arm.branches[0], rounding)
+    model = predict(arm.params, xyz, arm.branches[0], ops=PlcFloat32Ops(dialect))
+    both = ok & model.reachable
+    ppr = np.asarray(arm.params.pulses_per_rev, dtype=float)
+    diff = model.counts.astype(float) - exact
+    err = np.abs(diff - ppr * np.round(diff / ppr))  # modulo one revolution (the wrap cut)
+    cols = [f"c{j + 1}" for j in range(err.shape[1])]
+    df = pd.DataFrame(err[both], columns=cols).assign(kind=targets["kind"].to_numpy()[both])
+    return df.groupby("kind").max()
