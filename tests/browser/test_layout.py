@@ -86,19 +86,10 @@ def _overlaps(boxes, pad: float = 0.5):
     return out
 
 
-# Figures of notebooks other helpers own, not yet re-laid out (issue 23 item 3): listed so that
-# every other figure is held to the rule now, and so that this list can only shrink (a listed
-# figure that passes fails the test until it is taken off). Figure -> what is wrong.
-NOT_YET_LEGIBLE = {
-    "10-work-area": "legend and labels 6.7-7.7 pt",
-    "10-fx2n-vs-cubic": "ticks 6.2 pt (listed in issue 23)",
-    "10-table5-4-arm": "ticks 7.4 pt",
-    "12-picker-hidden-errors": "annotations 5.3 pt",
-}
-KNOWN_COLLISIONS = {
-    "04-pinocchio-table4": "a tick label on the axis label",
-    "07-rounding-margin": "the exponent of a log tick on the legend",
-}
+# Figures not yet re-laid out, with what is wrong (this list can only shrink: a listed figure
+# that passes fails the test until it is taken off). Figure -> what is wrong.
+NOT_YET_LEGIBLE: dict[str, str] = {}  # none left
+KNOWN_COLLISIONS: dict[str, str] = {}  # none left
 
 
 def test_figure_text_is_legible_and_never_collides(context, site_url, site_dir):
