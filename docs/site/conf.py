@@ -54,6 +54,9 @@ html_static_path = [
     str(_APP_JS / "static_explorer.js"),
 ]  # -> _static/...
 mathjax_path = "mathjax/tex-chtml.js"
+# the contextual menu without the entries that need components the site does not ship
+mathjax_config_path = "mathjax_menu.js"
+templates_path = ["_templates"]  # layout.html: the theme's page without fontawesome.js
 
 
 # --- theme: sphinx-book-theme (sidebar contents, previous/next, search, print) ---------------

@@ -194,3 +194,59 @@ def test_warning_counter_counts_what_sphinx_counts(tmp_path):
         app.build(force_all=True)
     assert counter.count == app._warncount == 3, sink.getvalue()
     assert sink.getvalue().count("WARNING") + sink.getvalue().count("ERROR") == 3
+
+
+def test_the_site_ships_only_the_static_files_its_pages_load(demo_site):
+    """MathJax: tex-chtml.js, its fonts and the TeX extensions it autoloads; the theme
+    without fontawesome.js (icons come from the web fonts) and without its translations."""
+    out = demo_site[0] / "report"
+    static = out / "_static"
+    mj = static / "mathjax"
+    assert (mj / "input/tex/extensions/color.js").exists()  # \colorbox autoloads it
+    assert list((mj / "output/chtml/fonts/woff-v2").glob("*.woff"))
+    for gone in ("tex-svg.js", "input/tex-full.js", "ui/menu.js", "a11y/sre.js", "output/svg.js",
+                 "input/tex/extensions/all-packages.js"):  # fmt: skip
+        assert not (mj / gone).exists(), gone
+    assert not (static / "scripts/fontawesome.js").exists()
+    assert not (static / "locales").exists()
+    assert list((static / "vendor/fontawesome/webfonts").glob("*.woff2"))
+    for page in out.glob("*.html"):
+        assert "fontawesome.js" not in page.read_text(), page.name
+
+
+def test_prune_static_refuses_a_page_that_loads_a_removed_file(tmp_path):
+    from analysis.app.report import _prune_static
+
+    static = tmp_path / "_static"
+    (static / "scripts").mkdir(parents=True)
+    (static / "scripts" / "fontawesome.js").write_text("x" * 10)
+    (tmp_path / "index.html").write_text('<script src="_static/scripts/fontawesome.js">')
+    with pytest.raises(RuntimeError, match=r"index\.html loads _static/scripts/fontawesome\.js"):
+        _prune_static(static, tmp_path)
+
+
+def test_preview_png_is_the_same_picture_in_a_palette(tmp_path):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+    from PIL import Image
+
+    from analysis.app.report import preview_png
+
+    fig, ax = plt.subplots()
+    ax.imshow(np.linspace(0, 1, 400).reshape(20, 20), cmap="viridis")
+    ax.plot([0, 19], [0, 19], "r-")
+    path = tmp_path / "99-x.png"
+    fig.savefig(path, dpi=150)
+    plt.close(fig)
+    full = np.asarray(Image.open(path).convert("RGBA"), dtype=float)
+    before, after = preview_png(path)
+    assert after < before and path.stat().st_size == after
+    with Image.open(path) as im:
+        assert im.mode == "P" and im.size == full.shape[1::-1]
+        small = np.asarray(im.convert("RGBA"), dtype=float)
+    assert np.abs(small - full).mean() < 2.0  # of 255: the same picture
+    with pytest.raises(ValueError, match="colours=300"):
+        preview_png(path, colours=300)

@@ -86,19 +86,10 @@ def _overlaps(boxes, pad: float = 0.5):
     return out
 
 
-# Figures of notebooks other helpers own, not yet re-laid out (issue 23 item 3): listed so that
-# every other figure is held to the rule now, and so that this list can only shrink (a listed
-# figure that passes fails the test until it is taken off). Figure -> what is wrong.
-NOT_YET_LEGIBLE = {
-    "10-work-area": "legend and labels 6.7-7.7 pt",
-    "10-fx2n-vs-cubic": "ticks 6.2 pt (listed in issue 23)",
-    "10-table5-4-arm": "ticks 7.4 pt",
-    "12-picker-hidden-errors": "annotations 5.3 pt",
-}
-KNOWN_COLLISIONS = {
-    "04-pinocchio-table4": "a tick label on the axis label",
-    "07-rounding-margin": "the exponent of a log tick on the legend",
-}
+# Figures not yet re-laid out, with what is wrong (this list can only shrink: a listed figure
+# that passes fails the test until it is taken off). Figure -> what is wrong.
+NOT_YET_LEGIBLE: dict[str, str] = {}  # none left
+KNOWN_COLLISIONS: dict[str, str] = {}  # none left
 
 
 def test_figure_text_is_legible_and_never_collides(context, site_url, site_dir):
@@ -208,3 +199,28 @@ def test_site_is_at_most_25_mb(site_dir):
     size = sum(f.stat().st_size for f in Path(site_dir).rglob("*") if f.is_file())
     big = sorted((f.stat().st_size, f) for f in Path(site_dir).rglob("*") if f.is_file())[-5:]
     assert size <= MAX_SITE_MB * 1e6, (size / 1e6, [(s // 1000, str(f.name)) for s, f in big])
+
+
+def test_pages_load_nothing_the_site_does_not_ship(context, site_url, site_dir, pages):
+    """Every file a page asks for while MathJax typesets it (its fonts, autoloaded TeX
+    extensions) is served (the build ships only those: analysis.app.report._prune_static),
+    and MathJax's menu hides the entries that would load what it does not ship."""
+    page = context.new_page()
+    missing: list[str] = []
+    page.on("response", lambda r: missing.append(f"{r.status} {r.url}")
+            if r.status >= 400 and not r.url.endswith("/favicon.ico") else None)  # fmt: skip
+    page.on("requestfailed", lambda r: missing.append(f"failed {r.url}"))
+    hidden = None
+    try:
+        for p in pages:
+            if "mathjax/tex-chtml.js" not in (site_dir / p).read_text():
+                continue
+            page.goto(site_url + p, wait_until="load")
+            page.wait_for_function("() => window.MathJax?.startup?.promise", timeout=20_000)
+            page.evaluate("() => MathJax.startup.promise")
+            hidden = page.evaluate("() => MathJax.hiddenMenuItems")
+            assert hidden and {"Settings/Renderer", "Accessibility/Activate"} <= set(hidden), p
+    finally:
+        page.close()
+    assert hidden is not None, "no page with maths"
+    assert not missing, missing[:5]

@@ -64,6 +64,7 @@ __all__ = [
     "build_report",
     "execute_notebook",
     "notebook_paths",
+    "preview_png",
     "print_pdf",
     "serve",
 ]
@@ -298,24 +299,89 @@ def print_pdf(
     return True
 
 
-def _prune_mathjax(folder: Path) -> None:
-    """Drop the MathJax entry points the site does not load (it loads ``tex-chtml.js``).
+_MATHJAX_KEEP = (
+    "tex-chtml.js",  # TeX in, CommonHTML out, the menu and assistive MathML, in one file
+    "output/chtml/fonts/woff-v2/*.woff",  # the fonts CommonHTML loads, each as the maths needs
+    "input/tex/extensions/*.js",  # what \color, \boxed, ... autoload (the autoload package)
+    "ui/safe.js",  # the menu's "filter unsafe content" option
+)
+"""The files of MathJax the site serves (globs relative to ``_static/mathjax``): what
+``tex-chtml.js`` loads by itself. Not kept: the other combined components (``tex-svg.js``,
+``tex-mml-chtml.js``, ...), the separate input and output components that ``tex-chtml.js``
+contains, the SVG output, the MathML input, and the accessibility explorer with its
+speech-rule engine (``a11y/sre.js``, ``sre/``): the menu entries that would load those are
+hidden (``docs/site/mathjax_menu.js``)."""
 
-    The combined components (``tex-svg.js``, ``mml-chtml.js``, ...) are alternatives to
-    ``tex-chtml.js`` and ``latest.js`` would fetch MathJax from a CDN; the folders
-    (extensions, fonts, accessibility) stay, since ``tex-chtml.js`` loads from them.
-    """
-    for f in folder.glob("*.js"):
-        if f.name != "tex-chtml.js":
-            f.unlink()
-    # the SVG output (the site renders CHTML) and the speech-rule engine, which only the
-    # accessibility explorer of MathJax's menu loads, on request: 6 MB of the site
-    for d in (folder / "output" / "svg", folder / "sre"):
-        if d.is_dir():
-            shutil.rmtree(d)
-    # source maps of the theme's minified scripts and styles: for debugging the theme
-    for f in folder.parent.rglob("*.map"):
+_THEME_UNUSED = (
+    "scripts/fontawesome.js",  # icons are drawn from the web fonts (docs/site/_templates)
+    "scripts/fontawesome.js.LICENSE.txt",
+    "locales",  # the theme's translations: read by Sphinx at build time, not by a page
+    "webpack-macros.html",  # a template of the theme, used at build time
+)
+
+
+def _prune_static(static: Path, site: Path) -> dict[str, int]:
+    """Delete what no page of the site loads from ``static`` (the site's ``_static``): the
+    MathJax files outside :data:`_MATHJAX_KEEP`, the theme's unused files
+    (:data:`_THEME_UNUSED`) and the source maps of minified scripts and styles. Returns the
+    bytes removed per kind. Raises ``RuntimeError`` naming the page if a page of ``site``
+    still refers to a removed file (so a theme upgrade cannot break a page silently)."""
+    removed = {"mathjax": 0, "theme": 0, "source maps": 0}
+    gone: list[str] = []
+
+    def drop(f: Path, kind: str) -> None:
+        removed[kind] += f.stat().st_size
+        gone.append(f.relative_to(static).as_posix())
         f.unlink()
+
+    mj = static / "mathjax"
+    if mj.is_dir():
+        keep = {f for pattern in _MATHJAX_KEEP for f in mj.glob(pattern)}
+        keep.discard(mj / "input/tex/extensions/all-packages.js")  # tex-full.js's, not autoloaded
+        for f in sorted(p for p in mj.rglob("*") if p.is_file() and p not in keep):
+            drop(f, "mathjax")
+    for name in _THEME_UNUSED:
+        target = static / name
+        for f in [target] if target.is_file() else sorted(target.rglob("*")):
+            if f.is_file():
+                drop(f, "theme")
+    for f in sorted(static.rglob("*.map")):
+        drop(f, "source maps")
+    for d in sorted((p for p in static.rglob("*") if p.is_dir()), reverse=True):
+        if not any(d.iterdir()):
+            d.rmdir()
+    scripts = [n for n in gone if n.endswith((".js", ".css"))]
+    for page in sorted([*site.glob("*.html"), *site.glob("notebooks/*.html")]):
+        html = page.read_text(encoding="utf-8", errors="replace")
+        for n in scripts:
+            if f"_static/{n}" in html:
+                raise RuntimeError(f"{page.relative_to(site)} loads _static/{n}, which the "
+                                   "site no longer ships (analysis.app.report._prune_static)")
+    return removed
+
+
+def preview_png(path: Path, colours: int = 256) -> tuple[int, int]:
+    """Rewrite the figure ``path`` (a PNG saved by :func:`analysis.app.plotting.save_figure`)
+    as the site's raster preview: the same pixels reduced to a palette of ``colours`` (fast
+    octree, no dithering; a plot has few colours, a colour map at most 256 distinct levels
+    on screen), optimised. The SVG stays the exact, vector download. Returns the sizes
+    before and after [bytes]; a file that would not shrink is left as it was."""
+    from PIL import Image
+
+    if not 2 <= colours <= 256:
+        raise ValueError(f"colours={colours}: a PNG palette holds 2 to 256 colours")
+    before = path.stat().st_size
+    with Image.open(path) as im:
+        im.load()
+        info = {k: v for k, v in im.info.items() if k == "dpi"}
+        rgba = im.convert("RGBA")
+    q = rgba.quantize(colours, method=Image.Quantize.FASTOCTREE, dither=Image.Dither.NONE)
+    buf = io.BytesIO()
+    q.save(buf, "PNG", optimize=True, **info)
+    if buf.tell() >= before:
+        return before, before
+    path.write_bytes(buf.getvalue())
+    return before, buf.tell()
 
 
 def _git_commit() -> str | None:
@@ -601,6 +667,11 @@ def build_report(
     else:
         executed = _stored_notebooks(paths, dl_nb, fig_dir, figures, say)
 
+    # the site's raster previews (build/figures keeps matplotlib's full-colour PNGs)
+    sizes = [preview_png(f) for f in sorted(fig_dir.glob("*.png"))]
+    say(f"{len(sizes)} PNG previews: {sum(a for a, _ in sizes) / 1e6:.2f} MB -> "
+        f"{sum(b for _, b in sizes) / 1e6:.2f} MB (palette of 256 colours)")
+
     # 2. figures, notebooks prepared for the site, downloads, generated pages
     items = _write_sources(
         src, fig_dir, nb_dir, executed, execute=execute, failed=failed, say=say, front=front
@@ -635,7 +706,9 @@ def build_report(
         src, out, doctrees, "html",
         {"exclude_patterns": ["downloads/**", "figures/**", "**.ipynb_checkpoints", "print.md"]},
     )
-    _prune_mathjax(out / "_static" / "mathjax")
+    removed = _prune_static(out / "_static", out)
+    say("left out of _static (no page loads them): "
+        + ", ".join(f"{k} {v / 1e6:.2f} MB" for k, v in removed.items()))
     (out / _MARKER).write_text(
         "written by analysis.app.report; deleted on the next build\n"
         + (f"inputs {stamp}" if stamp and not failed else "")
