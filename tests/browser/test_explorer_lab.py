@@ -192,19 +192,35 @@ def _camera(plot) -> dict:
     return plot.evaluate("el => el._fullLayout.scene._scene.getCamera().eye")
 
 
-def _settled_camera(page, plot, timeout_s: float = 10) -> dict:
-    """The camera once two reads 200 ms apart agree (the last mouse events of a drag may still
-    be moving it when the drag returns)."""
-    deadline = time.monotonic() + timeout_s
-    eye, same = _camera(plot), 0
-    while time.monotonic() < deadline:
-        page.wait_for_timeout(300)
-        now = _camera(plot)
-        same = same + 1 if now == eye else 0
-        if same >= 3:  # unchanged for 0.9 s: the drag's last events are in (a loaded machine)
-            return now
-        eye = now
-    raise AssertionError(f"the 3D view kept moving for {timeout_s} s: {eye}")
+def _quiet(page, timeout_ms: float = 20_000) -> None:
+    """Wait until the 3D view has nothing left to draw: the kernel's pose is for the
+    controls' current values and every redraw asked for is on screen (a redraw during a drag
+    would put the camera back where plotly last saved it)."""
+    from playwright.sync_api import TimeoutError as PlaywrightTimeout
+
+    try:
+        page.wait_for_function(
+            """() => { const w = document.querySelector('.arm3d-widget');
+            return w && w.arm3dKernelCurrent === true && !w.arm3dPending; }""",
+            timeout=timeout_ms,
+        )
+    except PlaywrightTimeout:
+        state = page.evaluate("""() => { const w = document.querySelector('.arm3d-widget');
+            return w && [w.arm3dKernelCurrent, w.arm3dPending, JSON.stringify(w.arm3dKeys)]; }""")
+        raise AssertionError(f"the 3D view still drawing: {state}") from None
+
+
+def _drag_view(page, plot, dx: float, dy: float) -> tuple[dict, dict]:
+    """Rotate the 3D view with the mouse; return the camera plotly saved as the user's at
+    mouseup (its ``plotly_relayout`` event, ``layout.scene.camera``) and the live one."""
+    plot.evaluate(
+        """gd => { window.arm3dRelayout = null;
+        gd.once('plotly_relayout', e => { window.arm3dRelayout = e; }); }"""
+    )
+    _drag(page, plot.bounding_box(), dx, dy)
+    page.wait_for_function("() => window.arm3dRelayout && window.arm3dRelayout['scene.camera']")
+    saved = plot.evaluate("gd => gd.layout.scene.camera.eye")
+    return saved, _camera(plot)
 
 
 def _drag(page, box, dx: float, dy: float) -> None:
@@ -418,22 +434,20 @@ def test_explorer_in_jupyterlab(lab, lab_page, shots):
 
     # 5. the 3D view rotates with the mouse, and keeps its camera when the target changes
     plot.scroll_into_view_if_needed()
+    _quiet(page)
     before = _camera(plot)
-    _drag(page, plot.bounding_box(), 120, 40)
-    after = _settled_camera(page, plot)
-    assert after != before, (before, after)
+    saved, after = _drag_view(page, plot, 120, 40)
+    assert max(abs(after[k] - before[k]) for k in "xyz") > 0.1, (before, after)  # it rotated
+    assert after == pytest.approx(saved, abs=1e-9), (saved, after)  # at rest where it was left
     _type_into(page, "x [mm]", 100)
     _mark(page)
     _type_into(page, "y [mm]", 100)
     drawn, ms = _drawn_after_change(page)
     latencies.append(ms)
     assert _close(drawn["arm"], row1)
-    page.wait_for_function(
-        "() => document.querySelector('.explorer-message').innerText.startsWith('ok')"
-    )
-    page.wait_for_timeout(300)
+    _quiet(page)  # the kernel's pose in too (it redraws if it differs from the browser's)
     kept = _camera(plot)
-    assert kept == pytest.approx(after, abs=1e-6)
+    assert kept == pytest.approx(after, abs=1e-9), (after, kept)
     page.screenshot(path=shots / "lab-explorer-rotated.png", full_page=False)
 
     # 6. FK mode: the joint sliders drive the drawing
