@@ -192,19 +192,35 @@ def _camera(plot) -> dict:
     return plot.evaluate("el => el._fullLayout.scene._scene.getCamera().eye")
 
 
-def _settled_camera(page, plot, timeout_s: float = 10) -> dict:
-    """The camera once two reads 200 ms apart agree (the last mouse events of a drag may still
-    be moving it when the drag returns)."""
-    deadline = time.monotonic() + timeout_s
-    eye, same = _camera(plot), 0
-    while time.monotonic() < deadline:
-        page.wait_for_timeout(300)
-        now = _camera(plot)
-        same = same + 1 if now == eye else 0
-        if same >= 3:  # unchanged for 0.9 s: the drag's last events are in (a loaded machine)
-            return now
-        eye = now
-    raise AssertionError(f"the 3D view kept moving for {timeout_s} s: {eye}")
+def _quiet(page, timeout_ms: float = 20_000) -> None:
+    """Wait until the 3D view has nothing left to draw: the kernel's pose is for the
+    controls' current values and every redraw asked for is on screen (a redraw during a drag
+    would put the camera back where plotly last saved it)."""
+    from playwright.sync_api import TimeoutError as PlaywrightTimeout
+
+    try:
+        page.wait_for_function(
+            """() => { const w = document.querySelector('.arm3d-widget');
+            return w && w.arm3dKernelCurrent === true && !w.arm3dPending; }""",
+            timeout=timeout_ms,
+        )
+    except PlaywrightTimeout:
+        state = page.evaluate("""() => { const w = document.querySelector('.arm3d-widget');
+            return w && [w.arm3dKernelCurrent, w.arm3dPending, JSON.stringify(w.arm3dKeys)]; }""")
+        raise AssertionError(f"the 3D view still drawing: {state}") from None
+
+
+def _drag_view(page, plot, dx: float, dy: float) -> tuple[dict, dict]:
+    """Rotate the 3D view with the mouse; return the camera plotly saved as the user's at
+    mouseup (its ``plotly_relayout`` event, ``layout.scene.camera``) and the live one."""
+    plot.evaluate(
+        """gd => { window.arm3dRelayout = null;
+        gd.once('plotly_relayout', e => { window.arm3dRelayout = e; }); }"""
+    )
+    _drag(page, plot.bounding_box(), dx, dy)
+    page.wait_for_function("() => window.arm3dRelayout && window.arm3dRelayout['scene.camera']")
+    saved = plot.evaluate("gd => gd.layout.scene.camera.eye")
+    return saved, _camera(plot)
 
 
 def _drag(page, box, dx: float, dy: float) -> None:
@@ -335,16 +351,25 @@ def test_explorer_in_jupyterlab(lab, lab_page, shots):
     url, root = lab
     page = lab_page
     t0 = time.perf_counter()
+    steps: dict[str, float] = {}  # seconds each part took (build/browser/lab-latency.json)
+
+    def step(name: str) -> None:
+        steps[name] = round(time.perf_counter() - t0 - sum(steps.values()), 2)
+
     page.goto(url + f"lab/tree/{NOTEBOOK.name}")
     page.locator(".jp-Notebook").first.wait_for()
+    step("open: Lab page")
     _run_all(page)
+    step("open: Run All started")
 
     # the explorer: controls, message and the 3D view (the widget's plotly figure)
     x = _slider(page, "x [mm]")
     _attached(x, "the explorer's x slider", root, shots, timeout=120_000)
     x.scroll_into_view_if_needed()
     plot = page.locator(".arm3d-widget .js-plotly-plot").first
+    step("open: controls shown")
     _attached(plot, "the 3D view (the explorer's widget)", root, shots)
+    step("open: 3D view shown")
     page.wait_for_function("() => document.querySelector('.explorer-message')?.innerText")
     first = _message(page)
     assert first.startswith("ok — front-up") and "(500, 113, -1724)" in first, first
@@ -357,6 +382,7 @@ def test_explorer_in_jupyterlab(lab, lab_page, shots):
     plot.scroll_into_view_if_needed()
     page.screenshot(path=shots / "lab-explorer.png", full_page=False)
 
+    step("open and run")
     # 1. typed changes: the drawn arm moves to FK(IK(target)) at once; latency measured
     latencies = []
     for k, (label, v, target) in enumerate(
@@ -381,6 +407,7 @@ def test_explorer_in_jupyterlab(lab, lab_page, shots):
         " || document.querySelector('.explorer-message').innerText.includes('front-up')"
     )
 
+    step("1 typed")
     # 2. a slider moved with the mouse: the message changes, the arm follows the readouts
     before = _message(page)
     handle = x.locator(".noUi-handle")
@@ -393,6 +420,7 @@ def test_explorer_in_jupyterlab(lab, lab_page, shots):
     expect = _fk_pose(arm, [xs, 100, 600], "front-up")
     assert _close(_settled(page, expect)["arm"], expect)
 
+    step("2 slider drag")
     # 3. another branch: the drawing flips the elbow
     page.get_by_role("button", name="back-down", exact=True).first.click()
     expect = _fk_pose(arm, [xs, 100, 600], "back-down")
@@ -400,6 +428,7 @@ def test_explorer_in_jupyterlab(lab, lab_page, shots):
     assert _close(drawn["arm"], expect) and "back-down" in drawn["title"], drawn
     page.get_by_role("button", name="front-up", exact=True).first.click()
 
+    step("3 branch")
     # 4. Table 4 row 8, typed: the unreachable message (the paper's 无解), no arm drawn
     for label, v in (("x [mm]", 200), ("y [mm]", 500), ("z [mm]", 600)):
         _type_into(page, label, v)
@@ -416,26 +445,26 @@ def test_explorer_in_jupyterlab(lab, lab_page, shots):
     assert "no solution" in drawn["title"]
     page.screenshot(path=shots / "lab-explorer-row8.png", full_page=False)
 
+    step("4 row 8")
     # 5. the 3D view rotates with the mouse, and keeps its camera when the target changes
     plot.scroll_into_view_if_needed()
+    _quiet(page)
     before = _camera(plot)
-    _drag(page, plot.bounding_box(), 120, 40)
-    after = _settled_camera(page, plot)
-    assert after != before, (before, after)
+    saved, after = _drag_view(page, plot, 120, 40)
+    assert max(abs(after[k] - before[k]) for k in "xyz") > 0.1, (before, after)  # it rotated
+    assert after == pytest.approx(saved, abs=1e-9), (saved, after)  # at rest where it was left
     _type_into(page, "x [mm]", 100)
     _mark(page)
     _type_into(page, "y [mm]", 100)
     drawn, ms = _drawn_after_change(page)
     latencies.append(ms)
     assert _close(drawn["arm"], row1)
-    page.wait_for_function(
-        "() => document.querySelector('.explorer-message').innerText.startsWith('ok')"
-    )
-    page.wait_for_timeout(300)
+    _quiet(page)  # the kernel's pose in too (it redraws if it differs from the browser's)
     kept = _camera(plot)
-    assert kept == pytest.approx(after, abs=1e-6)
+    assert kept == pytest.approx(after, abs=1e-9), (after, kept)
     page.screenshot(path=shots / "lab-explorer-rotated.png", full_page=False)
 
+    step("5 camera")
     # 6. FK mode: the joint sliders drive the drawing
     page.get_by_role("button", name=re.compile("FK mode")).first.click()
     t1 = _slider(page, "θ1 [°]")
@@ -449,18 +478,21 @@ def test_explorer_in_jupyterlab(lab, lab_page, shots):
     assert "FK" in drawn["title"]
 
     assert not page.blocked or all("127.0.0.1" not in u for u in page.blocked)
+    step("6 FK")
     # make lab never changes the stored notebook: saved, the copy changed, notebooks/ did not
     saved = root / NOTEBOOK.name
     before_save = saved.stat().st_mtime
     page.get_by_role("menuitem", name="File", exact=True).click()
-    page.get_by_role("menuitem", name=re.compile(r"^Save( Notebook)?(\s|$)")).first.click()
-    deadline = time.monotonic() + 20
-    while saved.stat().st_mtime == before_save and time.monotonic() < deadline:
-        time.sleep(0.2)
-    if saved.stat().st_mtime <= before_save:
-        page.screenshot(path=shots / "lab-explorer-save-failed.png")
+    # Save: wait for JupyterLab's PUT of the notebook to be answered
+    with page.expect_response(
+        lambda r: r.request.method == "PUT" and f"/api/contents/{NOTEBOOK.name}" in r.url,
+        timeout=30_000,
+    ) as put:
+        page.get_by_role("menuitem", name=re.compile(r"^Save( Notebook)?(\s|$)")).first.click()
+    assert put.value.ok, (put.value.status, _tail(root / "lab.log"))
     assert saved.stat().st_mtime > before_save, "JupyterLab did not save the notebook"
     assert NOTEBOOK.read_bytes() == STORED, "the stored notebook changed"
+    step("save")
     # the browser's own frame interval with nothing changing (context for the latency)
     frame = page.evaluate(
         """() => new Promise(r => { const ts = []; const f = t => { ts.push(t);
@@ -477,6 +509,7 @@ def test_explorer_in_jupyterlab(lab, lab_page, shots):
         "idle_frame_ms": round(frame, 1),
         "loadavg": [round(v, 2) for v in load],
         "cpus": os.cpu_count(),
+        "steps_s": steps,
     }
     (shots / "lab-latency.json").write_text(json.dumps(report, indent=1) + "\n")
     print(f"JupyterLab explorer: {time.perf_counter() - t0:.1f} s; change -> pose on screen "

@@ -40,6 +40,54 @@
     }));
   }
 
+  // The camera through redraws. plotly.js (7.1) redraws the 3D scene on every update with
+  // setViewport (the camera from the layout: the user's, saved there at mouseup) and then
+  // updateFx, which sets camera.mode = "turntable" again and so puts a camera keyframe 500 ms
+  // into the future: for half a second after each redraw the mouse's rotations are dropped (a
+  // drag started right after a slider change does nothing, or only part of it counts), and a
+  // drag that ends inside that window leaves the camera off the one plotly saved at mouseup,
+  // so the next redraw moves it by the difference (the explorer's browser test saw 0.0014).
+  // The explorer redraws on every change, so its scene (a) keeps its camera controller when
+  // it is already in turntable mode and (b) keeps the camera where the mouse has it while a
+  // drag is in progress (plotly saves it into the layout at mouseup, as before).
+  function keepCamera(gd) {
+    const scene = gd._fullLayout && gd._fullLayout.scene && gd._fullLayout.scene._scene;
+    if (!scene || scene.arm3dKeepsCamera) return;
+    if (typeof scene.updateFx !== "function" || typeof scene.setViewport !== "function") return;
+    const {updateFx, setViewport} = scene;
+    scene.updateFx = function (dragmode, hovermode) {
+      if (dragmode === "turntable" && this.camera && this.camera.mode === "turntable") {
+        this.fullSceneLayout.hovermode = hovermode;
+        return undefined;
+      }
+      return updateFx.call(this, dragmode, hovermode);
+    };
+    scene.setViewport = function (sceneLayout) {
+      const mouse = this.camera && this.camera.mouseListener;
+      if (mouse && mouse.buttons && this.camera.mode === "turntable") {
+        this.glplot.setAspectratio(sceneLayout.aspectratio); // a drag: the camera is the mouse's
+        return undefined;
+      }
+      return setViewport.call(this, sceneLayout);
+    };
+    scene.arm3dKeepsCamera = true;
+  }
+
+  const POSE_TOL_MM = 1e-6; // the kernel rounds its frames to 1e-6 mm (explore.Explorer._draw)
+
+  /** Two poses [frames, target, title] that draw the same: titles equal, every coordinate
+   * within POSE_TOL_MM. */
+  function samePose(a, b) {
+    if (!a || !b || a[2] !== b[2]) return false;
+    const flat = (v) => (v == null ? null : [].concat(...v.map((p) => (Array.isArray(p) ? p : [p]))));
+    for (let k = 0; k < 2; k++) {
+      const u = flat(a[k]), w = flat(b[k]);
+      if (u === null || w === null) { if (u !== w) return false; continue; }
+      if (u.length !== w.length || u.some((x, i) => !(Math.abs(x - w[i]) <= POSE_TOL_MM))) return false;
+    }
+    return true;
+  }
+
   class View {
     constructor(el, Plotly, figure) {
       this.el = el;
@@ -58,8 +106,9 @@
       this.arm = this.names.indexOf("arm");
       this.target = this.names.indexOf("target");
       this.last = null;
-      this.queue = this.queue.then(() =>
-        this.Plotly.react(this.div, fig.data, fig.layout, fig.config || {}));
+      this.queue = this.queue
+        .then(() => this.Plotly.react(this.div, fig.data, fig.layout, fig.config || {}))
+        .then(() => keepCamera(this.div));
       return this.queue;
     }
 
@@ -67,9 +116,11 @@
      * target cross at `target` and the title; resolves once it is on screen. */
     draw(frames, target, title, source) {
       const asked = performance.now();
-      const key = JSON.stringify([frames, target, title]);
-      if (key === this.last) return this.queue;
-      this.last = key;
+      const pose = [frames, target, title];
+      // the same pose again (the kernel's, rounded to 1e-6 mm, after the browser's): no redraw
+      if (samePose(pose, this.last)) return this.queue;
+      this.last = pose;
+      this.el.arm3dPending = (this.el.arm3dPending || 0) + 1;
       const pts = frames || [];
       const col = (k) => pts.map((p) => p[k]);
       const data = {x: [col(0)], y: [col(1)], z: [col(2)]};
@@ -94,7 +145,8 @@
           this.el.arm3dDraws.push(rec);
           (globalThis.arm3dDraws = globalThis.arm3dDraws || []).push(rec);
           this.el.dispatchEvent(new CustomEvent("arm3d-drawn", {detail: rec, bubbles: true}));
-        });
+        })
+        .finally(() => { this.el.arm3dPending -= 1; });
       return this.queue;
     }
   }

@@ -65,7 +65,7 @@ async function render({model, el}) {
     };
     for (const m of [...c.inputs, ...c.joints, c.branch, c.fk, c.axis, c.axisDeg]) {
       if (!m) continue;
-      const cb = () => local();
+      const cb = () => { el.arm3dKernelCurrent = false; local(); };
       m.on("change:value change:index", cb);
       unhook.push(() => m.off("change:value change:index", cb));
     }
@@ -97,7 +97,10 @@ async function render({model, el}) {
   function kernel() {
     const p = model.get("pose");
     if (!p || !p.title) return;
-    if (ctl && p.key && !sameKey(p.key, key())) return; // for values the controls have left
+    // for values the controls have left: not drawn (el.arm3dKernelCurrent says whether the
+    // kernel's pose is for the controls' values, what the browser tests wait on)
+    el.arm3dKernelCurrent = !(ctl && p.key && !sameKey(p.key, key()));
+    if (!el.arm3dKernelCurrent) return;
     view.draw(p.frames, p.target, p.title, "kernel");
   }
 
