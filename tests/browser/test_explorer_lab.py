@@ -15,6 +15,7 @@ what the page shows. Screenshots go to ``build/browser`` (see conftest.py).
 from __future__ import annotations
 
 import contextlib
+import importlib.util
 import json
 import os
 import re
@@ -38,6 +39,7 @@ from .conftest import LOCAL_HOSTS, PROJECT
 NOTEBOOK = PROJECT / "notebooks" / "09_explore.ipynb"
 STORED = NOTEBOOK.read_bytes()  # what nbval compares: the Lab session must leave it as it is
 JUPYTER = Path(sys.executable).with_name("jupyter")  # lab_command runs this one
+NB7_COPY = "09_explore_notebook7.ipynb"  # the same cleared notebook, opened in Notebook 7
 START_TIMEOUT_S = 90  # JupyterLab's first start builds nothing, but loads ~100 extensions
 
 
@@ -60,6 +62,7 @@ def lab(chromium, tmp_path_factory):
             cell.outputs, cell.execution_count = [], None
     nb.metadata.pop("widgets", None)
     nbformat.write(nb, root / NOTEBOOK.name)
+    nbformat.write(nb, root / NB7_COPY)  # its own session and kernel in Notebook 7
     settings = root / "settings" / "@jupyterlab" / "apputils-extension"
     settings.mkdir(parents=True)
     (settings / "notification.jupyterlab-settings").write_text(
@@ -231,19 +234,31 @@ def _drag(page, box, dx: float, dy: float) -> None:
     page.mouse.up()
 
 
-def _run_all(page, timeout_s: float = 90) -> None:
-    """Run > Run All Cells once the kernel is idle (taking the preferred kernel if JupyterLab
-    asks which one to start), until a cell shows that it runs."""
+def _kernel_idle(url: str, path: str) -> bool:
+    """The Jupyter server has a session for ``path`` whose kernel is idle (REST API)."""
+    with contextlib.suppress(OSError, ValueError):
+        with urllib.request.urlopen(url + "api/sessions", timeout=2) as r:
+            for sess in json.load(r):
+                if sess.get("path") == path:
+                    return (sess.get("kernel") or {}).get("execution_state") == "idle"
+    return False
+
+
+def _run_all(page, timeout_s: float = 90, ready=None) -> None:
+    """Run > Run All Cells once the kernel is idle (``ready()``; default JupyterLab's status
+    bar says so), taking the preferred kernel if asked which one to start, until a cell shows
+    that it runs."""
     from playwright.sync_api import TimeoutError as PlaywrightTimeout
 
     deadline = time.monotonic() + timeout_s
     status = page.locator(".jp-StatusBar-Widget", has_text="| Idle")
+    ready = ready or status.count
     started = page.locator(".jp-InputPrompt", has_text=re.compile(r"\[(\*|\d+)\]"))
     while time.monotonic() < deadline:
         dialog = page.locator(".jp-Dialog")
         if dialog.count() and dialog.first.is_visible():
             dialog.get_by_role("button", name="Select", exact=True).click()
-        elif status.count():
+        elif ready():
             page.get_by_role("menuitem", name="Run", exact=True).click()
             page.get_by_role("menuitem", name=re.compile(r"^Run All Cells")).click()
             with contextlib.suppress(PlaywrightTimeout):
@@ -520,3 +535,48 @@ def test_explorer_in_jupyterlab(lab, lab_page, shots):
     # (on a loaded one the number is recorded, with the load, in build/browser/lab-latency.json)
     if load[0] < 0.5 * (os.cpu_count() or 1):
         assert report["max_ms"] <= 50, report
+
+
+def test_explorer_in_notebook7(lab, lab_page, shots):
+    """The same notebook in Notebook 7's interface (``/notebooks/...``, served by the same
+    Jupyter server as JupyterLab): Run All, then typed changes; each time the drawn arm must
+    be where IK then FK in Python put it (a frozen plot fails), drawn first in the browser."""
+    if importlib.util.find_spec("notebook") is None:
+        pytest.skip("no Notebook 7 (the notebook package, pinned in requirements.lock): make venv")
+    from analysis.kinematics.arm import paper_arm
+
+    arm = paper_arm()
+    url, root = lab
+    page = lab_page
+    t0 = time.perf_counter()
+    page.goto(url + f"notebooks/{NB7_COPY}")
+    page.locator(".jp-Notebook").first.wait_for()
+    _run_all(page, ready=lambda: _kernel_idle(url, NB7_COPY))
+    x = _slider(page, "x [mm]")
+    _attached(x, "the explorer's x slider (Notebook 7)", root, shots, timeout=120_000)
+    x.scroll_into_view_if_needed()
+    plot = page.locator(".arm3d-widget .js-plotly-plot").first
+    _attached(plot, "the 3D view (Notebook 7)", root, shots)
+    row1 = _fk_pose(arm, [100, 100, 600], "front-up")
+    drawn = _settled(page, row1)
+    assert _close(drawn["arm"], row1), (drawn, page.console[-10:])
+    latencies = []
+    for label, v, target in (("x [mm]", 150, [150, 100, 600]), ("z [mm]", 700, [150, 100, 700])):
+        _mark(page)
+        _type_into(page, label, v)
+        drawn, ms = _drawn_after_change(page)
+        latencies.append(round(ms, 1))
+        expect = _fk_pose(arm, target, "front-up")
+        assert _close(drawn["arm"], expect), (target, drawn["arm"], expect.tolist())
+        assert PHASES[-1][-1] == "local", PHASES[-1]  # drawn from the printed kinematics
+    page.get_by_role("button", name="back-down", exact=True).first.click()
+    expect = _fk_pose(arm, [150, 100, 700], "back-down")
+    assert _close(_settled(page, expect)["arm"], expect)
+    page.wait_for_function(
+        "() => document.querySelector('.explorer-message').innerText.startsWith('ok — back-down')"
+    )
+    plot.scroll_into_view_if_needed()
+    page.screenshot(path=shots / "notebook7-explorer.png", full_page=False)
+    assert NOTEBOOK.read_bytes() == STORED, "the stored notebook changed"
+    print(f"Notebook 7 explorer: {time.perf_counter() - t0:.1f} s; change -> pose on screen "
+          f"{latencies} ms (load {os.getloadavg()[0]:.2f})")
