@@ -109,6 +109,8 @@ def lab(chromium, tmp_path_factory):
             if time.monotonic() > deadline:
                 pytest.fail(f"jupyter lab not up in {START_TIMEOUT_S} s: {_tail(root / 'lab.log')}")
             time.sleep(0.5)
+        for name in (NOTEBOOK.name, NB7_COPY):  # their kernels start while the browser loads
+            _start_session(url, name, nb.metadata.kernelspec.name)
         yield url, root
     finally:
         proc.terminate()
@@ -118,6 +120,24 @@ def lab(chromium, tmp_path_factory):
             proc.kill()
             proc.wait()
         log.close()
+
+
+def _start_session(url: str, path: str, kernel: str) -> None:
+    """Ask the server for ``path``'s session and kernel (what opening the notebook does; the
+    page then joins it, and the kernel's start overlaps JupyterLab's loading)."""
+    from http.cookiejar import CookieJar
+
+    jar = CookieJar()
+    opener = urllib.request.build_opener(urllib.request.HTTPCookieProcessor(jar))
+    opener.open(url + "lab", timeout=30).close()  # the page sets the _xsrf cookie
+    xsrf = next(c.value for c in jar if c.name == "_xsrf")
+    body = {"path": path, "name": path, "type": "notebook", "kernel": {"name": kernel}}
+    req = urllib.request.Request(
+        url + "api/sessions", data=json.dumps(body).encode(), method="POST",
+        headers={"Content-Type": "application/json", "X-XSRFToken": xsrf},
+    )
+    with opener.open(req, timeout=30) as r:
+        assert r.status == 201, (r.status, r.read()[:300])
 
 
 def _tail(path: Path, n: int = 2000) -> str:
