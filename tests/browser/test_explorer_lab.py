@@ -1,15 +1,23 @@
-"""The explorer (notebook 09) as a user meets it: in JupyterLab, in Debian's Chromium.
+"""The explorer (notebook 09) as a user meets it: in JupyterLab and in Notebook 7, in Debian's
+Chromium.
 
 A JupyterLab server from the project's ``.venv`` is started on 127.0.0.1 (a free port, no
-token, no browser) in a temporary folder holding a copy of ``notebooks/09_explore.ipynb``
+token, no browser) in a temporary folder holding two copies of ``notebooks/09_explore.ipynb``
 with its stored outputs cleared (so every output on the page comes from this run; the real
-notebook is only read). Its configuration, settings, workspaces and runtime files live in
-that folder too, with JupyterLab's news and update checks switched off. The browser's
-requests to any host but 127.0.0.1 are aborted and recorded.
+notebook is only read), one for JupyterLab (``/lab/tree/...``) and one for Notebook 7's
+interface (``/notebooks/...``, the ``notebook`` package on the same server); their kernels
+are started over the REST API as soon as the server is up. Configuration, settings,
+workspaces and runtime files live in that folder too, with JupyterLab's news and update
+checks switched off. The browser's requests to any host but 127.0.0.1 are aborted and
+recorded.
 
-The test runs the notebook from the Run menu, then drags a slider, types Table 4 row 8,
-(200, 500, 600) mm, into the slider boxes, and drags the 3D view, asserting each time on
-what the page shows. Screenshots go to ``build/browser`` (see conftest.py).
+The tests run the notebook from the Run menu, then type targets (Table 4 row 8, (200, 500,
+600) mm, among them) into the slider boxes, drag a slider, pick branches and drag the 3D view,
+asserting each time on what the page draws: the joint positions held to IK then FK computed
+here in Python, and the camera that plotly saved at the drag's mouseup kept through the next
+redraw. Waits are on events (a draw on screen, the kernel's pose in, plotly's relayout, the
+save's response), not on fixed timeouts. Screenshots, the latencies and the seconds per step
+go to ``build/browser`` (see conftest.py).
 """
 
 from __future__ import annotations
