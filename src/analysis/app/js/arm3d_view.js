@@ -156,6 +156,7 @@
           (globalThis.arm3dDraws = globalThis.arm3dDraws || []).push(rec);
           this.el.dispatchEvent(new CustomEvent("arm3d-drawn", {detail: rec, bubbles: true}));
         })
+        .catch((e) => console.error("arm3d: a redraw failed", e)) // the next one still runs
         .finally(() => { this.el.arm3dPending -= 1; });
       return this.queue;
     }
