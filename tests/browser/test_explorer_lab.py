@@ -141,7 +141,9 @@ def _start_session(url: str, path: str, kernel: str) -> None:
     xsrf = next(c.value for c in jar if c.name == "_xsrf")
     body = {"path": path, "name": path, "type": "notebook", "kernel": {"name": kernel}}
     req = urllib.request.Request(
-        url + "api/sessions", data=json.dumps(body).encode(), method="POST",
+        url + "api/sessions",
+        data=json.dumps(body).encode(),
+        method="POST",
         headers={"Content-Type": "application/json", "X-XSRFToken": xsrf},
     )
     with opener.open(req, timeout=30) as r:
@@ -334,15 +336,19 @@ def _drawn_after_change(page, timeout_ms: float = 20_000) -> tuple[dict, float]:
 
     try:
         page.wait_for_function(
-        """() => window.arm3dChangeAt !== null && (document.querySelector('.arm3d-widget')
+            """() => window.arm3dChangeAt !== null && (document.querySelector('.arm3d-widget')
             .arm3dDraws || []).some(d => d.t > window.arm3dChangeAt)""",
             timeout=timeout_ms,
         )
     except PlaywrightTimeout:
-        state = page.evaluate("() => [window.arm3dChangeAt, (document.querySelector("
-                              "'.arm3d-widget').arm3dDraws || []).map(d => [d.t, d.source])]")
-        raise AssertionError(f"no new pose drawn after the change: {state}; console: "
-                             f"{[c for c in page.console if 'GL Driver' not in c][-8:]}") from None
+        state = page.evaluate(
+            "() => [window.arm3dChangeAt, (document.querySelector("
+            "'.arm3d-widget').arm3dDraws || []).map(d => [d.t, d.source])]"
+        )
+        raise AssertionError(
+            f"no new pose drawn after the change: {state}; console: "
+            f"{[c for c in page.console if 'GL Driver' not in c][-8:]}"
+        ) from None
     ms = page.evaluate(
         """() => { const t0 = window.arm3dChangeAt;
         const d = document.querySelector('.arm3d-widget').arm3dDraws.find(d => d.t > t0);
@@ -481,8 +487,10 @@ def test_explorer_in_jupyterlab(lab, lab_page, shots):
     row8 = _message(page)
     assert row8.startswith("out-of-reach — target (200, 500, 600) mm"), row8
     assert page.locator(".explorer-table").count() == 0  # no numbers for a bad target
-    page.wait_for_function("() => !document.querySelector('.arm3d-widget .js-plotly-plot')"
-                           "._fullData.find(t => t.name === 'arm').x?.length")
+    page.wait_for_function(
+        "() => !document.querySelector('.arm3d-widget .js-plotly-plot')"
+        "._fullData.find(t => t.name === 'arm').x?.length"
+    )
     drawn = _drawn(page)
     assert drawn["arm"] == [] and _close(drawn["target"], [[200, 500, 600]])
     assert "no solution" in drawn["title"]
@@ -555,8 +563,9 @@ def test_explorer_in_jupyterlab(lab, lab_page, shots):
         "steps_s": steps,
     }
     (shots / "lab-latency.json").write_text(json.dumps(report, indent=1) + "\n")
-    print(f"JupyterLab explorer: {time.perf_counter() - t0:.1f} s; change -> pose on screen "
-          f"{report}")
+    print(
+        f"JupyterLab explorer: {time.perf_counter() - t0:.1f} s; change -> pose on screen {report}"
+    )
     # every change is drawn first from the printed kinematics, not after a kernel round trip
     assert report["first_draw_from"] == ["local"], report
     # the budget: at most 50 ms from the change to the new pose on screen, on an idle machine
@@ -606,5 +615,7 @@ def test_explorer_in_notebook7(lab, lab_page, shots):
     plot.scroll_into_view_if_needed()
     page.screenshot(path=shots / "notebook7-explorer.png", full_page=False)
     assert NOTEBOOK.read_bytes() == STORED, "the stored notebook changed"
-    print(f"Notebook 7 explorer: {time.perf_counter() - t0:.1f} s; change -> pose on screen "
-          f"{latencies} ms (load {os.getloadavg()[0]:.2f})")
+    print(
+        f"Notebook 7 explorer: {time.perf_counter() - t0:.1f} s; change -> pose on screen "
+        f"{latencies} ms (load {os.getloadavg()[0]:.2f})"
+    )
