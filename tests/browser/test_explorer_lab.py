@@ -1,20 +1,29 @@
-"""The explorer (notebook 09) as a user meets it: in JupyterLab, in Debian's Chromium.
+"""The explorer (notebook 09) as a user meets it: in JupyterLab and in Notebook 7, in Debian's
+Chromium.
 
 A JupyterLab server from the project's ``.venv`` is started on 127.0.0.1 (a free port, no
-token, no browser) in a temporary folder holding a copy of ``notebooks/09_explore.ipynb``
+token, no browser) in a temporary folder holding two copies of ``notebooks/09_explore.ipynb``
 with its stored outputs cleared (so every output on the page comes from this run; the real
-notebook is only read). Its configuration, settings, workspaces and runtime files live in
-that folder too, with JupyterLab's news and update checks switched off. The browser's
-requests to any host but 127.0.0.1 are aborted and recorded.
+notebook is only read), one for JupyterLab (``/lab/tree/...``) and one for Notebook 7's
+interface (``/notebooks/...``, the ``notebook`` package on the same server); their kernels
+are started over the REST API as soon as the server is up. Configuration, settings,
+workspaces and runtime files live in that folder too, with JupyterLab's news and update
+checks switched off. The browser's requests to any host but 127.0.0.1 are aborted and
+recorded.
 
-The test runs the notebook from the Run menu, then drags a slider, types Table 4 row 8,
-(200, 500, 600) mm, into the slider boxes, and drags the 3D view, asserting each time on
-what the page shows. Screenshots go to ``build/browser`` (see conftest.py).
+The tests run the notebook from the Run menu, then type targets (Table 4 row 8, (200, 500,
+600) mm, among them) into the slider boxes, drag a slider, pick branches and drag the 3D view,
+asserting each time on what the page draws: the joint positions held to IK then FK computed
+here in Python, and the camera that plotly saved at the drag's mouseup kept through the next
+redraw. Waits are on events (a draw on screen, the kernel's pose in, plotly's relayout, the
+save's response), not on fixed timeouts. Screenshots, the latencies and the seconds per step
+go to ``build/browser`` (see conftest.py).
 """
 
 from __future__ import annotations
 
 import contextlib
+import importlib.util
 import json
 import os
 import re
@@ -38,6 +47,7 @@ from .conftest import LOCAL_HOSTS, PROJECT
 NOTEBOOK = PROJECT / "notebooks" / "09_explore.ipynb"
 STORED = NOTEBOOK.read_bytes()  # what nbval compares: the Lab session must leave it as it is
 JUPYTER = Path(sys.executable).with_name("jupyter")  # lab_command runs this one
+NB7_COPY = "09_explore_notebook7.ipynb"  # the same cleared notebook, opened in Notebook 7
 START_TIMEOUT_S = 90  # JupyterLab's first start builds nothing, but loads ~100 extensions
 
 
@@ -60,6 +70,7 @@ def lab(chromium, tmp_path_factory):
             cell.outputs, cell.execution_count = [], None
     nb.metadata.pop("widgets", None)
     nbformat.write(nb, root / NOTEBOOK.name)
+    nbformat.write(nb, root / NB7_COPY)  # its own session and kernel in Notebook 7
     settings = root / "settings" / "@jupyterlab" / "apputils-extension"
     settings.mkdir(parents=True)
     (settings / "notification.jupyterlab-settings").write_text(
@@ -106,6 +117,8 @@ def lab(chromium, tmp_path_factory):
             if time.monotonic() > deadline:
                 pytest.fail(f"jupyter lab not up in {START_TIMEOUT_S} s: {_tail(root / 'lab.log')}")
             time.sleep(0.5)
+        for name in (NOTEBOOK.name, NB7_COPY):  # their kernels start while the browser loads
+            _start_session(url, name, nb.metadata.kernelspec.name)
         yield url, root
     finally:
         proc.terminate()
@@ -115,6 +128,26 @@ def lab(chromium, tmp_path_factory):
             proc.kill()
             proc.wait()
         log.close()
+
+
+def _start_session(url: str, path: str, kernel: str) -> None:
+    """Ask the server for ``path``'s session and kernel (what opening the notebook does; the
+    page then joins it, and the kernel's start overlaps JupyterLab's loading)."""
+    from http.cookiejar import CookieJar
+
+    jar = CookieJar()
+    opener = urllib.request.build_opener(urllib.request.HTTPCookieProcessor(jar))
+    opener.open(url + "lab", timeout=30).close()  # the page sets the _xsrf cookie
+    xsrf = next(c.value for c in jar if c.name == "_xsrf")
+    body = {"path": path, "name": path, "type": "notebook", "kernel": {"name": kernel}}
+    req = urllib.request.Request(
+        url + "api/sessions",
+        data=json.dumps(body).encode(),
+        method="POST",
+        headers={"Content-Type": "application/json", "X-XSRFToken": xsrf},
+    )
+    with opener.open(req, timeout=30) as r:
+        assert r.status == 201, (r.status, r.read()[:300])
 
 
 def _tail(path: Path, n: int = 2000) -> str:
@@ -231,19 +264,31 @@ def _drag(page, box, dx: float, dy: float) -> None:
     page.mouse.up()
 
 
-def _run_all(page, timeout_s: float = 90) -> None:
-    """Run > Run All Cells once the kernel is idle (taking the preferred kernel if JupyterLab
-    asks which one to start), until a cell shows that it runs."""
+def _kernel_idle(url: str, path: str) -> bool:
+    """The Jupyter server has a session for ``path`` whose kernel is idle (REST API)."""
+    with contextlib.suppress(OSError, ValueError):
+        with urllib.request.urlopen(url + "api/sessions", timeout=2) as r:
+            for sess in json.load(r):
+                if sess.get("path") == path:
+                    return (sess.get("kernel") or {}).get("execution_state") == "idle"
+    return False
+
+
+def _run_all(page, timeout_s: float = 90, ready=None) -> None:
+    """Run > Run All Cells once the kernel is idle (``ready()``; default JupyterLab's status
+    bar says so), taking the preferred kernel if asked which one to start, until a cell shows
+    that it runs."""
     from playwright.sync_api import TimeoutError as PlaywrightTimeout
 
     deadline = time.monotonic() + timeout_s
     status = page.locator(".jp-StatusBar-Widget", has_text="| Idle")
+    ready = ready or status.count
     started = page.locator(".jp-InputPrompt", has_text=re.compile(r"\[(\*|\d+)\]"))
     while time.monotonic() < deadline:
         dialog = page.locator(".jp-Dialog")
         if dialog.count() and dialog.first.is_visible():
             dialog.get_by_role("button", name="Select", exact=True).click()
-        elif status.count():
+        elif ready():
             page.get_by_role("menuitem", name="Run", exact=True).click()
             page.get_by_role("menuitem", name=re.compile(r"^Run All Cells")).click()
             with contextlib.suppress(PlaywrightTimeout):
@@ -291,15 +336,19 @@ def _drawn_after_change(page, timeout_ms: float = 20_000) -> tuple[dict, float]:
 
     try:
         page.wait_for_function(
-        """() => window.arm3dChangeAt !== null && (document.querySelector('.arm3d-widget')
+            """() => window.arm3dChangeAt !== null && (document.querySelector('.arm3d-widget')
             .arm3dDraws || []).some(d => d.t > window.arm3dChangeAt)""",
             timeout=timeout_ms,
         )
     except PlaywrightTimeout:
-        state = page.evaluate("() => [window.arm3dChangeAt, (document.querySelector("
-                              "'.arm3d-widget').arm3dDraws || []).map(d => [d.t, d.source])]")
-        raise AssertionError(f"no new pose drawn after the change: {state}; console: "
-                             f"{[c for c in page.console if 'GL Driver' not in c][-8:]}") from None
+        state = page.evaluate(
+            "() => [window.arm3dChangeAt, (document.querySelector("
+            "'.arm3d-widget').arm3dDraws || []).map(d => [d.t, d.source])]"
+        )
+        raise AssertionError(
+            f"no new pose drawn after the change: {state}; console: "
+            f"{[c for c in page.console if 'GL Driver' not in c][-8:]}"
+        ) from None
     ms = page.evaluate(
         """() => { const t0 = window.arm3dChangeAt;
         const d = document.querySelector('.arm3d-widget').arm3dDraws.find(d => d.t > t0);
@@ -438,8 +487,10 @@ def test_explorer_in_jupyterlab(lab, lab_page, shots):
     row8 = _message(page)
     assert row8.startswith("out-of-reach — target (200, 500, 600) mm"), row8
     assert page.locator(".explorer-table").count() == 0  # no numbers for a bad target
-    page.wait_for_function("() => !document.querySelector('.arm3d-widget .js-plotly-plot')"
-                           "._fullData.find(t => t.name === 'arm').x?.length")
+    page.wait_for_function(
+        "() => !document.querySelector('.arm3d-widget .js-plotly-plot')"
+        "._fullData.find(t => t.name === 'arm').x?.length"
+    )
     drawn = _drawn(page)
     assert drawn["arm"] == [] and _close(drawn["target"], [[200, 500, 600]])
     assert "no solution" in drawn["title"]
@@ -512,11 +563,59 @@ def test_explorer_in_jupyterlab(lab, lab_page, shots):
         "steps_s": steps,
     }
     (shots / "lab-latency.json").write_text(json.dumps(report, indent=1) + "\n")
-    print(f"JupyterLab explorer: {time.perf_counter() - t0:.1f} s; change -> pose on screen "
-          f"{report}")
+    print(
+        f"JupyterLab explorer: {time.perf_counter() - t0:.1f} s; change -> pose on screen {report}"
+    )
     # every change is drawn first from the printed kinematics, not after a kernel round trip
     assert report["first_draw_from"] == ["local"], report
     # the budget: at most 50 ms from the change to the new pose on screen, on an idle machine
     # (on a loaded one the number is recorded, with the load, in build/browser/lab-latency.json)
     if load[0] < 0.5 * (os.cpu_count() or 1):
         assert report["max_ms"] <= 50, report
+
+
+def test_explorer_in_notebook7(lab, lab_page, shots):
+    """The same notebook in Notebook 7's interface (``/notebooks/...``, served by the same
+    Jupyter server as JupyterLab): Run All, then typed changes; each time the drawn arm must
+    be where IK then FK in Python put it (a frozen plot fails), drawn first in the browser."""
+    if importlib.util.find_spec("notebook") is None:
+        pytest.skip("no Notebook 7 (the notebook package, pinned in requirements.lock): make venv")
+    from analysis.kinematics.arm import paper_arm
+
+    arm = paper_arm()
+    url, root = lab
+    page = lab_page
+    t0 = time.perf_counter()
+    page.goto(url + f"notebooks/{NB7_COPY}")
+    page.locator(".jp-Notebook").first.wait_for()
+    _run_all(page, ready=lambda: _kernel_idle(url, NB7_COPY))
+    x = _slider(page, "x [mm]")
+    _attached(x, "the explorer's x slider (Notebook 7)", root, shots, timeout=120_000)
+    x.scroll_into_view_if_needed()
+    plot = page.locator(".arm3d-widget .js-plotly-plot").first
+    _attached(plot, "the 3D view (Notebook 7)", root, shots)
+    row1 = _fk_pose(arm, [100, 100, 600], "front-up")
+    drawn = _settled(page, row1)
+    assert _close(drawn["arm"], row1), (drawn, page.console[-10:])
+    latencies = []
+    for label, v, target in (("x [mm]", 150, [150, 100, 600]), ("z [mm]", 700, [150, 100, 700])):
+        _mark(page)
+        _type_into(page, label, v)
+        drawn, ms = _drawn_after_change(page)
+        latencies.append(round(ms, 1))
+        expect = _fk_pose(arm, target, "front-up")
+        assert _close(drawn["arm"], expect), (target, drawn["arm"], expect.tolist())
+        assert PHASES[-1][-1] == "local", PHASES[-1]  # drawn from the printed kinematics
+    page.get_by_role("button", name="back-down", exact=True).first.click()
+    expect = _fk_pose(arm, [150, 100, 700], "back-down")
+    assert _close(_settled(page, expect)["arm"], expect)
+    page.wait_for_function(
+        "() => document.querySelector('.explorer-message').innerText.startsWith('ok — back-down')"
+    )
+    plot.scroll_into_view_if_needed()
+    page.screenshot(path=shots / "notebook7-explorer.png", full_page=False)
+    assert NOTEBOOK.read_bytes() == STORED, "the stored notebook changed"
+    print(
+        f"Notebook 7 explorer: {time.perf_counter() - t0:.1f} s; change -> pose on screen "
+        f"{latencies} ms (load {os.getloadavg()[0]:.2f})"
+    )
