@@ -89,11 +89,16 @@ def test_memory_is_bounded_whatever_the_cell_widths(wide_files, tmp_path, shape)
     assert header.count(",") == wide_files[shape].open().readline().count(",") + 10
 
 
-def _slow_input(path: Path, rows: int = 100_000) -> Path:
-    """A batch that runs for seconds in chunks of 500 rows (--chunk-rows 500): its temporary
-    file appears at once and it is still running when the signal comes."""
-    path.write_text("x_mm,y_mm,z_mm\n" + "100,100,600\n" * rows)
-    return path
+def _running_batch(out: Path) -> subprocess.Popen:
+    """A batch that is still running when the test signals it, whatever the machine's speed:
+    it reads its targets from a pipe (``--input -``) that the test keeps open after 2,000 rows,
+    so after its first chunks (``--chunk-rows 500``) are in the temporary file it waits for more.
+    (A 100,000-row file could be finished before the signal came: it was, once, on a tmpfs.)"""
+    proc = _spawn("ik", "--input", "-", "--output", str(out), "--branch", "all",
+                  "--chunk-rows", "500", stdin=subprocess.PIPE)  # fmt: skip
+    proc.stdin.write("x_mm,y_mm,z_mm\n" + "100,100,600\n" * 2_000)
+    proc.stdin.flush()
+    return proc
 
 
 def _wait_for_tmp(directory: Path, proc: subprocess.Popen, timeout: float = 300) -> list[str]:
@@ -114,33 +119,31 @@ def _wait_for_tmp(directory: Path, proc: subprocess.Popen, timeout: float = 300)
      (signal.SIGHUP, 129, "terminated (SIGHUP)")],
 )
 def test_a_signal_removes_the_temporary_file_and_ends_in_one_line(tmp_path, sig, status, word):
-    src = _slow_input(tmp_path / "in.csv")
     out = tmp_path / "out.csv"
     out.write_text("old\n")
-    proc = _spawn("ik", "--input", str(src), "--output", str(out), "--branch", "all",
-                  "--chunk-rows", "500")  # fmt: skip
+    proc = _running_batch(out)
     _wait_for_tmp(tmp_path, proc)
     proc.send_signal(sig)
-    _, err = proc.communicate(timeout=120)
-    assert proc.returncode == status, err
+    proc.stdin.close()
+    err = proc.stderr.read()
+    assert proc.wait(timeout=120) == status, err
     assert err.strip().splitlines() == [f"python -m analysis ik: {word}"], err
-    assert sorted(os.listdir(tmp_path)) == ["in.csv", "out.csv"]
+    assert sorted(os.listdir(tmp_path)) == ["out.csv"]
     assert out.read_text() == "old\n"  # the old output stays
 
 
 def test_a_sigkill_leaves_a_file_that_the_next_run_sweeps(tmp_path):
-    src = _slow_input(tmp_path / "in.csv")
     out = tmp_path / "out.csv"
-    proc = _spawn("ik", "--input", str(src), "--output", str(out), "--branch", "all",
-                  "--chunk-rows", "500")  # fmt: skip
+    proc = _running_batch(out)
     (left,) = _wait_for_tmp(tmp_path, proc)
     proc.kill()
-    proc.communicate()
+    proc.stdin.close()
+    proc.wait()
     assert (tmp_path / left).exists()  # nothing can run on SIGKILL
     small = tmp_path / "small.csv"
     small.write_text("x_mm,y_mm,z_mm\n100,100,600\n")
     assert main(["ik", "--input", str(small), "--output", str(out)]) == 0
-    assert sorted(os.listdir(tmp_path)) == ["in.csv", "out.csv", "small.csv"]
+    assert sorted(os.listdir(tmp_path)) == ["out.csv", "small.csv"]
     assert sweep_stale(out) == []
 
 
