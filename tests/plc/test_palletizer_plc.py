@@ -55,7 +55,7 @@ def _cli_program(tmp_path, dialect):
 
 def test_sweep_covers_every_status(targets):
     assert len(targets) >= 1000
-    assert set(targets["kind"]) == {
+    assert set(targets["kind"]) >= {
         "paper",
         "config",
         "box",
