@@ -6,8 +6,9 @@ target and the initial pose of sec. 3 (on the elbow stop), 250 valid configurati
 box, 240 within 1 mm of the elbow stop (the boundary the half-plane rays meet first), 30 within
 1 mm of the base axis (5 on it), 30 within 1 mm of the L1 + L2 sphere, 60 at or near the stop
 (10 exactly on it: 2 at 90 deg, 8 folded at 180 deg, the wrist on the shoulder), 150
-half-pulse, 60 on the wrap cut of theta1, theta2 or theta4 (+-180 deg), 3 NaN/inf, 3 huge. One program load per dialect, one OB1 cycle per target. Every length and the
-3200 pulses/rev are ASSUMED (the paper prints none); the program's header says so.
+half-pulse, 60 on the wrap cut of theta1, theta2 or theta4 (+-180 deg), 3 NaN/inf, 3 huge.
+One program load per dialect, one OB1 cycle per target. Every length and the 3200 pulses/rev
+are ASSUMED (the paper prints none); the program's header says so.
 
 Tolerances. Status, reach flag and "outputs unchanged when refused" must agree exactly. A
 pulse may differ by one only where float32 and the exact value straddle a half pulse, or by
