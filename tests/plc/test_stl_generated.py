@@ -100,5 +100,7 @@ def test_generated_programs_on_the_evaluator(name, tmp_path):
     np.testing.assert_array_equal(ours.status, other.status[rows])
     differ = ours.pulses != other.pulses[rows]
     real = ours.reals[:, : differ.shape[1]][differ]
-    assert 0 < differ.sum() <= 30 and (real - np.floor(real) == 0.5).all()
+    # (every third target: the rows may hold no exact tie; the full sweep's ties are
+    # counted in test_st_engine.py and test_plc_awlsim.py)
+    assert differ.sum() <= 30 and (real - np.floor(real) == 0.5).all()
     assert (np.abs(ours.pulses - other.pulses[rows])[differ] == 1).all()
