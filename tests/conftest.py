@@ -4,11 +4,6 @@ import gc
 import os
 import sys
 
-# The grammar that jsonschema's optional "iri" format checker builds at import (0.8-1.4 s of CPU
-# per pytest process), blocked as tests/nbval_kernel.py explains; here for the sessions that do
-# not load that plugin (make test-fast, which also leaves nbval out: -p no:nbval).
-sys.modules.setdefault("rfc3987_syntax", None)  # type: ignore[arg-type]
-
 os.environ.setdefault("MPLBACKEND", "Agg")
 
 import numpy as np
@@ -16,6 +11,11 @@ import pytest
 from hypothesis import HealthCheck, settings
 
 from kernel_forkserver import GC_THRESHOLD, SYMPY_SEED
+
+# The grammar that jsonschema's optional "iri" format checker builds at import (0.8-1.4 s of CPU
+# per pytest process), blocked as tests/nbval_kernel.py explains; here for the sessions that do
+# not load that plugin (make test-fast, which also leaves nbval out: -p no:nbval).
+sys.modules.setdefault("rfc3987_syntax", None)  # type: ignore[arg-type]
 
 # The tests allocate millions of short-lived SymPy objects; at Python's default first threshold
 # (700 allocations) the cyclic collector runs thousands of times a test run. Collected 140 times
