@@ -171,13 +171,6 @@ class PlcFloat32Ops(Float32Ops):
             return self.acos_via_atan2(np.asarray(c, np.float32))
         return super().acos(c)
 
-    def abs(self, x):
-        """|x| as a REAL. ``numpy.abs`` of a parameter (a Python float: the palletizer's
-        inner radius ``|L1 - L2|``) is a float64 scalar, which would carry every expression
-        it enters into double precision; the program holds it in a REAL. (Found by the
-        sweep's exact stops: the model was one ulp off awlsim on 2 of 1,078 targets.)"""
-        return np.abs(np.asarray(x, dtype=np.float32))
-
 
 def atan2_f32(
     y: npt.ArrayLike, x: npt.ArrayLike, degree: int = ATAN_DEGREE
