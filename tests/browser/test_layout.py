@@ -224,3 +224,33 @@ def test_pages_load_nothing_the_site_does_not_ship(context, site_url, site_dir, 
         page.close()
     assert hidden is not None, "no page with maths"
     assert not missing, missing[:5]
+
+
+def test_printed_against_derived_is_typeset_with_the_differing_terms_boxed(page, site_url):
+    """Notebook 02's comparison tables: maths, not SymPy text, and in each wrong row the boxed
+    parts (MathJax's MathML: mathbackground) are the terms the register says differ."""
+    from analysis.audit import register
+
+    page.goto(site_url + "notebooks/02_inverse_kinematics.html", wait_until="load")
+    page.wait_for_function("() => window.MathJax?.startup?.promise", timeout=20_000)
+    page.evaluate("() => MathJax.startup.promise")
+    rows = page.evaluate(
+        """() => Object.fromEntries([...document.querySelectorAll('.mathjax_process tbody tr')]
+            .map(tr => [tr.querySelector('th').innerText.trim(),
+                        [...tr.querySelectorAll('td')].slice(1, 3).map(td => ({
+                            typeset: td.querySelectorAll('mjx-container').length,
+                            boxed: [...td.querySelectorAll('mjx-assistive-mml [mathbackground]')]
+                                   .map(e => e.textContent.replace(/\\u2061/g, ''))}))]))"""
+    )
+    t = register.compare("grabber", "T3", "eq12", "eq13", "eq14")
+    wrong = set(t.index[t["verdict"] == "wrong"])
+    assert wrong <= set(rows), sorted(wrong - set(rows))[:3]  # (eq. 12 shows its wrong rows)
+    for rid, verdict in t["verdict"][t.index.isin(list(rows))].items():
+        printed, derived = rows[rid]
+        assert printed["typeset"] == derived["typeset"] == 1, rid
+        assert bool(printed["boxed"] or derived["boxed"]) == (verdict == "wrong"), rid
+    # what is boxed, exactly: eq. 2's a_x, 0 against sin(theta1); eq. 13's last term, L2 / L3
+    assert rows["grabber-eq2-ax/ax"][0]["boxed"] == ["0"]
+    assert rows["grabber-eq2-ax/ax"][1]["boxed"] == ["sin(θ1)"]
+    assert rows["grabber-eq13-index/eq13"][0]["boxed"] == ["L2"]
+    assert rows["grabber-eq13-index/eq13"][1]["boxed"] == ["L3"]

@@ -18,10 +18,11 @@ from __future__ import annotations
 
 import re
 
+import pandas as pd
 import sympy as sp
 from sympy.printing.latex import LatexPrinter
 
-__all__ = ["MARK", "differing_parts", "marked_latex", "typeset_comparison"]
+__all__ = ["MARK", "TypesetTable", "differing_parts", "marked_latex", "typeset_comparison"]
 
 MARK = r"\colorbox{#ffd6d6}{$\displaystyle %s$}"
 """How a differing sub-expression is typeset: a light red box (MathJax's color extension,
@@ -164,8 +165,9 @@ def typeset_comparison(table, columns: tuple[str, str] = ("printed", "derived"))
     """``table`` (a DataFrame with the SymPy text of the printed and the derived form, as
     :func:`analysis.audit.register.compare` gives) with both columns as inline maths
     ``\\(...\\)``, the differing parts boxed; a row whose text is not one SymPy expression (a
-    matrix, a word) keeps its text."""
-    out = table.copy()
+    matrix, a word) keeps its text. Its HTML (:class:`TypesetTable`) asks MathJax to typeset
+    it: the report site's notebook pages otherwise leave outputs alone."""
+    out = TypesetTable(table.copy())
     a, b = columns
     for idx, row in table.iterrows():
         try:
@@ -174,3 +176,18 @@ def typeset_comparison(table, columns: tuple[str, str] = ("printed", "derived"))
             continue
         out.at[idx, a], out.at[idx, b] = rf"\({p}\)", rf"\({d}\)"
     return out
+
+
+class TypesetTable(pd.DataFrame):
+    """A DataFrame whose HTML is marked for MathJax (``class="mathjax_process"``): MyST-NB marks
+    a notebook's page ``mathjax_ignore`` and MathJax then typesets only what is so marked.
+    JupyterLab typesets HTML outputs anyway. Its plain-text form is the DataFrame's."""
+
+    @property
+    def _constructor(self):
+        return TypesetTable
+
+    def _repr_html_(self) -> str | None:
+        with pd.option_context("display.max_colwidth", None):  # LaTeX cut short breaks
+            html = super()._repr_html_()
+        return None if html is None else f'<div class="mathjax_process">{html}</div>'
