@@ -384,6 +384,40 @@ def preview_png(path: Path, colours: int = 256) -> tuple[int, int]:
     return before, buf.tell()
 
 
+CJK_FONT = "cjk-subset.woff"
+"""The site's CJK glyphs (:func:`analysis.app.webfont.subset_cjk`), in ``_static``; the
+``@font-face`` that serves it is in ``docs/site/_static/report.css``."""
+
+
+def _write_cjk_font(src: Path, static: Path) -> str:
+    """The CJK font subset for the site's text (every page's source under ``src``: the
+    generated pages, the notebooks, the figure captions) written to ``static``; returns the
+    characters it holds ('' and nothing written if the text has none)."""
+    from analysis.app.webfont import cjk_characters, subset_cjk
+
+    text = "".join(
+        f.read_text(encoding="utf-8", errors="replace")
+        for f in sorted(src.rglob("*"))
+        if f.suffix in (".md", ".ipynb", ".json") and "downloads" not in f.relative_to(src).parts
+    )
+    chars = cjk_characters(text)
+    if chars:
+        static.mkdir(parents=True, exist_ok=True)
+        (static / CJK_FONT).write_bytes(subset_cjk(chars))
+    return chars
+
+
+def _check_cjk_covered(site: Path, chars: str) -> None:
+    """``RuntimeError`` naming the page if a page shows a CJK character the subset lacks."""
+    from analysis.app.webfont import cjk_characters
+
+    for page in sorted([*site.glob("*.html"), *site.glob("notebooks/*.html")]):
+        extra = set(cjk_characters(page.read_text(encoding="utf-8"))) - set(chars)
+        if extra:
+            raise RuntimeError(f"{page.relative_to(site)} shows {''.join(sorted(extra))!r}, "
+                               f"which {CJK_FONT} lacks")
+
+
 def _git_commit() -> str | None:
     try:
         run = subprocess.run(
@@ -687,6 +721,7 @@ def build_report(
             {"root_doc": "print",  # the site's pages are not in the printed form's contents
              "suppress_warnings": ["mystnb.unknown_mime_type", "toc.not_included"]},
         )
+        _write_cjk_font(src, work / "print" / "_static")
         say("printing report.pdf with headless Chromium ...")
         if print_pdf(work / "print", src / "downloads" / "report.pdf", page="print"):
             items.append(
@@ -707,6 +742,10 @@ def build_report(
         {"exclude_patterns": ["downloads/**", "figures/**", "**.ipynb_checkpoints", "print.md"]},
     )
     removed = _prune_static(out / "_static", out)
+    cjk = _write_cjk_font(src, out / "_static")
+    _check_cjk_covered(out, cjk)
+    say(f"{CJK_FONT}: {len(cjk)} CJK characters, "
+        f"{(out / '_static' / CJK_FONT).stat().st_size / 1e3:.0f} kB" if cjk else "no CJK text")
     say("left out of _static (no page loads them): "
         + ", ".join(f"{k} {v / 1e6:.2f} MB" for k, v in removed.items()))
     (out / _MARKER).write_text(
