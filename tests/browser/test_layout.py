@@ -254,3 +254,45 @@ def test_printed_against_derived_is_typeset_with_the_differing_terms_boxed(page,
     assert rows["grabber-eq2-ax/ax"][1]["boxed"] == ["sin(θ1)"]
     assert rows["grabber-eq13-index/eq13"][0]["boxed"] == ["L2"]
     assert rows["grabber-eq13-index/eq13"][1]["boxed"] == ["L3"]
+
+
+def test_cjk_text_is_drawn_from_the_sites_own_font(context, site_url, site_dir, pages):
+    """Pages: every CJK character shown is in the site's subset of Noto Sans SC, which the
+    browser loads (this machine may have no CJK font at all). SVG figures with CJK text carry
+    their glyphs: each such SVG's embedded font loads and covers its characters."""
+    from analysis.app.webfont import SUBSET_FAMILY, cjk_characters
+
+    page = context.new_page()
+    checked = []
+    try:
+        for p in pages:
+            chars = cjk_characters((site_dir / p).read_text(encoding="utf-8"))
+            if not chars:
+                continue
+            page.goto(site_url + p, wait_until="load")
+            page.evaluate("() => document.fonts.ready")
+            ok = page.evaluate(
+                """([family, chars]) => document.fonts.load(`16px "${family}"`, chars)
+                    .then(faces => faces.length > 0 && document.fonts.check(`16px "${family}"`,
+                                                                             chars))""",
+                [SUBSET_FAMILY, chars],
+            )
+            assert ok, f"{p}: {SUBSET_FAMILY} does not load or lacks some of {chars[:20]!r}"
+            checked.append(p)
+        svgs = [s for s in sorted((site_dir / "_downloads").rglob("[0-9][0-9]-*.svg"))
+                if cjk_characters(s.read_text(encoding="utf-8"))]  # fmt: skip
+        for svg in svgs:
+            text = svg.read_text(encoding="utf-8")
+            family = re.search(r'@font-face \{ font-family: "([^"]+)"', text)
+            assert family, f"{svg.name}: CJK text without its glyphs"
+            page.set_content(f"<html><body>{text[text.index('<svg'):]}</body></html>")
+            ok = page.evaluate(
+                """([family, chars]) => document.fonts.load(`16px "${family}"`, chars)
+                    .then(faces => faces.length > 0)""",
+                [family[1], cjk_characters(text)],
+            )
+            assert ok, f"{svg.name}: its embedded font does not load"
+    finally:
+        page.close()
+    assert checked, "no page with CJK text (the citations print the papers' Chinese titles)"
+    assert svgs, "no SVG figure with CJK text (03-table4-fk-error prints 无解)"

@@ -58,7 +58,7 @@ def subset_cjk(text: str) -> bytes:
     chars = cjk_characters(text)
     if not chars:
         raise ValueError("the text has no CJK character: no font subset to make")
-    font = TTFont(str(cjk_font_path()))
+    font = TTFont(str(cjk_font_path()), recalcTimestamp=False)  # the same bytes every run
     missing = [c for c in chars if ord(c) not in font.getBestCmap()]
     if missing:
         raise ValueError(f"{cjk_font_path().name} has no glyph for {''.join(missing)!r}")
