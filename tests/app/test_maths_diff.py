@@ -53,7 +53,9 @@ def test_a_different_function_is_boxed_whole():
 
 
 def test_typeset_comparison_keeps_what_is_not_an_expression():
-    t = pd.DataFrame({"printed": ["0", "结合工程实际, 取式(16)"], "derived": ["sin(theta1)", "取式(6)"]})
+    t = pd.DataFrame(
+        {"printed": ["0", "结合工程实际, 取式(16)"], "derived": ["sin(theta1)", "取式(6)"]}
+    )
     out = typeset_comparison(t)
     assert out.printed[0].startswith(r"\(") and out.printed[0].endswith(r"\)")
     assert out.printed[1] == t.printed[1] and out.derived[1] == t.derived[1]

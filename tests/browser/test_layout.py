@@ -285,7 +285,7 @@ def test_cjk_text_is_drawn_from_the_sites_own_font(context, site_url, site_dir, 
             text = svg.read_text(encoding="utf-8")
             family = re.search(r'@font-face \{ font-family: "([^"]+)"', text)
             assert family, f"{svg.name}: CJK text without its glyphs"
-            page.set_content(f"<html><body>{text[text.index('<svg'):]}</body></html>")
+            page.set_content(f"<html><body>{text[text.index('<svg') :]}</body></html>")
             ok = page.evaluate(
                 """([family, chars]) => document.fonts.load(`16px "${family}"`, chars)
                     .then(faces => faces.length > 0)""",

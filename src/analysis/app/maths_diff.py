@@ -124,7 +124,7 @@ class _MarkingPrinter(LatexPrinter):
                 tex += " + "
             term_tex = self._print(term)
             if self._needs_add_brackets(term):
-                term_tex = r"\left(%s\right)" % term_tex
+                term_tex = rf"\left({term_tex}\right)"
             tex += self._mark % term_tex if boxed else term_tex
         return tex
 
@@ -133,9 +133,11 @@ def marked_latex(printed, derived, *, mark: str = MARK) -> tuple[str, str]:
     """LaTeX of ``printed`` and of ``derived`` (SymPy expressions or their text), each with
     its parts that differ from the other boxed (``mark % tex``).
 
-    >>> p, d = marked_latex("Px*sin(theta1) + Py*cos(theta1) = 0", "Px*sin(theta1) - Py*cos(theta1) = 0")
+    >>> p, d = marked_latex("Px + Py = 0", "Px - Py = 0")  # eq. 5's sign, shortened
     >>> print(p)
-    P_{x} \\sin{\\left(\\theta_{1} \\right)} + \\colorbox{#ffd6d6}{$\\displaystyle P_{y} \\cos{\\left(\\theta_{1} \\right)}$} = 0
+    P_{x} + \\colorbox{#ffd6d6}{$\\displaystyle P_{y}$} = 0
+    >>> print(d)
+    P_{x} - \\colorbox{#ffd6d6}{$\\displaystyle P_{y}$} = 0
     """
     sides_p, sides_d = _sides(printed), _sides(derived)
     if len(sides_p) != len(sides_d):
