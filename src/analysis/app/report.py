@@ -362,9 +362,9 @@ def _prune_static(static: Path, site: Path) -> dict[str, int]:
 
 def preview_png(path: Path, colours: int = 256) -> tuple[int, int]:
     """Rewrite the figure ``path`` (a PNG saved by :func:`analysis.app.plotting.save_figure`)
-    as the site's raster preview: the same pixels reduced to a palette of ``colours`` (fast
-    octree, no dithering; a plot has few colours, a colour map at most 256 distinct levels
-    on screen), optimised. The SVG stays the exact, vector download. Returns the sizes
+    as the site's raster preview: the same pixels reduced to a palette of ``colours`` (median
+    cut, or fast octree where the image has transparency; no dithering: a plot has few
+    colours, a colour map at most 256 distinct levels on screen), optimised. The SVG stays the exact, vector download. Returns the sizes
     before and after [bytes]; a file that would not shrink is left as it was."""
     from PIL import Image
 
@@ -375,7 +375,13 @@ def preview_png(path: Path, colours: int = 256) -> tuple[int, int]:
         im.load()
         info = {k: v for k, v in im.info.items() if k == "dpi"}
         rgba = im.convert("RGBA")
-    q = rgba.quantize(colours, method=Image.Quantize.FASTOCTREE, dither=Image.Dither.NONE)
+    if rgba.getextrema()[3][0] == 255:  # opaque (matplotlib's white face): median cut keeps
+        # a colour bar's gradient smooth (fast octree bands it into ~30 steps)
+        q = rgba.convert("RGB").quantize(
+            colours, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE
+        )
+    else:  # median cut has no alpha
+        q = rgba.quantize(colours, method=Image.Quantize.FASTOCTREE, dither=Image.Dither.NONE)
     buf = io.BytesIO()
     q.save(buf, "PNG", optimize=True, **info)
     if buf.tell() >= before:
