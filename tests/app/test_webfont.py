@@ -9,7 +9,14 @@ import re
 import pytest
 from fontTools.ttLib import TTFont
 
-from analysis.app.webfont import SUBSET_FAMILY, cjk_characters, embed_in_svg, subset_cjk
+from analysis.app.webfont import (
+    LATIN_FAMILY,
+    SUBSET_FAMILY,
+    cjk_characters,
+    embed_fonts,
+    subset_cjk,
+    svg_text,
+)
 
 
 def test_the_subset_holds_exactly_the_cjk_characters_of_the_text():
@@ -45,17 +52,21 @@ def test_an_svg_carries_the_glyphs_of_its_cjk_text(tmp_path):
         save_figure(fig2, "99-latin", tmp_path)
     plt.close("all")
     svg = (tmp_path / "99-cjk.svg").read_text(encoding="utf-8")
-    face = re.search(r'@font-face \{ font-family: "([^"]+)"; src: url\(data:font/woff;base64,'
-                     r"([A-Za-z0-9+/=]+)\)", svg)  # fmt: skip
-    assert face and face[1] == CJK_FAMILY
+    faces = dict(re.findall(r'@font-face \{ font-family: "([^"]+)"; src: url\(data:font/woff;'
+                            r"base64,([A-Za-z0-9+/=]+)\)", svg))  # fmt: skip
+    assert set(faces) == {CJK_FAMILY, LATIN_FAMILY}
     assert f"'{CJK_FAMILY}'" in svg and "<text" in svg  # the text stays text, naming the family
-    font = TTFont(io.BytesIO(base64.b64decode(face[2])))
-    assert {ord("无"), ord("解")} <= set(font.getBestCmap())
-    assert "@font-face" not in (tmp_path / "99-latin.svg").read_text(encoding="utf-8")
+    cjk = set(TTFont(io.BytesIO(base64.b64decode(faces[CJK_FAMILY]))).getBestCmap())
+    latin = set(TTFont(io.BytesIO(base64.b64decode(faces[LATIN_FAMILY]))).getBestCmap())
+    assert {ord("无"), ord("解")} <= cjk and ord("r") not in cjk
+    # every other character of the figure's text from DejaVu Sans
+    assert {ord(c) for c in svg_text(svg) if not c.isspace() and c not in "无解"} <= latin
+    other = (tmp_path / "99-latin.svg").read_text(encoding="utf-8")
+    assert f'font-family: "{LATIN_FAMILY}"' in other and f'"{CJK_FAMILY}"' not in other
     # the same figure saved twice is the same file (no date, a deterministic subset)
     assert (tmp_path / "99-cjk-again.svg").read_text(encoding="utf-8") == svg
 
 
-def test_embed_in_svg_refuses_what_is_not_an_svg():
+def test_embed_fonts_refuses_what_is_not_an_svg():
     with pytest.raises(ValueError, match="no <svg> element"):
-        embed_in_svg("<html>无解</html>", "Noto Sans SC")
+        embed_fonts("<html>无解</html>", "Noto Sans SC")

@@ -259,8 +259,10 @@ def test_printed_against_derived_is_typeset_with_the_differing_terms_boxed(page,
 def test_cjk_text_is_drawn_from_the_sites_own_font(context, site_url, site_dir, pages):
     """Pages: every CJK character shown is in the site's subset of Noto Sans SC, which the
     browser loads (this machine may have no CJK font at all). SVG figures with CJK text carry
-    their glyphs: each such SVG's embedded font loads and covers its characters."""
-    from analysis.app.webfont import SUBSET_FAMILY, cjk_characters
+    their glyphs: each such SVG's embedded font loads and covers its characters; every SVG
+    carries the DejaVu Sans glyphs of its other text."""
+    from analysis.app.webfont import LATIN_FAMILY, SUBSET_FAMILY, cjk_characters
+    from analysis.fonts import CJK_FAMILY
 
     page = context.new_page()
     checked = []
@@ -279,20 +281,25 @@ def test_cjk_text_is_drawn_from_the_sites_own_font(context, site_url, site_dir, 
             )
             assert ok, f"{p}: {SUBSET_FAMILY} does not load or lacks some of {chars[:20]!r}"
             checked.append(p)
-        svgs = [s for s in sorted((site_dir / "_downloads").rglob("[0-9][0-9]-*.svg"))
-                if cjk_characters(s.read_text(encoding="utf-8"))]  # fmt: skip
+        svgs = sorted((site_dir / "_downloads").rglob("[0-9][0-9]-*.svg"))
+        with_cjk = []
         for svg in svgs:
             text = svg.read_text(encoding="utf-8")
-            family = re.search(r'@font-face \{ font-family: "([^"]+)"', text)
-            assert family, f"{svg.name}: CJK text without its glyphs"
+            families = set(re.findall(r'@font-face \{ font-family: "([^"]+)"', text))
+            wanted = {LATIN_FAMILY} | ({CJK_FAMILY} if cjk_characters(text) else set())
+            assert families == wanted, f"{svg.name}: embedded {families}, its text needs {wanted}"
+            if CJK_FAMILY not in families:
+                continue
+            with_cjk.append(svg.name)
             page.set_content(f"<html><body>{text[text.index('<svg') :]}</body></html>")
             ok = page.evaluate(
                 """([family, chars]) => document.fonts.load(`16px "${family}"`, chars)
-                    .then(faces => faces.length > 0)""",
-                [family[1], cjk_characters(text)],
+                    .then(faces => faces.length > 0 && document.fonts.check(`16px "${family}"`,
+                                                                             chars))""",
+                [CJK_FAMILY, cjk_characters(text)],
             )
-            assert ok, f"{svg.name}: its embedded font does not load"
+            assert ok, f"{svg.name}: its embedded CJK font does not load"
     finally:
         page.close()
     assert checked, "no page with CJK text (the citations print the papers' Chinese titles)"
-    assert svgs, "no SVG figure with CJK text (03-table4-fk-error prints 无解)"
+    assert with_cjk, "no SVG figure with CJK text (03-table4-fk-error prints 无解)"

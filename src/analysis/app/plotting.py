@@ -102,8 +102,8 @@ def save_figure(
     names (not absolute paths, so notebook outputs do not depend on the machine).
     SVGs carry no date, so re-running a notebook reproduces them byte for byte; dense artists
     are embedded as pixels in them (:func:`rasterize_dense`), the rest stays vector; text
-    stays text, and the glyphs of CJK text are embedded (a subset of the bundled Noto Sans SC),
-    so that the SVG shows it without a CJK font on the viewer's machine.
+    stays text, with its glyphs embedded (subsets of DejaVu Sans and, for CJK text, of the
+    bundled Noto Sans SC), so that the SVG looks the same without those fonts installed.
 
     ``caption`` (what the figure shows and in which units) is written to a sidecar
     ``<stem>.json`` (``{"stem": ..., "caption": ...}``) beside the images; the report site
@@ -124,7 +124,7 @@ def save_figure(
         name = f"{stem}.{ext}"
         with mpl.rc_context({"svg.hashsalt": "analysis"}):
             fig.savefig(out / name, format=ext, metadata=meta)
-        if ext == "svg":  # text stays text; its CJK glyphs travel with it
+        if ext == "svg":  # text stays text; its glyphs travel with it
             _embed_cjk(out / name)
         names.append(name)
     if caption is not None:
@@ -136,15 +136,15 @@ def save_figure(
 
 
 def _embed_cjk(svg: Path) -> None:
-    """Embed the glyphs of the CJK text of ``svg`` (``svg.fonttype = "none"``: the text is kept
-    as text, so a viewer would draw it with its own fonts, or as empty boxes where it has no
-    CJK font) under the family the text asks for, :data:`analysis.fonts.CJK_FAMILY`
-    (:func:`analysis.app.webfont.embed_in_svg`)."""
-    from analysis.app.webfont import embed_in_svg
+    """Embed the glyphs of the text of ``svg`` (``svg.fonttype = "none"``: the text is kept as
+    text, so a viewer would draw it with its own fonts, or as empty boxes where it has no CJK
+    font): DejaVu Sans and, for CJK text, :data:`analysis.fonts.CJK_FAMILY`
+    (:func:`analysis.app.webfont.embed_fonts`)."""
+    from analysis.app.webfont import embed_fonts
     from analysis.fonts import CJK_FAMILY
 
     text = svg.read_text(encoding="utf-8")
-    embedded = embed_in_svg(text, CJK_FAMILY)
+    embedded = embed_fonts(text, CJK_FAMILY)
     if embedded != text:
         svg.write_text(embedded, encoding="utf-8")
 

@@ -364,8 +364,9 @@ def preview_png(path: Path, colours: int = 256) -> tuple[int, int]:
     """Rewrite the figure ``path`` (a PNG saved by :func:`analysis.app.plotting.save_figure`)
     as the site's raster preview: the same pixels reduced to a palette of ``colours`` (median
     cut, or fast octree where the image has transparency; no dithering: a plot has few
-    colours, a colour map at most 256 distinct levels on screen), optimised. The SVG stays the exact, vector download. Returns the sizes
-    before and after [bytes]; a file that would not shrink is left as it was."""
+    colours, a colour map at most 256 distinct levels on screen), optimised. The SVG stays
+    the exact, vector download. Returns the sizes before and after [bytes]; a file that
+    would not shrink is left as it was."""
     from PIL import Image
 
     if not 2 <= colours <= 256:
