@@ -53,9 +53,27 @@ def test_a_different_function_is_boxed_whole():
 
 
 def test_typeset_comparison_keeps_what_is_not_an_expression():
-    t = pd.DataFrame({"printed": ["0", "结合工程实际, 取式(16)"], "derived": ["sin(theta1)", "取式(6)"]})
+    t = pd.DataFrame(
+        {"printed": ["0", "结合工程实际, 取式(16)"], "derived": ["sin(theta1)", "取式(6)"]}
+    )
     out = typeset_comparison(t)
     assert out.printed[0].startswith(r"\(") and out.printed[0].endswith(r"\)")
     assert out.printed[1] == t.printed[1] and out.derived[1] == t.derived[1]
     with pytest.raises(ValueError, match="not the same number of '=' sides"):
         marked_latex("a = b", "a")
+
+
+def test_the_typeset_table_asks_mathjax_to_typeset_it():
+    t = pd.DataFrame({"verdict": ["wrong", "holds"], "printed": ["0", "1"], "derived": ["x", "1"]})
+    out = typeset_comparison(t)
+    for shown in (out, out.query("verdict != 'holds'")):
+        assert shown._repr_html_().startswith('<div class="mathjax_process">')
+    assert repr(out) == repr(pd.DataFrame(out))  # nbval compares the plain text
+
+
+def test_long_maths_is_never_cut_short():
+    long = " + ".join(f"x{i}*sin(theta{i})" for i in range(30))
+    t = pd.DataFrame({"printed": [long], "derived": [long.replace("x7", "y7")]})
+    with pd.option_context("display.max_colwidth", 50):
+        html = typeset_comparison(t)._repr_html_()
+    assert "..." not in html and html.count(r"\(") == html.count(r"\)") == 2

@@ -248,5 +248,7 @@ def test_preview_png_is_the_same_picture_in_a_palette(tmp_path):
         assert im.mode == "P" and im.size == full.shape[1::-1]
         small = np.asarray(im.convert("RGBA"), dtype=float)
     assert np.abs(small - full).mean() < 2.0  # of 255: the same picture
+    # the gradient keeps its levels (no banding into a few dozen steps)
+    assert len(np.unique(small.reshape(-1, 4), axis=0)) > 150
     with pytest.raises(ValueError, match="colours=300"):
         preview_png(path, colours=300)

@@ -224,3 +224,82 @@ def test_pages_load_nothing_the_site_does_not_ship(context, site_url, site_dir, 
         page.close()
     assert hidden is not None, "no page with maths"
     assert not missing, missing[:5]
+
+
+def test_printed_against_derived_is_typeset_with_the_differing_terms_boxed(page, site_url):
+    """Notebook 02's comparison tables: maths, not SymPy text, and in each wrong row the boxed
+    parts (MathJax's MathML: mathbackground) are the terms the register says differ."""
+    from analysis.audit import register
+
+    page.goto(site_url + "notebooks/02_inverse_kinematics.html", wait_until="load")
+    page.wait_for_function("() => window.MathJax?.startup?.promise", timeout=20_000)
+    page.evaluate("() => MathJax.startup.promise")
+    rows = page.evaluate(
+        """() => Object.fromEntries([...document.querySelectorAll('.mathjax_process tbody tr')]
+            .map(tr => [tr.querySelector('th').innerText.trim(),
+                        [...tr.querySelectorAll('td')].slice(1, 3).map(td => ({
+                            typeset: td.querySelectorAll('mjx-container').length,
+                            boxed: [...td.querySelectorAll('mjx-assistive-mml [mathbackground]')]
+                                   .map(e => e.textContent.replace(/\\u2061/g, ''))}))]))"""
+    )
+    t = register.compare("grabber", "T3", "eq12", "eq13", "eq14")
+    wrong = set(t.index[t["verdict"] == "wrong"])
+    assert wrong <= set(rows), sorted(wrong - set(rows))[:3]  # (eq. 12 shows its wrong rows)
+    for rid, verdict in t["verdict"][t.index.isin(list(rows))].items():
+        printed, derived = rows[rid]
+        assert printed["typeset"] == derived["typeset"] == 1, rid
+        assert bool(printed["boxed"] or derived["boxed"]) == (verdict == "wrong"), rid
+    # what is boxed, exactly: eq. 2's a_x, 0 against sin(theta1); eq. 13's last term, L2 / L3
+    assert rows["grabber-eq2-ax/ax"][0]["boxed"] == ["0"]
+    assert rows["grabber-eq2-ax/ax"][1]["boxed"] == ["sin(θ1)"]
+    assert rows["grabber-eq13-index/eq13"][0]["boxed"] == ["L2"]
+    assert rows["grabber-eq13-index/eq13"][1]["boxed"] == ["L3"]
+
+
+def test_cjk_text_is_drawn_from_the_sites_own_font(context, site_url, site_dir, pages):
+    """Pages: every CJK character shown is in the site's subset of Noto Sans SC, which the
+    browser loads (this machine may have no CJK font at all). SVG figures with CJK text carry
+    their glyphs: each such SVG's embedded font loads and covers its characters; every SVG
+    carries the DejaVu Sans glyphs of its other text."""
+    from analysis.app.webfont import LATIN_FAMILY, SUBSET_FAMILY, cjk_characters
+    from analysis.fonts import CJK_FAMILY
+
+    page = context.new_page()
+    checked = []
+    try:
+        for p in pages:
+            chars = cjk_characters((site_dir / p).read_text(encoding="utf-8"))
+            if not chars:
+                continue
+            page.goto(site_url + p, wait_until="load")
+            page.evaluate("() => document.fonts.ready")
+            ok = page.evaluate(
+                """([family, chars]) => document.fonts.load(`16px "${family}"`, chars)
+                    .then(faces => faces.length > 0 && document.fonts.check(`16px "${family}"`,
+                                                                             chars))""",
+                [SUBSET_FAMILY, chars],
+            )
+            assert ok, f"{p}: {SUBSET_FAMILY} does not load or lacks some of {chars[:20]!r}"
+            checked.append(p)
+        svgs = sorted((site_dir / "_downloads").rglob("[0-9][0-9]-*.svg"))
+        with_cjk = []
+        for svg in svgs:
+            text = svg.read_text(encoding="utf-8")
+            families = set(re.findall(r'@font-face \{ font-family: "([^"]+)"', text))
+            wanted = {LATIN_FAMILY} | ({CJK_FAMILY} if cjk_characters(text) else set())
+            assert families == wanted, f"{svg.name}: embedded {families}, its text needs {wanted}"
+            if CJK_FAMILY not in families:
+                continue
+            with_cjk.append(svg.name)
+            page.set_content(f"<html><body>{text[text.index('<svg') :]}</body></html>")
+            ok = page.evaluate(
+                """([family, chars]) => document.fonts.load(`16px "${family}"`, chars)
+                    .then(faces => faces.length > 0 && document.fonts.check(`16px "${family}"`,
+                                                                             chars))""",
+                [CJK_FAMILY, cjk_characters(text)],
+            )
+            assert ok, f"{svg.name}: its embedded CJK font does not load"
+    finally:
+        page.close()
+    assert checked, "no page with CJK text (the citations print the papers' Chinese titles)"
+    assert with_cjk, "no SVG figure with CJK text (03-table4-fk-error prints 无解)"

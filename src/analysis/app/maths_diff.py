@@ -18,10 +18,11 @@ from __future__ import annotations
 
 import re
 
+import pandas as pd
 import sympy as sp
 from sympy.printing.latex import LatexPrinter
 
-__all__ = ["MARK", "differing_parts", "marked_latex", "typeset_comparison"]
+__all__ = ["MARK", "TypesetTable", "differing_parts", "marked_latex", "typeset_comparison"]
 
 MARK = r"\colorbox{#ffd6d6}{$\displaystyle %s$}"
 """How a differing sub-expression is typeset: a light red box (MathJax's color extension,
@@ -123,7 +124,7 @@ class _MarkingPrinter(LatexPrinter):
                 tex += " + "
             term_tex = self._print(term)
             if self._needs_add_brackets(term):
-                term_tex = r"\left(%s\right)" % term_tex
+                term_tex = rf"\left({term_tex}\right)"
             tex += self._mark % term_tex if boxed else term_tex
         return tex
 
@@ -132,9 +133,11 @@ def marked_latex(printed, derived, *, mark: str = MARK) -> tuple[str, str]:
     """LaTeX of ``printed`` and of ``derived`` (SymPy expressions or their text), each with
     its parts that differ from the other boxed (``mark % tex``).
 
-    >>> p, d = marked_latex("Px*sin(theta1) + Py*cos(theta1) = 0", "Px*sin(theta1) - Py*cos(theta1) = 0")
+    >>> p, d = marked_latex("Px + Py = 0", "Px - Py = 0")  # eq. 5's sign, shortened
     >>> print(p)
-    P_{x} \\sin{\\left(\\theta_{1} \\right)} + \\colorbox{#ffd6d6}{$\\displaystyle P_{y} \\cos{\\left(\\theta_{1} \\right)}$} = 0
+    P_{x} + \\colorbox{#ffd6d6}{$\\displaystyle P_{y}$} = 0
+    >>> print(d)
+    P_{x} - \\colorbox{#ffd6d6}{$\\displaystyle P_{y}$} = 0
     """
     sides_p, sides_d = _sides(printed), _sides(derived)
     if len(sides_p) != len(sides_d):
@@ -164,8 +167,9 @@ def typeset_comparison(table, columns: tuple[str, str] = ("printed", "derived"))
     """``table`` (a DataFrame with the SymPy text of the printed and the derived form, as
     :func:`analysis.audit.register.compare` gives) with both columns as inline maths
     ``\\(...\\)``, the differing parts boxed; a row whose text is not one SymPy expression (a
-    matrix, a word) keeps its text."""
-    out = table.copy()
+    matrix, a word) keeps its text. Its HTML (:class:`TypesetTable`) asks MathJax to typeset
+    it: the report site's notebook pages otherwise leave outputs alone."""
+    out = TypesetTable(table.copy())
     a, b = columns
     for idx, row in table.iterrows():
         try:
@@ -174,3 +178,18 @@ def typeset_comparison(table, columns: tuple[str, str] = ("printed", "derived"))
             continue
         out.at[idx, a], out.at[idx, b] = rf"\({p}\)", rf"\({d}\)"
     return out
+
+
+class TypesetTable(pd.DataFrame):
+    """A DataFrame whose HTML is marked for MathJax (``class="mathjax_process"``): MyST-NB marks
+    a notebook's page ``mathjax_ignore`` and MathJax then typesets only what is so marked.
+    JupyterLab typesets HTML outputs anyway. Its plain-text form is the DataFrame's."""
+
+    @property
+    def _constructor(self):
+        return TypesetTable
+
+    def _repr_html_(self) -> str | None:
+        with pd.option_context("display.max_colwidth", None):  # LaTeX cut short breaks
+            html = super()._repr_html_()
+        return None if html is None else f'<div class="mathjax_process">{html}</div>'

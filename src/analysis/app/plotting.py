@@ -101,7 +101,9 @@ def save_figure(
     ``stem`` starts with the notebook number (``"05-workspace-xz"``). Returns the file
     names (not absolute paths, so notebook outputs do not depend on the machine).
     SVGs carry no date, so re-running a notebook reproduces them byte for byte; dense artists
-    are embedded as pixels in them (:func:`rasterize_dense`), the rest stays vector.
+    are embedded as pixels in them (:func:`rasterize_dense`), the rest stays vector; text
+    stays text, with its glyphs embedded (subsets of DejaVu Sans and, for CJK text, of the
+    bundled Noto Sans SC), so that the SVG looks the same without those fonts installed.
 
     ``caption`` (what the figure shows and in which units) is written to a sidecar
     ``<stem>.json`` (``{"stem": ..., "caption": ...}``) beside the images; the report site
@@ -122,6 +124,8 @@ def save_figure(
         name = f"{stem}.{ext}"
         with mpl.rc_context({"svg.hashsalt": "analysis"}):
             fig.savefig(out / name, format=ext, metadata=meta)
+        if ext == "svg":  # text stays text; its glyphs travel with it
+            _embed_cjk(out / name)
         names.append(name)
     if caption is not None:
         side = {"stem": stem, "caption": " ".join(caption.split())}
@@ -129,6 +133,20 @@ def save_figure(
             json.dumps(side, ensure_ascii=False, indent=1) + "\n", encoding="utf-8"
         )
     return names
+
+
+def _embed_cjk(svg: Path) -> None:
+    """Embed the glyphs of the text of ``svg`` (``svg.fonttype = "none"``: the text is kept as
+    text, so a viewer would draw it with its own fonts, or as empty boxes where it has no CJK
+    font): DejaVu Sans and, for CJK text, :data:`analysis.fonts.CJK_FAMILY`
+    (:func:`analysis.app.webfont.embed_fonts`)."""
+    from analysis.app.webfont import embed_fonts
+    from analysis.fonts import CJK_FAMILY
+
+    text = svg.read_text(encoding="utf-8")
+    embedded = embed_fonts(text, CJK_FAMILY)
+    if embedded != text:
+        svg.write_text(embedded, encoding="utf-8")
 
 
 DENSE = 2000

@@ -362,10 +362,11 @@ def _prune_static(static: Path, site: Path) -> dict[str, int]:
 
 def preview_png(path: Path, colours: int = 256) -> tuple[int, int]:
     """Rewrite the figure ``path`` (a PNG saved by :func:`analysis.app.plotting.save_figure`)
-    as the site's raster preview: the same pixels reduced to a palette of ``colours`` (fast
-    octree, no dithering; a plot has few colours, a colour map at most 256 distinct levels
-    on screen), optimised. The SVG stays the exact, vector download. Returns the sizes
-    before and after [bytes]; a file that would not shrink is left as it was."""
+    as the site's raster preview: the same pixels reduced to a palette of ``colours`` (median
+    cut, or fast octree where the image has transparency; no dithering: a plot has few
+    colours, a colour map at most 256 distinct levels on screen), optimised. The SVG stays
+    the exact, vector download. Returns the sizes before and after [bytes]; a file that
+    would not shrink is left as it was."""
     from PIL import Image
 
     if not 2 <= colours <= 256:
@@ -375,13 +376,53 @@ def preview_png(path: Path, colours: int = 256) -> tuple[int, int]:
         im.load()
         info = {k: v for k, v in im.info.items() if k == "dpi"}
         rgba = im.convert("RGBA")
-    q = rgba.quantize(colours, method=Image.Quantize.FASTOCTREE, dither=Image.Dither.NONE)
+    if rgba.getextrema()[3][0] == 255:  # opaque (matplotlib's white face): median cut keeps
+        # a colour bar's gradient smooth (fast octree bands it into ~30 steps)
+        q = rgba.convert("RGB").quantize(
+            colours, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE
+        )
+    else:  # median cut has no alpha
+        q = rgba.quantize(colours, method=Image.Quantize.FASTOCTREE, dither=Image.Dither.NONE)
     buf = io.BytesIO()
     q.save(buf, "PNG", optimize=True, **info)
     if buf.tell() >= before:
         return before, before
     path.write_bytes(buf.getvalue())
     return before, buf.tell()
+
+
+CJK_FONT = "cjk-subset.woff"
+"""The site's CJK glyphs (:func:`analysis.app.webfont.subset_cjk`), in ``_static``; the
+``@font-face`` that serves it is in ``docs/site/_static/report.css``."""
+
+
+def _write_cjk_font(src: Path, static: Path) -> str:
+    """The CJK font subset for the site's text (every page's source under ``src``: the
+    generated pages, the notebooks, the figure captions) written to ``static``; returns the
+    characters it holds ('' and nothing written if the text has none)."""
+    from analysis.app.webfont import cjk_characters, subset_cjk
+
+    text = "".join(
+        f.read_text(encoding="utf-8", errors="replace")
+        for f in sorted(src.rglob("*"))
+        if f.suffix in (".md", ".ipynb", ".json") and "downloads" not in f.relative_to(src).parts
+    )
+    chars = cjk_characters(text)
+    if chars:
+        static.mkdir(parents=True, exist_ok=True)
+        (static / CJK_FONT).write_bytes(subset_cjk(chars))
+    return chars
+
+
+def _check_cjk_covered(site: Path, chars: str) -> None:
+    """``RuntimeError`` naming the page if a page shows a CJK character the subset lacks."""
+    from analysis.app.webfont import cjk_characters
+
+    for page in sorted([*site.glob("*.html"), *site.glob("notebooks/*.html")]):
+        extra = set(cjk_characters(page.read_text(encoding="utf-8"))) - set(chars)
+        if extra:
+            raise RuntimeError(f"{page.relative_to(site)} shows {''.join(sorted(extra))!r}, "
+                               f"which {CJK_FONT} lacks")
 
 
 def _git_commit() -> str | None:
@@ -687,6 +728,7 @@ def build_report(
             {"root_doc": "print",  # the site's pages are not in the printed form's contents
              "suppress_warnings": ["mystnb.unknown_mime_type", "toc.not_included"]},
         )
+        _write_cjk_font(src, work / "print" / "_static")
         say("printing report.pdf with headless Chromium ...")
         if print_pdf(work / "print", src / "downloads" / "report.pdf", page="print"):
             items.append(
@@ -707,6 +749,10 @@ def build_report(
         {"exclude_patterns": ["downloads/**", "figures/**", "**.ipynb_checkpoints", "print.md"]},
     )
     removed = _prune_static(out / "_static", out)
+    cjk = _write_cjk_font(src, out / "_static")
+    _check_cjk_covered(out, cjk)
+    say(f"{CJK_FONT}: {len(cjk)} CJK characters, "
+        f"{(out / '_static' / CJK_FONT).stat().st_size / 1e3:.0f} kB" if cjk else "no CJK text")
     say("left out of _static (no page loads them): "
         + ", ".join(f"{k} {v / 1e6:.2f} MB" for k, v in removed.items()))
     (out / _MARKER).write_text(
