@@ -157,6 +157,38 @@ def test_front_page_verdicts_citations_and_highlights(page, site_url, shots):
     page.screenshot(path=shots / "front-page-top.png")
 
 
+def test_notebook_tables_highlight_the_wrong_cells(page, site_url):
+    """The notebooks' printed-against-recomputed tables (analysis.app.tables.marked) highlight
+    exactly the cells the audit finds wrong: Table 4's printed angles (the cells whose check
+    fails in analysis.audit.table4.summary), and a visible colour on each."""
+    from analysis.audit import table4
+
+    s = table4.summary()
+    want = sorted(
+        (r, j) for j in (1, 2, 3) for r in s.loc[~s[f"cell{j}_ok"].astype(bool), "row"].astype(int)
+    )
+    page.goto(site_url + "notebooks/03_table4.html", wait_until="load")
+    table = page.locator("table[id^='T_table4-cells']")
+    assert table.count() == 1
+    got = table.evaluate(
+        """t => [...t.querySelectorAll('td.wrong-cell')].map(td => [
+            Number(td.parentElement.querySelector('th').innerText),
+            td.cellIndex])"""
+    )
+    cols = table.evaluate(
+        "t => [...t.querySelectorAll('thead tr:first-child th')].map(h => h.innerText)"
+    )
+    assert sorted((r, int(cols[c][-1])) for r, c in got) == want, (got, cols)
+    assert all(cols[c].startswith("printed_theta") for _, c in got)
+    colour = table.locator("td.wrong-cell").first.evaluate(
+        "e => getComputedStyle(e).backgroundColor"
+    )
+    assert colour not in ("rgba(0, 0, 0, 0)", "transparent")
+    page.goto(site_url + "notebooks/10_gr1_arm.html", wait_until="load")
+    # C236-C239 (gr1-presets: degrees, not pulses), in the printed and matches columns
+    assert page.locator("table[id^='T_table2-3-presets'] td.wrong-cell").count() == 8
+
+
 def test_code_is_hidden_behind_a_toggle(page, site_url):
     page.goto(site_url + "notebooks/03_table4.html", wait_until="load")
     cells = page.locator(".cell_input")
