@@ -69,7 +69,8 @@ def subset_cjk(text: str) -> bytes:
     chars = cjk_characters(text)
     if not chars:
         raise ValueError("the text has no CJK character: no font subset to make")
-    have = TTFont(str(cjk_font_path()), lazy=True).getBestCmap()
+    with TTFont(str(cjk_font_path()), lazy=True) as font:  # closed: no ResourceWarning
+        have = font.getBestCmap()
     missing = [c for c in chars if ord(c) not in have]
     if missing:
         raise ValueError(f"{cjk_font_path().name} has no glyph for {''.join(missing)!r}")
@@ -86,26 +87,26 @@ def subset_font(path, chars: str, *, name: str | None = None) -> bytes:
     from fontTools import subset
     from fontTools.ttLib import TTFont
 
-    font = TTFont(str(path), recalcTimestamp=False)
-    have = font.getBestCmap()
-    options = subset.Options()
-    options.flavor = "woff"
-    options.layout_features = ["*"]
-    options.name_IDs = [0, 1, 2, 3, 4, 5, 6]
-    options.drop_tables += ["FFTM"]
-    sub = subset.Subsetter(options)
-    sub.populate(unicodes=[ord(c) for c in sorted(set(chars)) if ord(c) in have])
-    sub.subset(font)
-    if name is not None:
-        table = font["name"]
-        for nid, value in ((1, name), (3, name), (4, name), (6, name.replace(" ", "-"))):
-            table.setName(value, nid, 3, 1, 0x409)
-            table.setName(value, nid, 1, 0, 0)
-        table.removeNames(nameID=16)
-        table.removeNames(nameID=17)
-    buf = io.BytesIO()
-    font.flavor = "woff"
-    font.save(buf)
+    with TTFont(str(path), recalcTimestamp=False) as font:  # the file is closed after
+        have = font.getBestCmap()
+        options = subset.Options()
+        options.flavor = "woff"
+        options.layout_features = ["*"]
+        options.name_IDs = [0, 1, 2, 3, 4, 5, 6]
+        options.drop_tables += ["FFTM"]
+        sub = subset.Subsetter(options)
+        sub.populate(unicodes=[ord(c) for c in sorted(set(chars)) if ord(c) in have])
+        sub.subset(font)
+        if name is not None:
+            table = font["name"]
+            for nid, value in ((1, name), (3, name), (4, name), (6, name.replace(" ", "-"))):
+                table.setName(value, nid, 3, 1, 0x409)
+                table.setName(value, nid, 1, 0, 0)
+            table.removeNames(nameID=16)
+            table.removeNames(nameID=17)
+        buf = io.BytesIO()
+        font.flavor = "woff"
+        font.save(buf)
     return buf.getvalue()
 
 
