@@ -332,10 +332,12 @@ def solve_body(
     The tolerance is the true one: the closed form decides its reach (and, without
     ``axis_tol``, its singular sets) with ``tol`` less the round-off of the problem's scale
     (:func:`decision_tol`), so an ok solution reaches its target within ``tol`` on every
-    backend (float64 round-off included). The generated PLC programs call the closed form with
-    their own band instead (:mod:`analysis.plc.model`).
+    backend (float64 round-off included), and with ``precise=True``: the better conditioned
+    formulas a closed form has for float64 (:data:`analysis.kinematics.arms.OPTIONS`). The
+    generated PLC programs call the closed form with their own band and without it
+    (:mod:`analysis.plc.model`).
     """
-    sol = cf.solve(m, p, P, tol=decision_tol(m, cf, p, P, tol), **options)
+    sol = cf.solve(m, p, P, tol=decision_tol(m, cf, p, P, tol), precise=True, **options)
     status = status_of(m, sol.refusals)
     good = m.eq(status, 0.0)
     out = {"outside": sol.outside}
