@@ -340,7 +340,8 @@ def check_edges(arm, p, tol=EDGE_TOL, compiled=True) -> dict:
         err = np.linalg.norm(reached - p[idx, :3], axis=-1)
         solutions += len(err)
         i = int(err.argmax())
-        assert err[i] <= bound, (arm.name, f"{err[i]:.12g} mm", p[idx[i]].tolist(), sol.branches[k[i]])
+        where = (p[idx[i]].tolist(), sol.branches[k[i]])
+        assert err[i] <= bound, (arm.name, f"{err[i]:.12g} mm", where)
         worst = max(worst, float(err[i]))
     return {"targets": len(p), "solutions": solutions, "max_error_mm": worst}
 

@@ -325,9 +325,9 @@ def solve_body(
     front and back wrists lie at different points, so one may be out of reach while the
     other is not): a branch is ok where none of its own conditions holds. A target that
     passes the closed form's refusals but has no ok branch gets the first requested
-    branch's reason (``status:b`` is each branch's own status, :func:`status_of` over the
-    target's refusals, the branch's and its joint limits) (its first true condition, else ``JOINT_LIMITS``), which is what a
-    one-branch PLC program reports.
+    branch's reason (its first true condition, else ``JOINT_LIMITS``), which is what a
+    one-branch PLC program reports. ``status:b`` is each branch's own status
+    (:func:`status_of` over the target's refusals, the branch's and its joint limits).
 
     The tolerance is the true one: the closed form decides its reach (and, without
     ``axis_tol``, its singular sets) with ``tol`` less the round-off of the problem's scale

@@ -202,8 +202,9 @@ class ClosedForm:
         :class:`IKResult` with every branch's refusals (empty where it has none).
 
         ``axis_tol``, ``margin_rad`` and ``precise`` are dropped for a closed form that has
-        no singular set, angular tolerance or better conditioned form to apply them to; ``theta1_on_axis`` for one without a
-        base-axis singularity is an error (it would be silently ignored otherwise).
+        no singular set, angular tolerance or better conditioned form to apply them to;
+        ``theta1_on_axis`` for one without a base-axis singularity is an error (it would be
+        silently ignored otherwise).
         """
         opts = dict(extra)
         unknown = set(opts) - self.options

@@ -307,8 +307,9 @@ class DerivedClosedForm:
         )  # fmt: skip
         return centre, half
 
-    def ik(self, m, p, P, *, tol, axis_tol=None, margin_rad=0.0, theta1_on_axis=None,
-           precise=False):
+    def ik(
+        self, m, p, P, *, tol, axis_tol=None, margin_rad=0.0, theta1_on_axis=None, precise=False
+    ):
         """The closed form of a point arm (3R, 4R-kept): :meth:`solve` (a 5R arm's ``ik`` is
         :meth:`ik_pose`, set in ``__init__``: the contract reads an arm's options off the
         signature of its ``ik``). ``margin_rad`` has no angular tolerance to narrow here."""

@@ -118,10 +118,11 @@ def pk3_cos(m, d2, la2, lb2, la, lb, precise=False):
     ``sin(gamma) = sqrt((1 - c)(1 + c)) >= 0``. The two solutions are the bends ``+gamma``
     and ``-gamma`` (the elbow on either side of the shoulder-wrist line).
 
-    ``precise`` (the float64 backends): ``1 - c`` and ``1 + c`` are computed in factored form, ``(La + Lb - d)(La + Lb + d) / den``
-    and ``(d - |La - Lb|)(d + |La - Lb|) / den``, and ``gamma = atan2(s, c)``, as the
-    palletizer's hand-written beta1 (kinematics/arms/palletizer.py): from ``c`` they keep half
-    the digits where ``c`` nears -1 or 1, and with La = Lb that is the wrist near the
+    ``precise`` (the float64 backends): ``1 - c`` and ``1 + c`` are computed in factored form,
+    ``(La + Lb - d)(La + Lb + d) / den`` and ``(d - |La - Lb|)(d + |La - Lb|) / den``, and
+    ``gamma = atan2(s, c)``, as the palletizer's hand-written beta1
+    (kinematics/arms/palletizer.py): from ``c`` they keep half the digits where ``c`` nears
+    -1 or 1, and with La = Lb that is the wrist near the
     shoulder, where an error in the bend moves the wrist by La times it (a derived palletizer
     missed a target 2.0e-6 mm from its shoulder by 2.0e-6 mm against the 1e-6 mm tolerance;
     tests/hostile/test_hostile.py, class 7). Otherwise ``acos(c)`` and ``sqrt((1 - c)(1 + c))``,
