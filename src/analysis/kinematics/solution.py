@@ -329,14 +329,16 @@ def solve_body(
     one-branch PLC program reports. ``status:b`` is each branch's own status
     (:func:`status_of` over the target's refusals, the branch's and its joint limits).
 
-    The tolerance is the true one: the closed form decides its reach (and, without
-    ``axis_tol``, its singular sets) with ``tol`` less the round-off of the problem's scale
-    (:func:`decision_tol`), so an ok solution reaches its target within ``tol`` on every
+    The tolerance is the true one: the closed form decides its reach with ``tol`` less the
+    round-off of the problem's scale (:func:`decision_tol`; its singular sets with ``tol``
+    itself, or the ``axis_tol`` given), so an ok solution reaches its target within ``tol`` on every
     backend (float64 round-off included), and with ``precise=True``: the better conditioned
     formulas a closed form has for float64 (:data:`analysis.kinematics.arms.OPTIONS`). The
     generated PLC programs call the closed form with their own band and without it
     (:mod:`analysis.plc.model`).
     """
+    # the singular sets keep ``tol`` itself (a target on the base axis with tol = 0 is on it)
+    options = {"axis_tol": tol, **options}
     sol = cf.solve(m, p, P, tol=decision_tol(m, cf, p, P, tol), precise=True, **options)
     status = status_of(m, sol.refusals)
     good = m.eq(status, 0.0)
