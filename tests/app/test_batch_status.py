@@ -89,7 +89,7 @@ def _gr1_back_out_of_reach():
 
 def test_batch_rows_say_each_branch_true_reason(tmp_path):
     """The issue's case in the batch CSV, then every arm's rows against the oracle."""
-    arm, pose = _gr1_back_out_of_reach()
+    _, pose = _gr1_back_out_of_reach()
     for name in ARMS:
         arm = load_arm(name)
         p = _targets(arm, np.random.default_rng(5), 200)
@@ -114,7 +114,7 @@ def test_batch_rows_say_each_branch_true_reason(tmp_path):
 
 
 def test_command_line_missing_branches_say_their_reason():
-    arm, pose = _gr1_back_out_of_reach()
+    _, pose = _gr1_back_out_of_reach()
     user = [*pose[:3], *np.degrees(pose[3:])]
     out, err = io.StringIO(), io.StringIO()
     with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):

@@ -340,7 +340,8 @@ def check_edges(arm, p, tol=EDGE_TOL, compiled=True) -> dict:
         err = np.linalg.norm(reached - p[idx, :3], axis=-1)
         solutions += len(err)
         i = int(err.argmax())
-        assert err[i] <= bound, (arm.name, f"{err[i]:.12g} mm", p[idx[i]].tolist(), sol.branches[k[i]])
+        where = (p[idx[i]].tolist(), sol.branches[k[i]])
+        assert err[i] <= bound, (arm.name, f"{err[i]:.12g} mm", where)
         worst = max(worst, float(err[i]))
     return {"targets": len(p), "solutions": solutions, "max_error_mm": worst}
 
@@ -382,6 +383,32 @@ def test_random_arms_honour_the_tolerance_at_the_edges(family, tmp_path):
         path.write_text(random_arm(rng, family, convention, "user_arm"), encoding="utf-8")
         arm = load_arm(str(path))
         check_edges(arm, edge_targets(arm, rng, np.array(deltas)), compiled=False)
+
+    prop()
+
+
+@pytest.mark.parametrize("arm_name", ["gr1", "derived:gr1"])
+def test_the_wrist_near_the_shoulder_is_placed_within_the_tolerance(arm_name):
+    """The GR-1 (a2 = a3) with its wrist folded to 1e-6 .. 1e-3 mm from the shoulder, solved
+    without joint limits (its theta3 stop keeps the fold out otherwise): theta3 from
+    1 -/+ c3 in factored form (``precise``); from acos(c3) the wrist at 2e-6 mm from the
+    shoulder was placed on it, 2.0e-6 mm off against the 1e-6 mm tolerance."""
+    from analysis.kinematics import rpy
+
+    arm = edge_arm(arm_name)
+    a = arm.params["a2"]
+
+    @examples(20)
+    @given(seed=st.integers(0, 2**32 - 1), d=st.floats(1e-6, 1e-3))
+    def prop(seed, d):
+        q = np.random.default_rng(seed).uniform(-1, 1, (64, 5))
+        q[:, 2] = math.pi - 2 * math.asin(d / (2 * a))
+        p = rpy.pose_from_transform(arm.table.fk(q))
+        for backend in ("numpy", "compiled"):
+            sol = arm.solve(p, limits=False, backend=backend)
+            idx, k = np.nonzero(sol.ok)
+            err = np.linalg.norm(arm.table.fk(sol.theta[idx, k])[:, :3, 3] - p[idx, :3], axis=-1)
+            assert err.max(initial=0.0) <= EDGE_TOL, (backend, d, err.max())
 
     prop()
 

@@ -307,8 +307,7 @@ def test_any_2r_to_6r_description_is_solved_or_refused_in_one_line(n, convention
         runs = {
             "fk": ["fk", *map(str, np.degrees(q[0])), "--arm", str(path), "--json"],
             "ik": ["ik", *map(str, target), "--arm", str(path), "--branch", "all", "--json"],
-            "stl": ["stl", "--dialect", "s7-300", "--arm", str(path), "-o",
-                    str(Path(folder) / "p.awl")],  # fmt: skip
+            "stl": ["stl", "--dialect", "s7-300", "--arm", str(path), "-o", str(path) + ".awl"],
         }
         for what, argv in runs.items():
             code, out, err = _cli(argv)

@@ -21,7 +21,8 @@ Output: the input columns, then ``branch, reachable``, the joint values (``Arm.j
 per target and branch, targets in input order. ``reachable`` is true where the row has a
 solution; ``status`` says why not, branch by branch (ok, out-of-reach, inside-reach, base-axis,
 joint-limits, degenerate, orientation, invalid: :attr:`IKSolutions.branch_status`, so a GR-1
-back branch whose wrist is out of reach says out-of-reach, not joint-limits). Unsolved rows leave angles and pulses empty, never "nan".
+back branch whose wrist is out of reach says out-of-reach, not joint-limits). Unsolved rows
+leave angles and pulses empty, never "nan".
 Angles are written in full (the shortest text that reads back as the same float). A row whose
 numbers are bad (not a number by :mod:`analysis.validate`'s rules, or outside its range) is not
 solved: its status is ``invalid`` and ``reason`` names the line, the column, the value and the

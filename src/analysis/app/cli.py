@@ -386,8 +386,8 @@ def _missing_branches(arm, target, names, sols, args) -> list[dict]:
         status = Status(int(one.branch_status[k]))
         if status == Status.JOINT_LIMITS:
             crossed = []
-            for j, (q, lim, name, unit) in enumerate(
-                zip(free.theta[k], arm.limits, arm.joint_names, arm.joint_units, strict=True)
+            for q, lim, name, unit in zip(
+                free.theta[k], arm.limits, arm.joint_names, arm.joint_units, strict=True
             ):
                 if lim is not None and not (lim[0] <= q <= lim[1]):
                     if unit == "rad":
@@ -533,9 +533,7 @@ def _cmd_errata(args: argparse.Namespace) -> int:
 
 # --- arms ----------------------------------------------------------------------------------------
 def _cmd_arms(args: argparse.Namespace) -> int:
-    from analysis.kinematics.catalog import list_arms
-
-    from analysis.kinematics.catalog import describe_arm
+    from analysis.kinematics.catalog import describe_arm, list_arms
 
     docs = [describe_arm(a) for a in args.arm] if args.arm else list_arms()
     if args.json:

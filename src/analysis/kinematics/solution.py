@@ -325,17 +325,21 @@ def solve_body(
     front and back wrists lie at different points, so one may be out of reach while the
     other is not): a branch is ok where none of its own conditions holds. A target that
     passes the closed form's refusals but has no ok branch gets the first requested
-    branch's reason (``status:b`` is each branch's own status, :func:`status_of` over the
-    target's refusals, the branch's and its joint limits) (its first true condition, else ``JOINT_LIMITS``), which is what a
-    one-branch PLC program reports.
+    branch's reason (its first true condition, else ``JOINT_LIMITS``), which is what a
+    one-branch PLC program reports. ``status:b`` is each branch's own status
+    (:func:`status_of` over the target's refusals, the branch's and its joint limits).
 
-    The tolerance is the true one: the closed form decides its reach (and, without
-    ``axis_tol``, its singular sets) with ``tol`` less the round-off of the problem's scale
-    (:func:`decision_tol`), so an ok solution reaches its target within ``tol`` on every
-    backend (float64 round-off included). The generated PLC programs call the closed form with
-    their own band instead (:mod:`analysis.plc.model`).
+    The tolerance is the true one: the closed form decides its reach with ``tol`` less the
+    round-off of the problem's scale (:func:`decision_tol`; its singular sets with ``tol``
+    itself, or the ``axis_tol`` given), so an ok solution reaches its target within ``tol`` on every
+    backend (float64 round-off included), and with ``precise=True``: the better conditioned
+    formulas a closed form has for float64 (:data:`analysis.kinematics.arms.OPTIONS`). The
+    generated PLC programs call the closed form with their own band and without it
+    (:mod:`analysis.plc.model`).
     """
-    sol = cf.solve(m, p, P, tol=decision_tol(m, cf, p, P, tol), **options)
+    # the singular sets keep ``tol`` itself (a target on the base axis with tol = 0 is on it)
+    options = {"axis_tol": tol, **options}
+    sol = cf.solve(m, p, P, tol=decision_tol(m, cf, p, P, tol), precise=True, **options)
     status = status_of(m, sol.refusals)
     good = m.eq(status, 0.0)
     out = {"outside": sol.outside}

@@ -4,13 +4,14 @@
 description file (a user's own arm included):
 
 - **D-H arms** (standard or modified, ``data/arms/*.toml``): one link per D-H frame, one
-  joint per revolute or prismatic row, its origin the row's constant part (standard: the previous row's
-  ``Tz(d) Tx(a) Rx(alpha)`` then ``Rz(theta_offset)``; modified: ``Rx(alpha) Tx(a) Tz(d)
-  Rz(theta_offset)``), its axis z; fixed rows and the tool become a fixed joint to a
-  ``tool`` link whose frame is the chain's last frame. A prismatic row is a ``prismatic``
-  joint along the same z axis (its value adds to ``d``), its stroke the limits. Each link
-  frame is the D-H frame of the description, so a user sees the table's frames in RViz, and a joint value is the
-  description's joint variable (``theta_i = q_i + theta_offset_i``).
+  joint per revolute or prismatic row, its origin the row's constant part (standard: the
+  previous row's ``Tz(d) Tx(a) Rx(alpha)`` then ``Rz(theta_offset)``; modified:
+  ``Rx(alpha) Tx(a) Tz(d) Rz(theta_offset)``), its axis z; fixed rows and the tool become a
+  fixed joint to a ``tool`` link whose frame is the chain's last frame. A prismatic row is a
+  ``prismatic`` joint along the same z axis (its value adds to ``d``), its stroke the limits.
+  Each link frame is the D-H frame of the description, so a user sees the table's frames in
+  RViz, and a joint value is the description's joint variable (``theta_i = q_i +
+  theta_offset_i``).
 - **the picker** (seed 002, a closed chain: :mod:`analysis.kinematics.picker`): its open-chain
   equivalent from the screws at the reference pose. URDF describes trees, so the loop is cut
   at the wrist base: the main chain (waist, vertical slider, the passive joints theta3-5, the
@@ -175,7 +176,8 @@ def dh_joints(desc) -> tuple[list[str], list[UrdfJoint]]:
         spec = next(specs)
         child = f"link{len(joints) + 1}_{_slug(raw.get('link', ''), spec.name)}"
         links.append(child)
-        where = f"joint {spec.name} (D-H row {i + 1}{', ' + raw['link'] if raw.get('link') else ''})"
+        link = f", {raw['link']}" if raw.get("link") else ""
+        where = f"joint {spec.name} (D-H row {i + 1}{link})"
         status = f" [{spec.limits_status}]" if spec.limits_status else ""
         if row.kind == "prismatic":
             limited = True
@@ -185,8 +187,11 @@ def dh_joints(desc) -> tuple[list[str], list[UrdfJoint]]:
                 f"{spec.lower:g} .. {spec.upper:g} mm{status}",
                 f"{spec.name}: {spec.pulses_per_rev} pulses per revolution [{spec.pulses_status}]"
                 + (f", lead {spec.lead_mm:g} mm per revolution" if spec.lead_mm else "")
-                + (f"; theta = {math.degrees(row.theta_offset):g} deg (fixed)"
-                   if row.theta_offset else ""),  # fmt: skip
+                + (
+                    f"; theta = {math.degrees(row.theta_offset):g} deg (fixed)"
+                    if row.theta_offset
+                    else ""
+                ),
             ]
         else:
             limited = not spec.unlimited

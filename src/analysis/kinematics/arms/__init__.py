@@ -90,9 +90,13 @@ __all__ = [
 MAX_INPUTS = 6
 """Most values a target may have: a pose (a point and three angles)."""
 INPUT_UNIT_NAMES = ("mm", "rad")
-OPTIONS = ("axis_tol", "margin_rad", "theta1_on_axis")
+OPTIONS = ("axis_tol", "margin_rad", "theta1_on_axis", "precise")
 """The shared keyword options of ``ik`` (module docstring); a closed form may add its own
-(the GR-1's ``orientation_tol``)."""
+(the GR-1's ``orientation_tol``). ``precise=True`` asks for the float64 backends' formulas
+where a closed form has a better conditioned one than its PLC program's (the GR-1's and the
+derived arms' elbow from 1 -/+ cos in factored form): the solver body
+(:func:`analysis.kinematics.solution.solve_body`) passes it; the PLC programs and their
+float32 model keep the form that is bit-exact on awlsim."""
 _SHARED_STATUSES = (Status.OK, Status.JOINT_LIMITS, Status.INVALID)
 
 _REQUIRED = {
@@ -191,14 +195,16 @@ class ClosedForm:
         axis_tol=None,
         margin_rad: float = 0.0,
         theta1_on_axis=None,
+        precise: bool = False,
         **extra,
     ) -> IKResult:
         """Run ``ik`` in namespace ``m`` with the options it declares; return an
         :class:`IKResult` with every branch's refusals (empty where it has none).
 
-        ``axis_tol`` and ``margin_rad`` are dropped for a closed form that has no singular
-        set or angular tolerance to apply them to; ``theta1_on_axis`` for one without a
-        base-axis singularity is an error (it would be silently ignored otherwise).
+        ``axis_tol``, ``margin_rad`` and ``precise`` are dropped for a closed form that has
+        no singular set, angular tolerance or better conditioned form to apply them to;
+        ``theta1_on_axis`` for one without a base-axis singularity is an error (it would be
+        silently ignored otherwise).
         """
         opts = dict(extra)
         unknown = set(opts) - self.options
@@ -215,6 +221,8 @@ class ClosedForm:
             opts["axis_tol"] = axis_tol
         if margin_rad and "margin_rad" in self.options:
             opts["margin_rad"] = margin_rad
+        if precise and "precise" in self.options:
+            opts["precise"] = True
         raw = self.module.ik(m, p, P, tol=tol, **opts)
         return self._result(raw)
 

@@ -141,6 +141,7 @@ def ik(
     margin_rad=0.0,
     theta1_on_axis=None,
     orientation_tol=ORIENTATION_TOL_RAD,
+    precise=False,
 ):
     """All four branches for the pose ``p = (px, py, pz, alpha, beta, gamma)``.
 
@@ -162,6 +163,9 @@ def ik(
     orientation_tol : float or None
         Largest accepted out-of-plane angle of the approach vector [rad]; None projects
         every orientation onto the nearest reachable one without refusing.
+    precise : bool
+        theta3 from 1 -/+ c3 in factored form (the float64 backends; the solver body passes
+        it); False: acos(c3), the PLC programs' form.
 
     Returns
     -------
@@ -248,9 +252,20 @@ def ik(
             (Status.INSIDE_REACH, m.gt(within, tol)),
             (Status.DEGENERATE, m.le(d, axis_tol)),
         ]
-        c3 = m.let(f"c3_{side}", m.clip((d2 - (a2 * a2 + a3 * a3)) / (2.0 * a2 * a3), -1.0, 1.0))
-        t3 = m.let(f"acos_c3_{side}", m.acos(c3))  # [0, pi]
-        s3 = m.sqrt((1.0 - c3) * (1.0 + c3))  # sin(acos c3) >= 0
+        den = 2.0 * a2 * a3
+        c3 = m.let(f"c3_{side}", m.clip((d2 - (a2 * a2 + a3 * a3)) / den, -1.0, 1.0))
+        if precise:
+            # sin(theta3) >= 0 from 1 -/+ c3 in factored form, not from c3: with a2 = a3 the
+            # wrist near the shoulder has c3 near -1, where 1 + c3 computed from c3 keeps half
+            # the digits and an error in theta3 moves the wrist by a3 times it (2.0e-6 mm at
+            # 2.0e-6 mm from the shoulder, solved with limits=False)
+            om3 = m.clip((outer - d) * (outer + d) / den, 0.0, 2.0)  # 1 - c3
+            op3 = m.clip((d - inner) * (d + inner) / den, 0.0, 2.0)  # 1 + c3
+            s3 = m.sqrt(om3 * op3)
+            t3 = m.let(f"acos_c3_{side}", m.atan2(s3, c3))  # acos(c3), in [0, pi]
+        else:  # the PLC programs' form (their float32 model is bit-exact on awlsim)
+            t3 = m.let(f"acos_c3_{side}", m.acos(c3))  # [0, pi]
+            s3 = m.sqrt((1.0 - c3) * (1.0 + c3))  # sin(acos c3) >= 0
         m.section(f"{side}: theta2 = atan2(z, r) -/+ atan2(a3 s3, a2 + a3 c3)")
         base = m.let(f"atan2_zr_{side}", m.atan2(z, r))
         elbow = m.let(f"atan2_elbow_{side}", m.atan2(a3 * s3, a2 + a3 * c3))

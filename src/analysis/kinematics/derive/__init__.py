@@ -31,7 +31,11 @@ parallel axes (2 || 3 [|| 4], direction ``u``), so the decomposition is the same
    "gripper kept level", eq. 12 corrected, is ``psi = pi/2``). 5R: PK1 turning the roll axis
    at q = 0 onto where the pose puts it; a roll axis out of the set the arm can reach is
    refused (``orientation``, as seed 004's closed form) or, with ``orientation_tol=None``,
-   projected onto the nearest. The solved point of the plane is then axis 4's point,
+   projected onto the nearest. A roll axis accepted within ``orientation_tol`` (default
+   1e-4 rad) is projected as well, about the solved point: the tool point then misses its
+   target by up to the tool offset times the sine of that angle (8.8e-3 mm measured on a
+   random 5R arm, tests/hostile/test_hostile.py class 7; the GR-1's hand-written form keeps
+   the tool point and turns the hand only). The solved point of the plane is then axis 4's point,
    ``w - R(u, psi)(w_home - q4_home)``.
 3. **the elbow**: PK3, the law of cosines of the two links across the parallel axes
    (lengths ``La``, ``Lb``), ``cos(bend) = (d^2 - La^2 - Lb^2) / (2 La Lb)``, the bend

@@ -307,12 +307,14 @@ class DerivedClosedForm:
         )  # fmt: skip
         return centre, half
 
-    def ik(self, m, p, P, *, tol, axis_tol=None, margin_rad=0.0, theta1_on_axis=None):
+    def ik(
+        self, m, p, P, *, tol, axis_tol=None, margin_rad=0.0, theta1_on_axis=None, precise=False
+    ):
         """The closed form of a point arm (3R, 4R-kept): :meth:`solve` (a 5R arm's ``ik`` is
         :meth:`ik_pose`, set in ``__init__``: the contract reads an arm's options off the
         signature of its ``ik``). ``margin_rad`` has no angular tolerance to narrow here."""
         return self.solve_target(m, p, P, tol=tol, axis_tol=axis_tol,
-                                 theta1_on_axis=theta1_on_axis)  # fmt: skip
+                                 theta1_on_axis=theta1_on_axis, precise=precise)  # fmt: skip
 
     def ik_pose(
         self,
@@ -325,11 +327,12 @@ class DerivedClosedForm:
         margin_rad=0.0,
         theta1_on_axis=None,
         orientation_tol="default",
+        precise=False,
     ):
         """The closed form of a 5R arm (a pose): :meth:`solve`."""
         return self.solve_target(
             m, p, P, tol=tol, axis_tol=axis_tol, margin_rad=margin_rad,
-            theta1_on_axis=theta1_on_axis, orientation_tol=orientation_tol,
+            theta1_on_axis=theta1_on_axis, orientation_tol=orientation_tol, precise=precise,
         )  # fmt: skip
 
     def solve_target(
@@ -343,6 +346,7 @@ class DerivedClosedForm:
         margin_rad=0.0,
         theta1_on_axis=None,
         orientation_tol="default",
+        precise=False,
     ):
         """All four branches for target ``p`` (a point [mm]; a 5R arm: a pose, position [mm]
         and RPY angles [rad] of seed 004's eq. 3.14), in namespace ``m``.
@@ -353,7 +357,8 @@ class DerivedClosedForm:
         {"front"/"back": (forward, height) of the solved point in the arm plane}. ``tol``,
         ``axis_tol``, ``margin_rad`` and ``theta1_on_axis`` as for every closed form
         (:mod:`analysis.kinematics.arms`); ``orientation_tol`` (5R) [rad]: the largest
-        accepted angle of the roll axis out of reach, None to project onto the nearest.
+        accepted angle of the roll axis out of reach, None to project onto the nearest;
+        ``precise``: the bend from 1 -/+ cos in factored form (:func:`.subproblems.pk3_cos`).
         """
         st = self.structure
         axis_tol = tol if axis_tol is None else axis_tol
@@ -504,7 +509,7 @@ class DerivedClosedForm:
             if st.family == "5R":  # the roll axis along the parallel axes: no pitch
                 conds.append((Status.DEGENERATE, m.le(v["r5"], 1e-12)))
             v["conds"] = conds
-            c, gam, sg = sp.pk3_cos(m, d2, g["la2"], g["lb2"], la, lb)
+            c, gam, sg = sp.pk3_cos(m, d2, g["la2"], g["lb2"], la, lb, precise=precise)
             c = m.let(f"cos_bend_{side}", c)
             gam = m.let(f"bend_{side}", gam)
             for elbow in ("up", "down"):

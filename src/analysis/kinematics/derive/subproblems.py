@@ -109,7 +109,7 @@ def pk1(m, w, x, y):
     return m.atan2(dot(w, cross(x, y)), dot(across(w, x), y))
 
 
-def pk3_cos(m, d2, la2, lb2, la, lb):
+def pk3_cos(m, d2, la2, lb2, la, lb, precise=False):
     """PK3 in the plane: the cosine of the bend at the elbow, from the squared distance
     ``d2`` of the wrist from the shoulder and the squared link lengths (law of cosines),
     clipped to [-1, 1] (a target on a reach sphere within the tolerance lies on it).
@@ -118,16 +118,20 @@ def pk3_cos(m, d2, la2, lb2, la, lb):
     ``sin(gamma) = sqrt((1 - c)(1 + c)) >= 0``. The two solutions are the bends ``+gamma``
     and ``-gamma`` (the elbow on either side of the shoulder-wrist line).
 
-    ``1 - c`` and ``1 + c`` are computed in factored form, ``(La + Lb - d)(La + Lb + d) / den``
-    and ``(d - |La - Lb|)(d + |La - Lb|) / den``, and ``gamma = atan2(s, c)``, as the
-    palletizer's hand-written beta1 (kinematics/arms/palletizer.py): from ``c`` they keep half
-    the digits where ``c`` nears -1 or 1, and with La = Lb that is the wrist near the
+    ``precise`` (the float64 backends): ``1 - c`` and ``1 + c`` are computed in factored form,
+    ``(La + Lb - d)(La + Lb + d) / den`` and ``(d - |La - Lb|)(d + |La - Lb|) / den``, and
+    ``gamma = atan2(s, c)``, as the palletizer's hand-written beta1
+    (kinematics/arms/palletizer.py): from ``c`` they keep half the digits where ``c`` nears
+    -1 or 1, and with La = Lb that is the wrist near the
     shoulder, where an error in the bend moves the wrist by La times it (a derived palletizer
     missed a target 2.0e-6 mm from its shoulder by 2.0e-6 mm against the 1e-6 mm tolerance;
-    tests/hostile/test_hostile.py, class 7).
+    tests/hostile/test_hostile.py, class 7). Otherwise ``acos(c)`` and ``sqrt((1 - c)(1 + c))``,
+    the PLC programs' form.
     """
     den = 2.0 * (la * lb)
     c = m.clip((d2 - (la2 + lb2)) / den, -1.0, 1.0)
+    if not precise:
+        return c, m.acos(c), m.sqrt((1.0 - c) * (1.0 + c))
     d = m.sqrt(d2)
     outer, inner = la + lb, m.abs(la - lb)
     om = m.clip((outer - d) * (outer + d) / den, 0.0, 2.0)  # 1 - c
