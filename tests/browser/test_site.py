@@ -224,7 +224,8 @@ def test_downloads_are_present_and_what_they_say(page, context, site_url, site_d
     for dialect in ("s7-200", "s7-300"):
         mmap = json.loads(body[f"ik_{dialect}_map.json"])
         assert mmap["dialect"] == dialect and {"px", "py", "pz"} <= set(mmap["inputs"])
-    assert body["grabber.csv"].startswith(b"id,cause,status,kind,severity,location,printed,reading,corrected")
+    header = b"id,cause,status,kind,severity,location,printed,reading,corrected"
+    assert body["grabber.csv"].startswith(header)
     assert body["grabber_items.csv"].startswith(b"id,location,verdict")
     assert body["table4_audit.csv"].startswith(b"row,")
     assert body["report.pdf"].startswith(b"%PDF")
