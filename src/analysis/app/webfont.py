@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import base64
 import io
+import logging
 import re
 
 __all__ = [
@@ -87,6 +88,9 @@ def subset_font(path, chars: str, *, name: str | None = None) -> bytes:
     from fontTools import subset
     from fontTools.ttLib import TTFont
 
+    # fontTools logs each subsetting step at INFO, which a build that logs at INFO (Sphinx,
+    # make report) would print: only its warnings are kept
+    logging.getLogger("fontTools").setLevel(logging.WARNING)
     with TTFont(str(path), recalcTimestamp=False) as font:  # the file is closed after
         have = font.getBestCmap()
         options = subset.Options()
