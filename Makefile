@@ -87,7 +87,7 @@ test: $(STAMP) st-engine-if-gxx
 	  --doctest-modules tests src --ignore=tests/browser
 	ANALYSIS_SITE_EXECUTE=0 MPLBACKEND=Agg $(PY) -m pytest tests/browser
 
-# The developer loop (about 22 s): the unit tests without those marked slow (the awlsim sweeps,
+# The developer loop (about 27 s): the unit tests without those marked slow (the awlsim sweeps,
 # the subprocess sessions, the site build; tests/conftest.py), stopping at the first failure.
 test-fast: $(STAMP) st-engine-if-gxx
 	MPLBACKEND=Agg $(PY) -m pytest -n 2 --dist worksteal -x -m "not slow" -p no:nbval tests --ignore=tests/browser

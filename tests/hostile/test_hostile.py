@@ -350,6 +350,7 @@ EDGE_STEPS = [0.0, EDGE_TOL, -EDGE_TOL, EDGE_TOL * (1 + 1e-9), EDGE_TOL * (1 - 1
               -1e-12, 1e-3, -1e-3, 5e-7, 2 * EDGE_TOL, EDGE_TOL * (1 - 1e-7)]  # fmt: skip
 
 
+@pytest.mark.slow  # class 7 draws thousands of edge targets per arm: make test, not test-fast
 @pytest.mark.parametrize("arm_name", EDGE_ARMS)
 def test_backends_agree_and_the_tolerance_holds_at_the_edges(arm_name):
     """Class 7 for every seed arm and its derived twin: numpy and compiled agree on every status
@@ -366,6 +367,7 @@ def test_backends_agree_and_the_tolerance_holds_at_the_edges(arm_name):
     prop()
 
 
+@pytest.mark.slow  # class 7 draws thousands of edge targets per arm: make test, not test-fast
 @pytest.mark.parametrize("family", ["3R", "4R-kept", "5R"])
 def test_random_arms_honour_the_tolerance_at_the_edges(family, tmp_path):
     """Class 7 for users' arms (analysis.kinematics.derive.samples, standard and modified
@@ -387,6 +389,7 @@ def test_random_arms_honour_the_tolerance_at_the_edges(family, tmp_path):
     prop()
 
 
+@pytest.mark.slow  # class 7 draws thousands of edge targets per arm: make test, not test-fast
 @pytest.mark.parametrize("arm_name", ["gr1", "derived:gr1"])
 def test_the_wrist_near_the_shoulder_is_placed_within_the_tolerance(arm_name):
     """The GR-1 (a2 = a3) with its wrist folded to 1e-6 .. 1e-3 mm from the shoulder, solved
