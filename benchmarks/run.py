@@ -138,7 +138,8 @@ def main(argv=None) -> int:
     out = compiled.allocate(arm.n_joints, (args.n,), names)
     kern = compiled.ik_kernel("grabber", tuple(arm.params), names, ())
     raw_out = [np.empty(args.n, np.int8), np.empty(args.n)]
-    raw_out += [np.empty(args.n, bool) for _ in names] + [np.empty(args.n) for _ in range(12)]
+    raw_out += [np.empty(args.n, bool) for _ in names] + [np.empty(args.n, np.int8) for _ in names]
+    raw_out += [np.empty(args.n) for _ in range(12)]  # the kernel's outputs, in its order
     scal = [*arm.params.values(), 1e-6]
     ceil_ik = compiled.build(
         lambda m, v: {
