@@ -287,9 +287,6 @@ class Float32Ops(NumpyOps):
     def __init__(self, rounding: str = "half-away") -> None:
         super().__init__(rounding)
 
-    def sqrt(self, x):
-        return np.sqrt(np.asarray(x, dtype=np.float32))
-
     def select(self, cond, a, b):
         return np.where(cond, np.float32(a) if np.isscalar(a) else a, b).astype(np.float32)
 
