@@ -50,8 +50,19 @@
   // The explorer redraws on every change, so its scene (a) keeps its camera controller when
   // it is already in turntable mode and (b) keeps the camera where the mouse has it while a
   // drag is in progress (plotly saves it into the layout at mouseup, as before).
+  /** plotly's 3D scene object of the plot `gd` (undefined before the first draw). */
+  function glScene(gd) {
+    return gd._fullLayout && gd._fullLayout.scene && gd._fullLayout.scene._scene;
+  }
+
+  /** A mouse button is down on the scene's camera: the user is dragging the view. */
+  function dragging(scene) {
+    const mouse = scene.camera && scene.camera.mouseListener;
+    return Boolean(mouse && mouse.buttons);
+  }
+
   function keepCamera(gd) {
-    const scene = gd._fullLayout && gd._fullLayout.scene && gd._fullLayout.scene._scene;
+    const scene = glScene(gd);
     if (!scene || scene.arm3dKeepsCamera) return;
     if (typeof scene.updateFx !== "function" || typeof scene.setViewport !== "function") return;
     const {updateFx, setViewport} = scene;
@@ -63,8 +74,7 @@
       return updateFx.call(this, dragmode, hovermode);
     };
     scene.setViewport = function (sceneLayout) {
-      const mouse = this.camera && this.camera.mouseListener;
-      if (mouse && mouse.buttons && this.camera.mode === "turntable") {
+      if (dragging(this) && this.camera.mode === "turntable") {
         this.glplot.setAspectratio(sceneLayout.aspectratio); // a drag: the camera is the mouse's
         return undefined;
       }
@@ -79,10 +89,8 @@
   // the saved camera moved the view back, by up to 0.06 in the explorer's browser test).
   // During a drag nothing: the camera is the mouse's (keepCamera).
   function liveCamera(gd) {
-    const scene = gd._fullLayout && gd._fullLayout.scene && gd._fullLayout.scene._scene;
-    if (!scene || typeof scene.getCamera !== "function") return {};
-    const mouse = scene.camera && scene.camera.mouseListener;
-    if (mouse && mouse.buttons) return {};
+    const scene = glScene(gd);
+    if (!scene || typeof scene.getCamera !== "function" || dragging(scene)) return {};
     return {"scene.camera": scene.getCamera()};
   }
 
