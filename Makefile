@@ -113,9 +113,12 @@ $(BENCH_STAMP): $(STAMP) requirements-bench.lock
 
 # benchmarks/report_build.py: make report as a whole process, cold (empty cache), warm (nothing
 # changed) and with one notebook changed, into a scratch folder (build/bench-report.json).
+# benchmarks/explorer_redraw.py: the explorer's change -> pose on screen in Chromium, the view's
+# in-place redraw against Plotly.update in the same browser (build/bench-explorer.json).
 bench: $(BENCH_STAMP) $(ST_ENGINE)
 	$(PY) benchmarks/run.py --out build/bench.json
 	$(PY) benchmarks/report_build.py --out build/bench-report.json
+	$(PY) benchmarks/explorer_redraw.py --out build/bench-explorer.json
 
 # JupyterLab on copies of the notebooks in build/lab/ (analysis/app/lab.py): the stored ones are
 # nbval's references, which Lab's autosave would change (the explorer moved, widget state);

@@ -23,7 +23,11 @@ import pytest
 from analysis.app.explore_logic import available_arms, target_from_joints
 from analysis.kinematics.arm import load_arm, paper_arm
 
+from .screen import assert_arm_on_screen
+from .screen import close as _close
+
 PATH = "notebooks/09_explore.html"
+PLOT = ".static-explorer .js-plotly-plot"
 TOL = 1e-9  # rad and mm: float64 round-off of the same operations in the same order is ~1e-13
 
 _DRAWN = """() => {
@@ -55,13 +59,6 @@ def explorer_page(context, site_url, site_dir, blocked):
     page.close()
 
 
-def _close(drawn, expect, atol: float = 2e-3) -> bool:
-    e = np.asarray(expect, dtype=float).reshape(-1, 3)
-    e = e[np.r_[True, np.any(np.abs(np.diff(e, axis=0)) > 1e-9, axis=1)]]
-    d = np.asarray(drawn, dtype=float).reshape(-1, 3)
-    return d.shape == e.shape and bool(np.all(np.abs(d - e) <= atol))
-
-
 def _change(page, label: str, value: float) -> tuple[dict, float]:
     """Type ``value`` into the number box of slider ``label`` (a change event, as a user's
     Enter); return what is drawn next and the ms from the change to it on screen."""
@@ -72,11 +69,11 @@ def _change(page, label: str, value: float) -> tuple[dict, float]:
     page.wait_for_function(
         "() => document.querySelector('.explorer-plot').arm3dDraws.some(d => d.t > window.changeAt)"
     )
-    ms = page.evaluate(
-        "() => document.querySelector('.explorer-plot').arm3dDraws"
-        ".find(d => d.t > window.changeAt).t - window.changeAt"
+    ms, path = page.evaluate(
+        "() => { const d = document.querySelector('.explorer-plot').arm3dDraws"
+        ".find(d => d.t > window.changeAt); return [d.t - window.changeAt, d.path]; }"
     )
-    return page.evaluate(_DRAWN), ms
+    return page.evaluate(_DRAWN) | {"path": path}, ms
 
 
 def _pose(arm, target, branch="front-up"):
@@ -138,12 +135,18 @@ def test_the_drawn_arm_follows_every_change(explorer_page, shots):
     page.screenshot(path=shots / "site-explorer.png")
     latencies = []
     target = [100.0, 100.0, 600.0]
+    before = _pose(arm, target)
+    assert_arm_on_screen(page, PLOT, before)
     for label, v in (("x [mm]", 150), ("y [mm]", 50), ("z [mm]", 700), ("x [mm]", 250)):
         target["xyz".index(label[0])] = v
         drawn, ms = _change(page, label, v)
         latencies.append(ms)
-        assert _close(drawn["arm"], _pose(arm, target)), (target, drawn)
+        assert drawn["path"] == "in-place", drawn  # not a whole Plotly.update
+        now = _pose(arm, target)
+        assert _close(drawn["arm"], now), (target, drawn)
         assert _close(drawn["target"], [target])
+        assert_arm_on_screen(page, PLOT, now, previous=before)  # the picture, not only the data
+        before = now
     # another branch
     page.locator(".static-explorer .explorer-branch input[value='back-down']").check()
     page.wait_for_function(
@@ -152,13 +155,16 @@ def test_the_drawn_arm_follows_every_change(explorer_page, shots):
     )
     drawn = page.evaluate(_DRAWN)
     assert _close(drawn["arm"], _pose(arm, target, "back-down")), drawn
+    assert_arm_on_screen(page, PLOT, _pose(arm, target, "back-down"), previous=before)
     page.locator(".static-explorer .explorer-branch input[value='front-up']").check()
     # Table 4 row 8: out of reach, no arm drawn, the target still shown
     _change(page, "x [mm]", 200)
     _change(page, "z [mm]", 600)
     drawn, _ = _change(page, "y [mm]", 500)
+    assert drawn["path"] == "in-place", drawn  # no solution: the arm taken off the scene
     assert drawn["arm"] == [] and _close(drawn["target"], [[200, 500, 600]]), drawn
     assert drawn["message"].startswith("out-of-reach") and "31.849 mm" in drawn["message"]
+    assert_arm_on_screen(page, PLOT, None, previous=_pose(arm, [200, 100, 600]))  # arm gone
     page.screenshot(path=shots / "site-explorer-row8.png")
     # FK mode: the joint sliders drive it
     _change(page, "y [mm]", 100)
@@ -166,8 +172,12 @@ def test_the_drawn_arm_follows_every_change(explorer_page, shots):
     page.locator(".static-explorer .explorer-fk").check()
     drawn, ms = _change(page, "θ1 [°]", 30)
     latencies.append(ms)
+    assert drawn["path"] == "in-place", drawn
     q = np.radians([30.0, 10.21, -155.13])
     assert _close(drawn["arm"], arm.frames(q)), drawn
+    assert_arm_on_screen(
+        page, PLOT, arm.frames(q), previous=arm.frames(np.radians([45.0, 10.21, -155.13]))
+    )
     assert page.js_errors == [] and page.blocked == []
     load = os.getloadavg()
     report = {
@@ -179,5 +189,5 @@ def test_the_drawn_arm_follows_every_change(explorer_page, shots):
     }
     (shots / "site-latency.json").write_text(json.dumps(report, indent=1) + "\n")
     print(f"static explorer: change -> pose on screen {report}")
-    if load[0] < 0.5 * (os.cpu_count() or 1):  # the budget, on an idle machine
-        assert report["max_ms"] <= 50, report
+    # the time is recorded, not asserted (a timed test fails on a loaded machine): make bench
+    # measures it against Plotly.update (benchmarks/explorer_redraw.py)

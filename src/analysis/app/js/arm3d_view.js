@@ -3,7 +3,7 @@
 // (analysis.app.arm3d.Arm3DWidget) and the static report page (analysis.app.site_content).
 // Drawing only: the kinematics is printed from the closed form (analysis.app.explore_js).
 // Every redraw is logged once it is on screen (the next frame painted after plotly returns):
-// element.arm3dDraws and window.arm3dDraws hold {t, source, frames, target, title}, what the
+// element.arm3dDraws and window.arm3dDraws hold {t, source, path, frames, target, title}, what the
 // browser tests read (time from a control's change to the new pose on screen, the drawn
 // joint positions against forward kinematics).
 (function () {
@@ -104,6 +104,68 @@
     return Object.assign({plotGlPixelRatio: ratio}, config || {});
   }
 
+  // A redraw of the arm and target traces alone, in place: the new coordinates go into the
+  // figure's data (gd.data, what any later plotly redraw starts from) and its full data, each
+  // trace's WebGL objects are updated from them (plotly's own LineWithMarkers.update, which
+  // Plotly.update calls too) and the scene is drawn once. Plotly.update recomputes the whole
+  // figure for a data change (calc, supplyDefaults, the scene's axes, ticks and every trace)
+  // before that same draw; in headless Chromium (software WebGL), with the explorer's figure,
+  // measured from the call to the next frame painted: Plotly.update median 72 ms (57-96),
+  // this path 27 ms (20-35), the title's relayout included. Returns false (the caller then
+  // uses Plotly.update) when the scene is not drawn yet, a trace has never been drawn, or the
+  // scene is not plotly's gl3d scene as expected (another plotly.js version).
+  // A trace's WebGL objects (line, markers, ...) as plotly.js 4 names them on its scene trace.
+  const GL_PARTS = ["linePlot", "scatterPlot", "textMarkers", "errorBars", "delaunayMesh"];
+
+  // An empty trace (no solution) cannot be updated in place (plotly's update of a trace with
+  // no points throws): its objects are taken off the scene instead and kept, and put back
+  // with the next pose. `showHidden` puts every one back, before plotly redraws the figure
+  // itself, so that plotly finds the scene as it left it.
+  function hide(scene, obj) {
+    if (obj.arm3dHidden) return;
+    obj.arm3dHidden = GL_PARTS.map((k) => obj[k]).filter(Boolean);
+    for (const o of obj.arm3dHidden) scene.glplot.remove(o);
+  }
+  function show(scene, obj) {
+    for (const o of obj.arm3dHidden || []) scene.glplot.add(o);
+    obj.arm3dHidden = null;
+  }
+  function showHidden(gd) {
+    const scene = glScene(gd);
+    if (!scene || !scene.traces) return;
+    for (const obj of Object.values(scene.traces)) if (obj && obj.arm3dHidden) show(scene, obj);
+  }
+
+  function redrawInPlace(gd, idx, data) {
+    const scene = glScene(gd);
+    if (!scene || !scene.glplot || typeof scene.glplot.redraw !== "function" || !scene.traces) return false;
+    if (typeof scene.glplot.add !== "function" || typeof scene.glplot.remove !== "function") return false;
+    const full = idx.map((i) => (gd._fullData || []).find((t) => t.index === i));
+    const objs = full.map((t) => t && scene.traces[t.uid]);
+    if (objs.some((o) => !o || typeof o.update !== "function") || idx.some((i) => !gd.data[i])) return false;
+    // a trace plotly has never drawn (empty from the start) has no objects yet: plotly draws it
+    if (objs.some((o) => !o.arm3dHidden && !GL_PARTS.some((k) => o[k]))) return false;
+    idx.forEach((i, k) => {
+      for (const c of ["x", "y", "z"]) {
+        gd.data[i][c] = data[c][k];
+        full[k][c] = data[c][k];
+        if (full[k]._input) full[k]._input[c] = data[c][k];
+      }
+      if (!data.x[k].length) {
+        hide(scene, objs[k]);
+      } else {
+        // after a redraw with the trace empty, plotly's full trace is a stub (visible: false,
+        // no styles): the trace's last drawn full data, with the new points, is drawn
+        const from = full[k].visible === false && objs[k].data
+          ? Object.assign({}, objs[k].data, {x: data.x[k], y: data.y[k], z: data.z[k]}) : full[k];
+        show(scene, objs[k]);
+        objs[k].update(from);
+      }
+    });
+    scene.glplot.redraw();
+    return true;
+  }
+
   const POSE_TOL_MM = 1e-6; // the kernel rounds its frames to 1e-6 mm (explore.Explorer._draw)
 
   /** Two poses [frames, target, title] that draw the same: titles equal, every coordinate
@@ -128,6 +190,7 @@
       el.appendChild(this.div);
       el.arm3dDraws = [];
       this.queue = Promise.resolve();
+      this.inPlace = true; // false: every redraw through Plotly.update (benchmarks/explorer_redraw.py)
       this.reset(figure);
     }
 
@@ -138,6 +201,7 @@
       this.target = this.names.indexOf("target");
       this.last = null;
       this.queue = this.queue
+        .then(() => showHidden(this.div))
         .then(() => this.Plotly.react(this.div, fig.data, fig.layout, glConfig(fig.config)))
         .then(() => keepCamera(this.div));
       return this.queue;
@@ -163,16 +227,30 @@
         data.z.push(t.map((p) => p[2]));
         idx.push(this.target);
       }
-      let started, plotted;
+      let started, plotted, path;
       this.queue = this.queue
         .then(() => { started = performance.now(); })
-        .then(() => this.Plotly.update(this.div, data, Object.assign({"title.text": title}, liveCamera(this.div)), idx))
+        .then(() => {
+          let inPlace = false;
+          try {
+            inPlace = this.inPlace && redrawInPlace(this.div, idx, data);
+          } catch (e) { // the figure's data already holds the pose: plotly redraws it all
+            console.warn("arm3d: redraw in place failed, plotly redraws", e);
+          }
+          path = inPlace ? "in-place" : "plotly";
+          if (!inPlace) {
+            showHidden(this.div);
+            return this.Plotly.update(this.div, data, Object.assign({"title.text": title}, liveCamera(this.div)), idx);
+          }
+          const now = this.div._fullLayout.title && this.div._fullLayout.title.text;
+          return now === title ? undefined : this.Plotly.relayout(this.div, {"title.text": title});
+        })
         .then(() => { plotted = performance.now(); })
         .then(onScreen)
         .then(() => {
           // asked: draw() called; started: plotly began (after earlier draws); plotted: it
-          // returned; t: the next frame painted
-          const rec = {t: performance.now(), asked, started, plotted, source, frames, target, title};
+          // returned; t: the next frame painted; path: redrawn in place or by Plotly.update
+          const rec = {t: performance.now(), asked, started, plotted, path, source, frames, target, title};
           this.el.arm3dDraws.push(rec);
           (globalThis.arm3dDraws = globalThis.arm3dDraws || []).push(rec);
           this.el.dispatchEvent(new CustomEvent("arm3d-drawn", {detail: rec, bubbles: true}));
