@@ -23,24 +23,22 @@ Usage: ``python benchmarks/explorer_redraw.py --out build/bench-explorer.json``
 from __future__ import annotations
 
 import argparse
-import functools
-import http.server
 import json
 import os
 import shutil
 import statistics
 import sys
 import tempfile
-import threading
 import time
 from pathlib import Path
 
 PROJECT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(PROJECT / "src"))
 
-from analysis.app.arm3d import JS_DIR, PLOTLY_JS, arm_figure, workspace_box  # noqa: E402
+from analysis.app.arm3d import JS_DIR, PLOTLY_JS  # noqa: E402
 from analysis.app.explore_js import arm_module_js  # noqa: E402
-from analysis.app.report import CHROMIUM, CHROMIUM_FLAGS  # noqa: E402
+from analysis.app.report import CHROMIUM, CHROMIUM_FLAGS, serve  # noqa: E402
+from analysis.app.site_content import explorer_figure  # noqa: E402
 from analysis.kinematics.arm import paper_arm  # noqa: E402
 
 BUDGET_MS = 50.0
@@ -48,8 +46,6 @@ BUDGET_MS = 50.0
 _SWEEP = """async ([inPlace, targets]) => {
     const view = window.VIEW, arm = window.ARM, out = [];
     view.inPlace = inPlace;
-    const painted = () => new Promise(r => requestAnimationFrame(() => {
-        const c = new MessageChannel(); c.port1.onmessage = () => r(); c.port2.postMessage(0); }));
     for (const p of targets) {
         await new Promise(r => setTimeout(r, 40));  // a slider step, not a burst
         const t0 = performance.now();
@@ -63,23 +59,15 @@ _SWEEP = """async ([inPlace, targets]) => {
 
 
 def _page(folder: Path) -> None:
+    """The page: the static explorer's figure of the grabber, its printed kinematics, the view."""
     arm = paper_arm()
-    fig = arm_figure(
-        arm,
-        None,
-        None,
-        box=workspace_box(arm),
-        keep_arm=True,
-        height=480,
-        title=arm.description.title,
-    )
-    spec = json.loads(fig.to_json()) | {"config": {"displaylogo": False, "responsive": True}}
     shutil.copy(PLOTLY_JS, folder / "plotly.min.js")
     shutil.copy(JS_DIR / "arm3d_view.js", folder / "arm3d_view.js")
     (folder / "index.html").write_text(
         "<!doctype html><html><body><div id='plot' style='width:900px'></div>"
         "<script src='plotly.min.js'></script><script src='arm3d_view.js'></script>"
-        f"<script>window.FIG = {json.dumps(spec)}; window.ARM = {arm_module_js(arm)};"
+        f"<script>window.FIG = {json.dumps(explorer_figure(arm))};"
+        f"window.ARM = {arm_module_js(arm)};"
         "window.VIEW = new analysisArm3d.View(document.getElementById('plot'), Plotly, FIG);"
         "</script></body></html>"
     )
@@ -110,35 +98,23 @@ def run(blocks: int = 4, per_block: int = 20) -> dict:
     with tempfile.TemporaryDirectory() as tmp:
         folder = Path(tmp)
         _page(folder)
-
-        class Quiet(http.server.SimpleHTTPRequestHandler):
-            def log_message(self, *args) -> None:
-                pass
-
-        srv = http.server.ThreadingHTTPServer(
-            ("127.0.0.1", 0), functools.partial(Quiet, directory=str(folder))
-        )
-        threading.Thread(target=srv.serve_forever, daemon=True).start()
         results: dict[str, list[dict]] = {"in-place": [], "plotly.update": []}
         load = [os.getloadavg()[0]]
-        try:
-            with sync_playwright() as pw:
-                browser = pw.chromium.launch(executable_path=CHROMIUM, args=list(CHROMIUM_FLAGS))
-                page = browser.new_page(viewport={"width": 1280, "height": 900})
-                errors: list[str] = []
-                page.on("pageerror", lambda e: errors.append(str(e)))
-                page.on("console", lambda m: errors.append(m.text) if "arm3d" in m.text else None)
-                page.goto(f"http://127.0.0.1:{srv.server_port}/index.html")
-                page.wait_for_function("() => window.VIEW && document.querySelector('canvas')")
-                page.evaluate(_SWEEP, [True, _targets(10)])  # warm-up, not counted
-                for b in range(blocks):
-                    for name in ("in-place", "plotly.update")[:: 1 if b % 2 == 0 else -1]:
-                        rows = page.evaluate(_SWEEP, [name == "in-place", _targets(per_block)])
-                        results[name] += rows
-                    load.append(os.getloadavg()[0])
-                browser.close()
-        finally:
-            srv.shutdown()
+        errors: list[str] = []
+        with serve(folder) as url, sync_playwright() as pw:
+            browser = pw.chromium.launch(executable_path=CHROMIUM, args=list(CHROMIUM_FLAGS))
+            page = browser.new_page(viewport={"width": 1280, "height": 900})
+            page.on("pageerror", lambda e: errors.append(str(e)))
+            page.on("console", lambda m: errors.append(m.text) if "arm3d" in m.text else None)
+            page.goto(url + "index.html")
+            page.wait_for_function("() => window.VIEW && document.querySelector('canvas')")
+            page.evaluate(_SWEEP, [True, _targets(10)])  # warm-up, not counted
+            for b in range(blocks):
+                for name in ("in-place", "plotly.update")[:: 1 if b % 2 == 0 else -1]:
+                    rows = page.evaluate(_SWEEP, [name == "in-place", _targets(per_block)])
+                    results[name] += rows
+                load.append(os.getloadavg()[0])
+            browser.close()
     fast, slow = _summary(results["in-place"]), _summary(results["plotly.update"])
     return {
         "what": "grabber explorer: slider change -> new pose on screen (headless Chromium, "

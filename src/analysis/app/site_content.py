@@ -228,16 +228,27 @@ def prepare_notebook(
     return nb, placed
 
 
+def explorer_figure(arm) -> dict:
+    """The page explorer's empty figure of ``arm`` as plotly JSON (arm and target traces kept,
+    to be drawn in place by ``js/arm3d_view.js``; the title keeps its margin)."""
+    from analysis.app.arm3d import arm_figure, workspace_box
+
+    fig = arm_figure(
+        arm, None, None, box=workspace_box(arm), keep_arm=True, height=480,
+        title=arm.description.title,
+    )
+    return json.loads(fig.to_json()) | {"config": {"displaylogo": False, "responsive": True}}
+
+
 def static_explorer_html(name: str, arms: Iterable[str] | None = None) -> str:
     """The explorer for a page without a kernel: a ``div.static-explorer`` that
     ``js/static_explorer.js`` (served from ``_static``) fills with the controls and the 3D
     view, and every arm that loads (:func:`~analysis.app.explore_logic.available_arms`) printed
     as JavaScript (:func:`~analysis.app.explore_js.arm_module_js`), each with its figure
-    (:func:`~analysis.app.arm3d.arm_figure`) and start target
+    (:func:`explorer_figure`) and start target
     (:func:`~analysis.app.explore_logic.default_target`; Table 4 row 1 for the paper's arm)."""
     import numpy as np
 
-    from analysis.app.arm3d import arm_figure, workspace_box
     from analysis.app.explore_js import arm_module_js
     from analysis.app.explore_logic import available_arms, default_target
     from analysis.kinematics.arm import load_arm
@@ -251,11 +262,7 @@ def static_explorer_html(name: str, arms: Iterable[str] | None = None) -> str:
         except (ValueError, TypeError, AttributeError):  # not a D-H chain: no page explorer
             continue
         t = [100.0, 100.0, 600.0] if arm_name == "grabber" else default_target(arm).tolist()
-        box = workspace_box(arm)
-        title = arm.description.title  # the figure keeps the title's margin
-        fig = arm_figure(arm, None, None, box=box, keep_arm=True, height=480, title=title)
-        figures[arm_name] = json.loads(fig.to_json()) | {"config": {"displaylogo": False,
-                                                                   "responsive": True}}
+        figures[arm_name] = explorer_figure(arm)
         start[arm_name] = [float(np.round(v, 9)) for v in t]
     first = "grabber" if "grabber" in figures else next(iter(figures))
     cfg = {"id": hashlib.sha1(name.encode()).hexdigest()[:8], "arm": first,

@@ -104,16 +104,6 @@
     return Object.assign({plotGlPixelRatio: ratio}, config || {});
   }
 
-  // A redraw of the arm and target traces alone, in place: the new coordinates go into the
-  // figure's data (gd.data, what any later plotly redraw starts from) and its full data, each
-  // trace's WebGL objects are updated from them (plotly's own LineWithMarkers.update, which
-  // Plotly.update calls too) and the scene is drawn once. Plotly.update recomputes the whole
-  // figure for a data change (calc, supplyDefaults, the scene's axes, ticks and every trace)
-  // before that same draw; in headless Chromium (software WebGL), with the explorer's figure,
-  // measured from the call to the next frame painted: Plotly.update median 72 ms (57-96),
-  // this path 27 ms (20-35), the title's relayout included. Returns false (the caller then
-  // uses Plotly.update) when the scene is not drawn yet, a trace has never been drawn, or the
-  // scene is not plotly's gl3d scene as expected (another plotly.js version).
   // A trace's WebGL objects (line, markers, ...) as plotly.js 4 names them on its scene trace.
   const GL_PARTS = ["linePlot", "scatterPlot", "textMarkers", "errorBars", "delaunayMesh"];
 
@@ -136,6 +126,16 @@
     for (const obj of Object.values(scene.traces)) if (obj && obj.arm3dHidden) show(scene, obj);
   }
 
+  // A redraw of the arm and target traces alone, in place: the new coordinates go into the
+  // figure's data (gd.data, what any later plotly redraw starts from) and its full data, each
+  // trace's WebGL objects are updated from them (plotly's own LineWithMarkers.update, which
+  // Plotly.update calls too) and the scene is drawn once. Plotly.update recomputes the whole
+  // figure for a data change (calc, supplyDefaults, the scene's axes, ticks and every trace)
+  // before that same draw; in headless Chromium (software WebGL), with the explorer's figure,
+  // measured from the call to the next frame painted: Plotly.update median 72 ms (57-96),
+  // this path 27 ms (20-35), the title's relayout included. Returns false (the caller then
+  // uses Plotly.update) when the scene is not drawn yet, a trace has never been drawn, or the
+  // scene is not plotly's gl3d scene as expected (another plotly.js version).
   function redrawInPlace(gd, idx, data) {
     const scene = glScene(gd);
     if (!scene || !scene.glplot || typeof scene.glplot.redraw !== "function" || !scene.traces) return false;
@@ -148,8 +148,7 @@
     idx.forEach((i, k) => {
       for (const c of ["x", "y", "z"]) {
         gd.data[i][c] = data[c][k];
-        full[k][c] = data[c][k];
-        if (full[k]._input) full[k]._input[c] = data[c][k];
+        full[k][c] = data[c][k]; // (full[k]._input is gd.data[i])
       }
       if (!data.x[k].length) {
         hide(scene, objs[k]);
