@@ -78,7 +78,8 @@ from dataclasses import dataclass
 from analysis.plc.memmap import CPUS, DEFAULT_CPU
 from analysis.plc.peephole import optimize_awl
 from analysis.plc.stl_eval.legacy import PAPER_SYMBOLS
-from analysis.plc.stl_eval.machine import Loaded, _Opnd, load_program
+from analysis.plc.stl_eval.loader import Loaded, load_program
+from analysis.plc.stl_eval.operands import Operand
 from analysis.plc.stl_eval.syntax import StlError
 
 __all__ = [
@@ -303,7 +304,7 @@ class _Emitter:
         return f"M {b[0]}.{b[1]}"
 
     # --- operands --------------------------------------------------------------------
-    def opnd(self, o: _Opnd, width: str | None = None) -> str:
+    def opnd(self, o: Operand, width: str | None = None) -> str:
         """AWL text of an operand read or written as ``width`` (B, W, D)."""
         if o.kind == "const":
             v = o.value
@@ -332,7 +333,7 @@ class _Emitter:
         w = {"B": "B", "W": "W", "I": "W", "D": "D", "L": "D", "R": "D"}[o.width]
         return f"M{w} {n}"
 
-    def bit_src(self, o: _Opnd):
+    def bit_src(self, o: Operand):
         """("always"|"first"|text) of a bit operand read by a contact."""
         if o.area == "SM" and o.off == 0:
             if o.bit == 0:
@@ -364,7 +365,7 @@ class _Emitter:
             self.i("=", self.stack[7])
             self.always_stack = [*self.always_stack[1:], False]
 
-    def load_bit(self, o: _Opnd, negate: bool, combine: str | None) -> None:
+    def load_bit(self, o: Operand, negate: bool, combine: str | None) -> None:
         src = self.bit_src(o)
         first_done = self.bit(self.lay.first_scan_done)
         if src == "always":
@@ -389,7 +390,7 @@ class _Emitter:
         self.i("=", self.tos)
         self.always = False
 
-    def compare(self, kind: str, cmp: str, a: _Opnd, b: _Opnd, combine: str | None) -> None:
+    def compare(self, kind: str, cmp: str, a: Operand, b: Operand, combine: str | None) -> None:
         w = {"B": "B", "W": "W", "D": "D", "R": "D"}[kind]
         self.i("L", self.opnd(a, w))
         self.i("L", self.opnd(b, w))
@@ -586,7 +587,7 @@ class _Emitter:
             first, n = o[0], int(o[1].value)
             for k in range(n):
                 b = first.bit + k
-                bit = _Opnd("bit", first.area, first.off + b // 8, b % 8, text=first.text)
+                bit = Operand("bit", first.area, first.off + b // 8, b % 8, text=first.text)
                 self.i("A", self.tos)
                 self.i("S" if op.startswith("S") else "R", self.opnd(bit))
         elif op == "JMP":
