@@ -20,7 +20,7 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
-from analysis.audit.kinds import Result, kind
+from analysis.audit.kinds.base import Result, kind
 from analysis.audit.kinds.symbolic import equation
 
 __all__ = ["evaluate", "wrap"]

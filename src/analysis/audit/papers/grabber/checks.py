@@ -118,7 +118,7 @@ def _reach():
     return {"reachable": arm.is_reachable(P), "acos_arg": arg}
 
 
-# --- the printed listings, executed (analysis.studies.grabber_listings) ----------------------
+# --- the printed listings, executed (analysis.audit.papers.grabber.listings) ----------------------
 B.domain("listings")(lambda: {k: np.array([v]) for k, v in _gs().census().items()})
 B.domain("hmi_targets")(lambda: _gs().hmi_targets())
 B.domain("table4_rows")(lambda: _gs().table4_rows())
@@ -129,9 +129,9 @@ B.domain("z600_line")(lambda: _z600())
 
 
 def _gs():
-    from analysis.studies import grabber
+    from analysis.audit.papers.grabber import listings
 
-    return grabber
+    return listings
 
 
 def _text(rid: str) -> str:
@@ -177,7 +177,7 @@ for _t in ("table1", "table3"):
 
 @B.fact()
 def table4_fk():
-    from analysis.audit import table4
+    from analysis.audit.papers.grabber import table4
 
     return table4.summary().set_index("row")["fk_error_mm"].to_dict()
 
