@@ -41,6 +41,7 @@ import numpy as np
 
 from analysis.audit.kinds.base import Result, kind
 from analysis.papers import FUNCTIONS
+from analysis.validate import reduce_deg
 
 __all__ = ["assigned", "atn_operands", "instructions", "run_statement", "stl_run"]
 
@@ -260,7 +261,7 @@ def vb6_statement(text: str, spec, ctx) -> Result:
         if ok and math.isnan(want):
             pass
         elif ok and spec.get("angle", True):
-            ok = abs(math.remainder(got_k - want, 360.0)) <= tol
+            ok = abs(reduce_deg(got_k - want)) <= tol
         elif ok:
             ok = abs(got_k - want) <= tol
         if k == 0:

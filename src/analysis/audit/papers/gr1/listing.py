@@ -26,6 +26,7 @@ from analysis.kinematics.arm import Arm
 from analysis.kinematics.rpy import matrix_from_rpy, rpy_from_matrix
 from analysis.papers import gr1_thesis as paper
 from analysis.papers import load
+from analysis.validate import wrap_rad
 
 __all__ = [
     "LISTING_REPAIRS", "PI_LISTING", "PRINCIPAL", "REPAIRS", "approach_theta234", "atan2_statement",
@@ -51,7 +52,7 @@ def truth(q_deg, arm: Arm | None = None) -> dict[str, float]:
     rpy = np.degrees(rpy_from_matrix(T[:3, :3]))
     out = {"px": T[0, 3], "py": T[1, 3], "pz": T[2, 3], "alpha": rpy[0], "beta": rpy[1],
            "gamma": rpy[2], "c3": math.cos(q[2]),
-           "theta234": math.degrees(math.remainder(float(q[1] + q[2] + q[3]), 2 * math.pi))}  # fmt: skip  # noqa: E501
+           "theta234": math.degrees(wrap_rad(float(q[1] + q[2] + q[3])))}  # fmt: skip
     out.update({f"theta{j + 1}": float(q_deg[j]) for j in range(5)})
     for k, col in enumerate("noa"):
         for i, ax in enumerate("xyz"):
@@ -309,7 +310,7 @@ def chain_values(arm: Arm, n: int = 200, seed: int = 2007) -> dict[str, np.ndarr
     T = arm.table.fk(q)
     rpy = rpy_from_matrix(T[:, :3, :3])
     v = {f"theta{j + 1}": q[:, j] for j in range(5)}
-    v["theta234"] = np.remainder(q[:, 1] + q[:, 2] + q[:, 3] + np.pi, 2 * np.pi) - np.pi
+    v["theta234"] = wrap_rad(q[:, 1] + q[:, 2] + q[:, 3])
     v.update(px=T[:, 0, 3], py=T[:, 1, 3], pz=T[:, 2, 3], phi=rpy[:, 0], theta=rpy[:, 1],
              psi=rpy[:, 2], **{k: float(P[k]) for k in ("a2", "a3", "a4")})  # fmt: skip
     v.update({f"{c}_{x}": T[:, i, k] for k, c in enumerate("noa") for i, x in enumerate("xyz")})
