@@ -25,7 +25,13 @@ from analysis.kinematics.arms import closed_form
 from analysis.plc.emit import allocate, emit_s7200, emit_s7300
 from analysis.plc.ir import Program, build_program
 from analysis.plc.memmap import DIALECTS, MemoryMap, default_map
-from analysis.plc.motion import MOTION_STARTUP, motion_networks, motion_uses
+from analysis.plc.motion import (
+    MOTION_STARTUP,
+    machine_document,
+    motion_networks,
+    motion_uses,
+    supports,
+)
 
 __all__ = ["generate", "input_units", "status_codes"]
 
@@ -157,16 +163,18 @@ def generate(
         )
     work = allocate(prog, mmap)
     mmap.check_end(max(work.values(), default=mmap.work_base) + 3, "the work area")
-    with_motion = dialect == "s7-200" and motion and params.arm == "grabber"
+    from analysis.kinematics.arm import Arm
+
+    arm = Arm(params)
+    with_motion = dialect == "s7-200" and motion and supports(arm)
     if dialect == "s7-300":
         text = emit_s7300(prog, mmap, startup_target=start, optimize=optimize)
     else:
-        text = emit_s7200(
-            prog, mmap, startup_target=start, motion=motion_networks(mmap) if with_motion else None
-        )
+        moves = motion_networks(arm, mmap, work) if with_motion else None
+        text = emit_s7200(prog, mmap, startup_target=start, motion=moves)
     uses = {"AC0": "finiteness test of the inputs (exponent bits, no REAL compare)"}
     if with_motion:
-        uses.update(motion_uses())
+        uses.update(motion_uses(arm, mmap, work))
     joints = params.description.joints
     outputs = {
         f"c{j + 1}": {"joint": joints[j].name, "pulses_per_rev": params.pulses_per_rev[j]}
@@ -183,4 +191,6 @@ def generate(
         arm=params.arm,
         branch=prog.branch,
     )
+    if with_motion:
+        doc["machine"] = machine_document(arm, mmap)
     return text, json.dumps(doc, indent=2, ensure_ascii=False) + "\n"
