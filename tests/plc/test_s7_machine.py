@@ -153,8 +153,9 @@ def test_the_old_program_turns_the_waist_a_revolution_for_two_microns():
 
 def _mutant(text: str, how: str) -> str:
     if how == "no short way":
-        return re.sub(r"Network \d+ // joint 1 turns without limit.*?(?=Network)", "", text,
-                      flags=re.S)
+        return re.sub(
+            r"Network \d+ // joint 1 turns without limit.*?(?=Network)", "", text, flags=re.S
+        )
     if how == "stop contact normally open":
         return text.replace("LDN    I0.1", "LD     I0.1").replace("AN     I0.1", "A      I0.1")
     if how == "PTO not re-enabled":
@@ -167,8 +168,10 @@ def _mutant(text: str, how: str) -> str:
                         re.S).group(0)  # fmt: skip
         idle = re.search(r"Network \d+ // the stop circuit open while idle", text).group(0)
         text = text.replace(pls, "").replace(idle, pls + idle)
-        return text.replace("MOVB   1, VB120\r\nS      V122.1, 1",
-                            "MOVB   2, VB120\r\nS      V123.0, 1\r\nS      V122.1, 1")
+        return text.replace(
+            "MOVB   1, VB120\r\nS      V122.1, 1",
+            "MOVB   2, VB120\r\nS      V123.0, 1\r\nS      V122.1, 1",
+        )
     raise AssertionError(how)
 
 

@@ -101,7 +101,8 @@ class PtoChannel:
     _queued: Train | None = None
     _seg: int = 0
     _k: int = 0
-    _next: float = 0.0
+    _next: int = 0
+    """The next rising edge [ns] (integer: cycle times add up exactly)."""
 
     @property
     def busy(self) -> bool:
@@ -146,19 +147,19 @@ class PtoChannel:
                     return "overflow"
                 self._queued = Train(t, segs, unit, control)
                 return "queued"
-        self._begin(Train(t, segs, unit, control), t)
+        self._begin(Train(t, segs, unit, control), round(t * 1e9))
         return "start"
 
-    def _begin(self, train: Train, t: float) -> None:
-        self._run, self._seg, self._k, self._next = train, 0, 0, t
-        train.start = t
+    def _begin(self, train: Train, t_ns: int) -> None:
+        self._run, self._seg, self._k, self._next = train, 0, 0, t_ns
+        train.start = t_ns / 1e9
         self.trains.append(train)
         self.idle, self.segment_no = False, 1
 
     def advance(self, t_end: float) -> int:
         """Emit the pulses whose rising edge falls before ``t_end`` [s] and end the trains
         whose last cycle is over by then. Returns the number of pulses emitted."""
-        n0 = len(self.pulses)
+        n0, t_end = len(self.pulses), round(t_end * 1e9)
         while self._run is not None:
             run = self._run
             if self._seg == len(run.segments):  # every pulse out: done when its cycle ends
@@ -176,17 +177,17 @@ class PtoChannel:
                 self.flags |= DELTA_ERROR
                 self._finish(None)
                 break
-            self.pulses.append(self._next)
+            self.pulses.append(self._next / 1e9)
             self.pulse_train.append(len(self.trains) - 1)
             run.pulses += 1
-            self._next += c * run.unit
+            self._next += c * (1_000_000 if run.unit == 1e-3 else 1_000)
             self._k += 1
             if self._k == n:
                 self._seg, self._k = self._seg + 1, 0
                 self.segment_no = min(self._seg + 1, len(run.segments))
         return len(self.pulses) - n0
 
-    def _finish(self, t: float | None) -> None:
+    def _finish(self, t: int | None) -> None:
         queued, self._run, self._queued = self._queued, None, None
         self.segment_no = 0
         if queued is not None and t is not None:  # the pipeline starts at once [S2M-C p.228]
