@@ -247,7 +247,7 @@ _NOT_TRANSLATED = {
 
 
 def _fmt_real(v: float) -> str:
-    from analysis.plc.emit import fmt_real
+    from analysis.plc.printer import fmt_real
 
     return fmt_real(v)
 
