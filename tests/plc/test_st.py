@@ -1,4 +1,4 @@
-"""ST, SCL and PLCopen XML printers (analysis.plc.st, analysis.plc.st_generate): golden
+"""ST, SCL and PLCopen XML printers (analysis.plc.st, analysis.plc.plcopen): golden
 files, SCL as a dialect of the ST text, PLCopen XML against the TC6 schema model, the CLI."""
 
 from __future__ import annotations

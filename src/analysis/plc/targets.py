@@ -15,6 +15,7 @@ import numpy.typing as npt
 import pandas as pd
 
 from analysis.kinematics.arm import Arm
+from analysis.papers.gr1_thesis import poses
 from analysis.paths import data_dir
 
 __all__ = ["PAPER_TARGETS", "input_columns", "table4_targets"]
@@ -38,9 +39,7 @@ def _table4(arm: Arm) -> npt.NDArray[np.float64]:
 
 
 def _table5_3(arm: Arm) -> npt.NDArray[np.float64]:
-    from analysis.studies.gr1 import thesis_poses  # the thesis's table, as data
-
-    return thesis_poses()
+    return np.array(poses())  # the thesis's Table 5-3, as data
 
 
 def _initial_pose(arm: Arm) -> npt.NDArray[np.float64]:
