@@ -532,7 +532,8 @@ def write_downloads(src: Path) -> list[Download]:
     """Write the PLC programs, memory maps and audit CSVs under ``src/downloads``."""
     import shutil
 
-    from analysis.audit import register, table4
+    from analysis.audit import register
+    from analysis.audit.papers.grabber import table4
     from analysis.kinematics.arm import paper_arm
     from analysis.paths import data_dir
     from analysis.plc.generate import generate
