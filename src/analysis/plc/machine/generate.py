@@ -1,0 +1,132 @@
+"""``stl --dialect st|scl|plcopen-xml``: the IK block and, beside it, the machine program
+(:mod:`.program`), with the machine's part of MAP.json.
+
+The IK block is printed by :func:`analysis.plc.st_generate.generate_st` (it stays available
+on its own: ``stl --no-motion``); the machine program follows it in the same source (ST, SCL)
+or as one more POU, ``pouType="program"``, in the PLCopen XML, whose variables are the
+program's ``localVars`` and whose body is the same ST text.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from xml.sax.saxutils import escape, quoteattr
+
+from analysis.plc.machine.program import STEPS, machine_name, machine_text
+from analysis.plc.machine.spec import MACHINE_INPUTS, MACHINE_OUTPUTS, machine_spec
+
+__all__ = ["generate_machine", "machine_map", "program_pou_xml"]
+
+_XHTML = "http://www.w3.org/1999/xhtml"
+_ELEMENTARY = {"BOOL", "INT", "DINT", "REAL", "LREAL", "TIME"}
+
+
+def machine_map(spec, ik_codes, dialect: str) -> dict:
+    """The machine's part of MAP.json: its program, inputs and outputs with their units,
+    every status code with its meaning and alarm text, each axis with its joint, unit, step,
+    limits and homing (each value's provenance), the unit rule of the motion blocks."""
+    name = machine_name(spec)
+    inputs = {n: {"type": "BOOL"} for n in MACHINE_INPUTS}
+    inputs.update({n: {"type": "REAL", "unit": u}
+                   for n, u in zip(spec.targets, spec.target_units, strict=True)})  # fmt: skip
+    outputs = {n: {"type": "INT" if n == "Status" else "BOOL"} for n in MACHINE_OUTPUTS}
+    outputs["AxisErrorID"] = {"type": "DINT", "meaning": "the first axis error's ID (0: none)"}
+    axes = [
+        {
+            "axis": a.name,
+            "joint": a.joint,
+            "unit": a.unit,
+            "per_pulse": a.per_pulse,
+            "pulses_per_rev": a.pulses_per_rev,
+            "limits": None if a.unlimited else [a.lower, a.upper],
+            "max_velocity": a.max_velocity,
+            "max_acceleration": a.max_acceleration,
+            "max_jerk": a.max_jerk,
+            "home": {"mode": a.home_mode, "position": a.home_position},
+            "provenance": a.provenance,
+        }
+        for a in spec.axes
+    ]
+    return {
+        "program": name,
+        "instance_db": f"{name}_DB" if dialect == "scl" else None,
+        "inputs": inputs,
+        "outputs": outputs,
+        "status_codes": {str(k): v for k, v in spec.status_codes(ik_codes).items()},
+        "steps": STEPS,
+        "axes": axes,
+        "grip_dwell_s": spec.grip_dwell_s,
+        "motion_time_unit": {
+            "variable": "MotionTimeUnit",
+            "plc": 1.0,
+            "rule": "every motion block's Velocity, Acceleration, Jerk is value * "
+            "MotionTimeUnit**k: 1.0 (per second) on a PLC; stl-run writes the cycle time "
+            "(the ST engine's axes take them per cycle)",
+        },
+    }
+
+
+def _declarations(st_text: str, program: str) -> list[tuple[str, str, str | None]]:
+    """(name, type, initial value) of each variable of PROGRAM ``program`` in ``st_text``."""
+    body = st_text.split(f"PROGRAM {program}\n", 1)[1].split("\nEND_VAR", 1)[0]
+    out = []
+    for line in body.split("\n"):
+        m = re.fullmatch(r"\s*(\w+) : (\w+)(?: := ([^;]+))?;", line)
+        if m:
+            out.append((m.group(1), m.group(2), m.group(3)))
+    return out
+
+
+def program_pou_xml(st_text: str, program: str) -> str:
+    """The PLCopen XML POU (``pouType="program"``) of PROGRAM ``program`` in ``st_text``:
+    its variables as ``localVars`` (elementary types as elements, the rest ``derived``),
+    initial values as ``simpleValue``, the statements as the ST body."""
+
+    def var(name, typ, init):
+        t = f"<{typ}/>" if typ in _ELEMENTARY else f"<derived name={quoteattr(typ)}/>"
+        i = f"<initialValue><simpleValue value={quoteattr(init)}/></initialValue>" if init else ""
+        return f"<variable name={quoteattr(name)}><type>{t}</type>{i}</variable>"
+
+    decls = "".join(var(*d) for d in _declarations(st_text, program))
+    body = st_text.split(f"PROGRAM {program}\n", 1)[1].split("\nEND_VAR\n", 1)[1]
+    body = body.rsplit("END_PROGRAM", 1)[0].strip("\n") + "\n"
+    body = "\n".join(ln[4:] if ln.startswith("    ") else ln for ln in body.split("\n"))
+    return (
+        f'<pou name={quoteattr(program)} pouType="program"><interface><localVars>{decls}'
+        f"</localVars></interface><body><ST><xhtml xmlns={quoteattr(_XHTML)}>{escape(body)}"
+        "</xhtml></ST></body></pou>\n"
+    )
+
+
+def _ik_block(text: str, dialect: str) -> str:
+    names = re.findall(r'^FUNCTION_BLOCK "?(\w+)"?$', text, flags=re.M)
+    if not names:
+        raise ValueError("the IK source holds no function block")
+    return names[-1]
+
+
+def generate_machine(dialect: str, branch=None, trig=None, params=None, theta1_on_axis=None):
+    """Program text and MAP.json text: the IK block (:func:`~analysis.plc.st_generate.
+    generate_st`) and the machine program beside it, for ``dialect`` st, scl or
+    plcopen-xml; MAP.json gains a ``machine`` section (:func:`machine_map`)."""
+    from analysis.kinematics.arm import Arm
+    from analysis.kinematics.params import paper_params
+    from analysis.plc.st_generate import generate_st, validate_plcopen
+
+    params = params if params is not None else paper_params()
+    spec = machine_spec(Arm(params))
+    ik_st, _ = generate_st("st", branch, trig, params, theta1_on_axis)
+    ik_text, mjson = generate_st(dialect, branch, trig, params, theta1_on_axis)
+    ik_block = _ik_block(ik_st, "st")
+    doc = json.loads(mjson)
+    ik_codes = [int(k) for k in doc.get("status_codes", {})]
+    if dialect == "plcopen-xml":
+        machine_st = machine_text(spec, ik_block, "st")
+        pou = program_pou_xml(machine_st, machine_name(spec))
+        text = ik_text.replace("</pous>", pou + "</pous>", 1)
+        validate_plcopen(text)
+    else:
+        text = ik_text.rstrip("\n") + "\n" + machine_text(spec, ik_block, dialect)
+    doc["machine"] = machine_map(spec, ik_codes, dialect)
+    return text, json.dumps(doc, indent=2, ensure_ascii=False) + "\n"
