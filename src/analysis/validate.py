@@ -53,21 +53,25 @@ import numpy as np
 import numpy.typing as npt
 
 __all__ = [
+    "LENGTH_UNITS",
     "MAX_ANGLE_RAD",
     "MAX_COORD_MM",
     "MAX_JOINT_DEG",
     "MAX_LENGTH_MM",
     "MAX_PULSES_PER_REV",
+    "MAX_RATE",
     "MAX_TOL_MM",
     "MIN_LENGTH_MM",
     "InvalidValue",
     "angle_rad",
     "check_inputs",
     "coordinate_mm",
+    "length_in_mm",
     "length_mm",
     "number_problem",
     "parse_real",
     "pulses_per_rev",
+    "rate",
     "real",
     "real_array",
     "reduce_deg",
@@ -103,6 +107,17 @@ turns, 62.8 rad), which is wrapped to (-pi, pi] (:func:`wrap_rad`). Orientation 
 radians need no bound: the closed forms use only their sine and cosine, which libm (numpy and
 the compiled kernel alike) reduces exactly for every finite argument. Angles in degrees at the
 command line and in CSV files are reduced exactly first (:func:`reduce_deg`)."""
+
+LENGTH_UNITS = {"mm": 1.0, "cm": 10.0, "m": 1000.0, "in": 25.4}
+"""Units a length may be given in, with their size in millimetres (the inch exactly 25.4 mm);
+every other unit is refused (:func:`length_in_mm`)."""
+MAX_RATE = (1e6, 1e8, 1e10)
+"""Largest joint velocity, acceleration and jerk [deg or mm per s, s^2, s^3]: 1e6 deg/s is
+2,778 turns a second, a hundred times any servo; the bounds keep every motion quantity and
+its products with a PLC cycle far inside a REAL (3.4e38)."""
+_RATE_UNITS = {"deg": ("deg", 1.0), "rad": ("deg", 180.0 / math.pi),
+               **{u: ("mm", f) for u, f in {"mm": 1.0, "cm": 10.0, "m": 1000.0,
+                                             "in": 25.4}.items()}}  # fmt: skip
 
 _NUMBER = re.compile(r"[ \t]*[+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?[ \t]*")
 _SHOW = 40  # characters of a text quoted in a message
@@ -348,6 +363,58 @@ def length_mm(value: object, name: str) -> float:
             value,
         )
     return v
+
+
+def length_in_mm(value: object, unit: object, name: str) -> float:
+    """A length given in ``unit`` (one of :data:`LENGTH_UNITS`: mm, cm, m, in) converted to
+    millimetres and checked by :func:`length_mm`; any other unit is refused, naming it.
+
+    >>> length_in_mm(0.66, "m", "L1")
+    660.0
+    >>> length_in_mm(660, "ft", "L1")
+    Traceback (most recent call last):
+    ...
+    analysis.validate.InvalidValue: L1: unit 'ft' is not a length unit (mm, cm, m, in)
+    """
+    if not isinstance(unit, str) or unit not in LENGTH_UNITS:
+        raise InvalidValue(
+            f"{name}: unit {_show(unit)} is not a length unit ({', '.join(LENGTH_UNITS)})",
+            name,
+            unit,
+        )
+    v = real(value, name, unit)
+    return length_mm(v * LENGTH_UNITS[unit] if unit != "mm" else v, name)
+
+
+def rate(value: object, unit: object, name: str, *, order: int, kind: str) -> float:
+    """A joint's largest velocity (``order`` 1), acceleration (2) or jerk (3), given in
+    ``unit`` ("deg/s", "deg/s2", "deg/s3" or rad/... for a ``kind="revolute"`` joint;
+    "mm/s", "mm/s2", ... or cm, m, in for a prismatic one), returned in the joint's units
+    per second: rad/s^k (revolute) or mm/s^k (prismatic). Positive, finite, at most
+    :data:`MAX_RATE` [deg | mm per s^k].
+
+    >>> round(rate(90, "deg/s", "max_velocity", order=1, kind="revolute"), 6)
+    1.570796
+    >>> rate(0.5, "m/s2", "max_acceleration", order=2, kind="prismatic")
+    500.0
+    """
+    suffix = "/s" if order == 1 else f"/s{order}"
+    base = "deg" if kind == "revolute" else "mm"
+    allowed = [u + suffix for u, (b, _) in _RATE_UNITS.items() if b == base]
+    if not isinstance(unit, str) or unit not in allowed:
+        raise InvalidValue(
+            f"{name}: unit {_show(unit)} is not one of {', '.join(allowed)} "
+            f"(a {kind} joint's {('velocity', 'acceleration', 'jerk')[order - 1]})",
+            name,
+            unit,
+        )
+    _, factor = _RATE_UNITS[unit[: -len(suffix)]]
+    hi = MAX_RATE[order - 1]
+    v = real(value, name, unit) * factor
+    real(v, name, f"{base}{suffix}", lo=0.0, hi=hi, what="the largest rate the code supports")
+    if not v > 0:
+        raise InvalidValue(f"{name} = {v:g} {base}{suffix} must be > 0", name, value)
+    return math.radians(v) if kind == "revolute" else v
 
 
 def coordinate_mm(value: object, name: str) -> float:

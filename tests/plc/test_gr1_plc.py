@@ -17,6 +17,7 @@ import json
 import numpy as np
 import pytest
 
+from analysis.audit.papers.gr1.thesis import gr1_arm, project_orientation, thesis_poses
 from analysis.kinematics.status import Status
 from analysis.plc.generate import generate
 from analysis.plc.memmap import MemoryMap, default_map
@@ -25,7 +26,6 @@ from analysis.plc.runner import AwlRunner, sweep
 from analysis.plc.sweep import SweepSizes, sweep_targets
 from analysis.plc.translate import translate_s7200
 from analysis.plc.verify import compare
-from analysis.studies.gr1 import gr1_arm, project_orientation, thesis_poses
 
 pytestmark = pytest.mark.slow  # seconds per test: run first (tests/conftest.py)
 

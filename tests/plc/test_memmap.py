@@ -9,11 +9,11 @@ import json
 
 import pytest
 
+from analysis.audit.papers.gr1.thesis import gr1_arm
 from analysis.kinematics.arm import load_arm
 from analysis.kinematics.status import Status
 from analysis.plc.generate import generate
 from analysis.plc.memmap import CPUS, SCHEMA, MemoryMap, default_map, map_document
-from analysis.studies.gr1 import gr1_arm
 
 
 def _doc(dialect="s7-200", **kw) -> dict:

@@ -288,7 +288,7 @@ def _nearest_pose_hint(arm, target) -> str:
     """The nearest orientation the arm can take at the target's position, as a command."""
     import numpy as np
 
-    from analysis.studies.gr1 import project_orientation
+    from analysis.audit.papers.gr1.thesis import project_orientation
 
     pose, turned = project_orientation(arm, np.asarray(target, dtype=float))
     words = [f"{v:g}" for v in pose[:3]] + [f"{math.degrees(v):.3f}" for v in pose[3:]]
@@ -497,7 +497,7 @@ def _cmd_errata(args: argparse.Namespace) -> int:
     from analysis.audit import register as reg
 
     papers = [args.paper] if args.paper else None
-    if args.paper and args.paper not in reg.PAPERS:
+    if args.paper and args.paper not in reg.available():
         reg.register(args.paper)  # raises, naming the papers
     progress = _Progress("errata")
     # --check is answered from the cache of the generated files' digests when no input changed

@@ -129,7 +129,7 @@ def _audit_verdict() -> Verdict:
 
 def _table4_verdict() -> Verdict:
     """Table 4 recomputed row by row."""
-    from analysis.audit import table4
+    from analysis.audit.papers.grabber import table4
 
     # --- Table 4 -------------------------------------------------------------------------
     t4 = table4.report_table()

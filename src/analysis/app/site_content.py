@@ -584,7 +584,7 @@ def write_downloads(src: Path) -> list[Download]:
             "data/table4_audit.csv",
             "Audit tables",
             "Table 4 row by row: printed and corrected angles, FK error, verdict and cause",
-            "analysis.audit.table4.report_table()",
+            "analysis.audit.papers.grabber.table4.report_table()",
         )
     )
     return items

@@ -28,6 +28,13 @@ Format (``data/arms/grabber.toml`` is the commented example)::
     # or pulses_per_rev = { value = 3200, status = "assumed" } (provenance as for parameters)
     # a prismatic joint: kind = "prismatic"; limits_mm = [lo, hi] (required);
     #   lead_mm = 5.0 (travel per motor revolution; pulses = mm / lead_mm * pulses_per_rev)
+    # motion limits and homing (optional; None where absent, JointSpec.require names them):
+    max_velocity     = { value = 90.0,   unit = "deg/s",  status = "assumed", source = "..." }
+    max_acceleration = { value = 360.0,  unit = "deg/s2", status = "assumed", source = "..." }
+    max_jerk         = { value = 3600.0, unit = "deg/s3", status = "assumed", source = "..." }
+    #   (rad/s...; a prismatic joint mm/s, mm/s2, mm/s3, or cm, m, in), kept in rad | mm per s^k
+    home = { mode = "switch", position = 0.0, status = "assumed", source = "..." }
+    #   mode "switch" (a reference switch) or "set"; position [deg | mm] within the limits
     [axes]                             # optional: axis directions of a screw model
     vertical_guide = { value = [0, 0, 1], status = "printed", note = "..." }
 
@@ -47,6 +54,7 @@ from __future__ import annotations
 import csv
 import math
 import tomllib
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from functools import cache
 from pathlib import Path
@@ -56,8 +64,11 @@ from analysis.kinematics.dh import DHRow, DHTable
 from analysis.paths import data_dir
 
 __all__ = [
+    "HOME_MODES",
     "JOINT_KINDS",
     "MAX_PULSES_PER_REV",
+    "MOTION_KEYS",
+    "RATE_KEYS",
     "STATUSES",
     "ArmDescription",
     "AxisSpec",
@@ -73,6 +84,25 @@ printed: every figure and table that uses it says so), or measured (on the robot
 user's own arm)."""
 JOINT_KINDS = ("revolute", "prismatic")
 MAX_PULSES_PER_REV = validate.MAX_PULSES_PER_REV
+HOME_MODES = ("switch", "set")
+"""How an axis is homed: "switch" (a reference switch is searched, MC_Home with a switch) or
+"set" (the present position is declared to be the home position)."""
+RATE_KEYS = ("max_velocity", "max_acceleration", "max_jerk")
+MOTION_KEYS = (*RATE_KEYS, "home_mode", "home_position")
+"""The joint values a machine program needs (:meth:`JointSpec.require`)."""
+_RATE_UNIT = {"max_velocity": "/s", "max_acceleration": "/s2", "max_jerk": "/s3"}
+
+
+def _rate_hint(key: str):
+    return lambda j: (f'{key} = {{ value = ..., unit = "{"deg" if j.kind == "revolute" else "mm"}'
+                      f'{_RATE_UNIT[key]}", status = ..., source = ... }}')  # fmt: skip
+
+
+_MOTION_HINT = {
+    **{k: _rate_hint(k) for k in RATE_KEYS},
+    **dict.fromkeys(("home_mode", "home_position"), lambda j: 'home = { mode = "switch" | '
+                    '"set", position = ..., status = ..., source = ... }'),
+}  # fmt: skip
 
 
 @dataclass(frozen=True)
@@ -116,6 +146,40 @@ class JointSpec:
     lead_mm: float | None = None
     """Travel per motor revolution [mm] of a prismatic joint (None for a revolute one)."""
     lead_status: str = ""
+    max_velocity: float | None = None
+    """Largest speed [rad/s | mm/s], or None where the description gives none."""
+    max_acceleration: float | None = None
+    """Largest acceleration [rad/s^2 | mm/s^2], or None."""
+    max_jerk: float | None = None
+    """Largest jerk [rad/s^3 | mm/s^3], or None."""
+    home_mode: str | None = None
+    """How the axis finds its zero: "switch" (a reference switch, searched) or "set" (the
+    present position is set to :attr:`home_position`), or None."""
+    home_position: float | None = None
+    """The joint value at home [rad | mm], or None."""
+    max_velocity_status: str = ""
+    max_acceleration_status: str = ""
+    max_jerk_status: str = ""
+    home_status: str = ""
+    sources: Mapping[str, str] = field(default_factory=dict, compare=False)
+    """Where each motion value comes from (``source`` or ``note`` of its entry), by key."""
+
+    def require(self, key: str) -> float | str:
+        """The motion value ``key`` (one of :data:`MOTION_KEYS`), or ValueError naming the
+        joint and the key when the description gives none (a program that needs it refuses).
+
+        >>> JointSpec("theta1", 4000, -1.0, 1.0).require("max_velocity")
+        Traceback (most recent call last):
+        ...
+        ValueError: joint theta1 has no max_velocity: give max_velocity = { value = ...
+        """
+        if key not in MOTION_KEYS:
+            raise ValueError(f"{key!r} is not a motion value ({', '.join(MOTION_KEYS)})")
+        value = getattr(self, key)
+        if value is None:
+            raise ValueError(f"joint {self.name} has no {key}: give {_MOTION_HINT[key](self)} "
+                             "in its [[joints]] entry")  # fmt: skip
+        return value
 
     @property
     def unit(self) -> str:
@@ -530,4 +594,50 @@ def _joint(j: dict, path: Path, base: Path, tables: dict, index: int) -> JointSp
         kind,
         lead,
         lead_status or "",
+        **_motion(j, where, kind, lo, hi),
     )
+
+
+def _provenance(spec: dict, where: str) -> tuple[str, str]:
+    status = _status(spec, where)
+    return status, _text(spec, "source", where, _text(spec, "note", where, ""))
+
+
+def _motion(j: dict, where: str, kind: str, lo: float, hi: float) -> dict:
+    """The joint's motion limits and homing (``max_velocity``, ``max_acceleration``,
+    ``max_jerk``, ``home``), converted to the joint's units (rad | mm) by
+    :mod:`analysis.validate`; absent keys stay None."""
+    out: dict = {"sources": {}}
+    for order, key in enumerate(RATE_KEYS, start=1):
+        if key not in j:
+            continue
+        spec = j[key]
+        if not isinstance(spec, dict) or "value" not in spec or "unit" not in spec:
+            raise ValueError(f"{where}: {key} must be {{ value = ..., unit = ..., status = ..., "
+                             "source = ... }}")  # fmt: skip
+        out[key] = validate.rate(spec["value"], spec["unit"], f"{where} {key}", order=order,
+                                 kind=kind)  # fmt: skip
+        out[f"{key}_status"], out["sources"][key] = _provenance(spec, f"{where} {key}")
+    if "home" in j:
+        spec = j["home"]
+        if not isinstance(spec, dict) or "mode" not in spec or "position" not in spec:
+            raise ValueError(f"{where}: home must be {{ mode = \"switch\" | \"set\", "
+                             "position = ..., status = ..., source = ... }}")  # fmt: skip
+        mode = spec["mode"]
+        if mode not in HOME_MODES:
+            raise ValueError(f"{where} home: mode {mode!r} is not one of {', '.join(HOME_MODES)}")
+        if kind == "revolute":
+            deg = _row_angle(spec["position"], where, "home position")
+            pos = math.radians(deg)
+        else:
+            pos = validate.length_mm(spec["position"], f"{where} home position")
+        if not lo <= pos <= hi:
+            unit = "deg" if kind == "revolute" else "mm"
+            show = math.degrees if kind == "revolute" else float
+            raise ValueError(
+                f"{where} home: position {show(pos):g} {unit} is outside the joint's limits "
+                f"[{show(lo):g}, {show(hi):g}] {unit}"
+            )
+        out["home_mode"], out["home_position"] = mode, pos
+        out["home_status"], out["sources"]["home"] = _provenance(spec, f"{where} home")
+    return out

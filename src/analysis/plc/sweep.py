@@ -115,9 +115,9 @@ def _table4(arm: Arm) -> npt.NDArray[np.float64]:
 
 
 def _table5_3(arm: Arm) -> npt.NDArray[np.float64]:
-    from analysis.studies.gr1 import thesis_poses  # the thesis's table, as data
+    from analysis.papers.gr1_thesis import poses  # the thesis's Table 5-3, as data
 
-    return thesis_poses()
+    return np.array(poses())
 
 
 def _initial_pose(arm: Arm) -> npt.NDArray[np.float64]:

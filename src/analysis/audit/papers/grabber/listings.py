@@ -1,6 +1,6 @@
 """Seed 000's printed STL listings (Figures 3-6) as data and executed: the operand census, the
 scans an HMI would drive, Table 4's theta1 as the listings give it. The register's domains and
-facts (``data/registers/grabber.toml``, :mod:`analysis.audit.bespoke.grabber`) and notebook 07
+facts (``data/registers/grabber.toml``, :mod:`analysis.audit.papers.grabber.checks`) and notebook 07
 read them; the listings run on :mod:`analysis.plc.stl_eval` (byte-accurate S7-200 REALs)."""
 
 from __future__ import annotations

@@ -33,6 +33,7 @@ from analysis.audit.kinds.symbolic import is_zero
 from analysis.kinematics.arm import Arm
 from analysis.kinematics.dh import DHRow, DHTable, link_transform_sym
 from analysis.papers import palletizer as paper
+from analysis.validate import wrap_rad
 
 S = paper.SYMBOLS
 TH = tuple(S[f"theta{i}"] for i in range(1, 5))
@@ -305,7 +306,7 @@ def level_configurations(
         t1 = rng.uniform(-np.pi, np.pi, k)
         t2 = rng.uniform(-np.pi, np.pi, k)
         t3 = rng.uniform(max(lo, 0.0) + m, min(hi, np.pi) - m, k)
-        t4 = np.mod(np.pi / 2 - t2 - t3 + np.pi, 2 * np.pi) - np.pi
+        t4 = wrap_rad(np.pi / 2 - t2 - t3)
         q = np.stack([t1, t2, t3, t4], axis=-1)
         p = arm.fk(q)
         q = q[p[:, 0] * np.cos(t1) + p[:, 1] * np.sin(t1) > 1.0]
@@ -334,7 +335,7 @@ def fk_ik_pinocchio(arm: Arm, n: int = 10_000, seed: int = 20210401) -> dict:
     ok = sol.ok[:, 0]
     G2 = pin_arm.fk(np.where(ok[:, None], q, 0.0))
     err = np.linalg.norm(G2 - G, axis=-1)
-    dq = np.abs(np.mod(q - q0 + np.pi, 2 * np.pi) - np.pi)
+    dq = np.abs(wrap_rad(q - q0))
     return {
         "n": n,
         "max_err_mm": float(err[ok].max()) if ok.any() else float("nan"),

@@ -1,5 +1,5 @@
-"""Seed 001's studies (analysis.studies.palletizer, formerly analysis.audit.palletizer_checks):
-the symbolic verdicts on eqs. 8 and 11, the printed IK chain item by item, the four-solution
+"""Seed 001's studies (analysis.audit.papers.palletizer.method): the symbolic verdicts on eqs. 8
+and 11, the printed IK chain item by item, the four-solution
 enumeration (the register's checks are tests/audit/test_registers.py).
 
 Numeric tolerance 1e-9 mm: lengths are a few hundred mm (assumed, data/arms/palletizer.toml:
@@ -16,8 +16,8 @@ import sympy as sp
 from hypothesis import given
 from hypothesis import strategies as st
 
+from analysis.audit.papers.palletizer import method as chk
 from analysis.kinematics.arm import Arm, load_arm
-from analysis.studies import palletizer as chk
 from helpers import assert_points_close
 
 ATOL_MM = 1e-9

@@ -74,10 +74,7 @@ def gr1_arm() -> Arm:
 def thesis_poses() -> npt.NDArray[np.float64]:
     """Table 5-3's start and end poses, shape (2, 6): mm and RPY angles [rad] (printed in
     degrees; the angle headers are lost, the listing's order alpha, beta, gamma is read)."""
-    rows = paper.TABLE5_3["rows"]
-    p = np.array([rows["start"], rows["end"]], dtype=float)
-    p[:, 3:] = np.radians(p[:, 3:])
-    return p
+    return np.array(paper.poses())
 
 
 def printed_joints() -> npt.NDArray[np.float64]:

@@ -1,9 +1,10 @@
-"""Table 4 recomputed (analysis.audit.table4), checked against Pinocchio and plain geometry."""
+"""Table 4 recomputed (analysis.audit.papers.grabber.table4), checked against Pinocchio and
+plain geometry."""
 
 import numpy as np
 import pytest
 
-from analysis.audit import table4
+from analysis.audit.papers.grabber import table4
 from analysis.kinematics.params import paper_params
 from analysis.kinematics.pinocchio_model import PinocchioArm
 
@@ -11,17 +12,6 @@ from analysis.kinematics.pinocchio_model import PinocchioArm
 @pytest.fixture(scope="module")
 def summary():
     return table4.summary()
-
-
-def test_decimals_and_cell_matching():
-    assert [table4.decimals(t) for t in ("45", "17.5", "190.20", "-131.71")] == [0, 1, 2, 2]
-    assert table4.cell_matches("17.5", 17.4915)
-    assert not table4.cell_matches("17.49", 17.4849)
-    assert not table4.cell_matches("190.20", 190.2087)
-    assert table4.cell_matches("190.20", 190.2087, "truncate")
-    assert not table4.cell_matches("无解", 1.0)
-    with pytest.raises(ValueError, match="mode"):
-        table4.cell_matches("1", 1.0, "floor")
 
 
 def test_row8_unreachable_by_geometry(summary):

@@ -1,5 +1,5 @@
-"""Seed 002's studies (analysis.studies.picker, formerly analysis.audit.picker_checks): the
-reading summary of the joint laws, the sensitivity of the sec. 4 comparison to model errors and
+"""Seed 002's studies (analysis.audit.papers.picker.method): the reading summary of the joint
+laws, the sensitivity of the sec. 4 comparison to model errors and
 the instrument misalignment. Numbers that depend on the assumed dimensions are tested as properties
 (e.g. a roll about the jaw axis cannot move a marker on that axis), not as magic values."""
 
@@ -10,8 +10,8 @@ import math
 import numpy as np
 import pytest
 
+from analysis.audit.papers.picker import method as chk
 from analysis.kinematics import picker as pk
-from analysis.studies import picker as chk
 
 PICKER = pk.load_picker()
 
@@ -41,7 +41,7 @@ def test_misalignment_reproduces_the_error(reading):
     eps = chk.misalignment_for(PICKER, reading)
     p = PICKER.position(pk.law_active(np.array([1.0, 2, 3, 4, 5]), reading))
     centre = np.array([1500.0, 0.0, 0.0])
-    moved = chk._rotate_about_z(p, centre, eps)
+    moved = chk.rotate_about_z(p, centre, eps)
     assert np.abs(moved - p).max() == pytest.approx(chk.MAX_ERR, abs=1e-6)
     assert 0 < eps < math.radians(5)
 

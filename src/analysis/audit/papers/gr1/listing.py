@@ -20,18 +20,19 @@ import numpy as np
 
 from analysis.audit import vb6
 from analysis.audit.kinds.table import cell_matches
+from analysis.audit.papers.gr1 import thesis as st
+from analysis.audit.papers.gr1.thesis import gr1_arm
 from analysis.kinematics.arm import Arm
 from analysis.kinematics.rpy import matrix_from_rpy, rpy_from_matrix
 from analysis.papers import gr1_thesis as paper
 from analysis.papers import load
-from analysis.studies import gr1 as st
-from analysis.studies.gr1 import gr1_arm
+from analysis.validate import wrap_rad
 
 __all__ = [
-    "PI_LISTING", "PRINCIPAL", "REPAIRS", "approach_theta234", "atan2_statement", "atn_parts",
-    "cells_matching", "equation_holds", "listing_env", "listing_statement", "numbers",
-    "printed_cells", "printed_run", "radians_in_trig", "repaired_listing", "table5_3_inputs",
-    "table5_4_cascade", "truth",
+    "LISTING_REPAIRS", "PI_LISTING", "PRINCIPAL", "REPAIRS", "approach_theta234", "atan2_statement",
+    "atn_parts", "cells_matching", "equation_holds", "listing", "listing_env", "listing_statement",
+    "numbers", "printed_cells", "printed_run", "radians_in_trig", "repaired_listing",
+    "run_command1", "table5_3_inputs", "table5_4_cascade", "truth",
 ]  # fmt: skip
 
 PI_LISTING = 3.141593
@@ -51,7 +52,7 @@ def truth(q_deg, arm: Arm | None = None) -> dict[str, float]:
     rpy = np.degrees(rpy_from_matrix(T[:3, :3]))
     out = {"px": T[0, 3], "py": T[1, 3], "pz": T[2, 3], "alpha": rpy[0], "beta": rpy[1],
            "gamma": rpy[2], "c3": math.cos(q[2]),
-           "theta234": math.degrees(math.remainder(float(q[1] + q[2] + q[3]), 2 * math.pi))}  # fmt: skip  # noqa: E501
+           "theta234": math.degrees(wrap_rad(float(q[1] + q[2] + q[3])))}  # fmt: skip
     out.update({f"theta{j + 1}": float(q_deg[j]) for j in range(5)})
     for k, col in enumerate("noa"):
         for i, ax in enumerate("xyz"):
@@ -75,9 +76,56 @@ def listing_env(q_start_deg, q_end_deg=None, arm: Arm | None = None) -> dict[str
     return env
 
 
+LISTING_REPAIRS: list[dict[str, str]] = [
+    {
+        "location": "appendix 程序清单 p. 37, Command1_Click, the cf3 statement",
+        "printed": "Py1 * Sin(θf1) Cos(θf234) * a4",
+        "repaired": "Py1 * Sin(θf1) - Cos(θf234) * a4",
+        "why": (
+            "as printed the statement is a VB6 syntax error (two operands with no operator), "
+            "so the form would not compile; the same statement for the start pose (c3) has "
+            "'- Cos(θ234) * a4' at this place, and with '-' the listing reproduces the printed "
+            "Table 5-4 end-pose theta3 = -45.244 (tests/audit/test_vb6.py)"
+        ),
+    }
+]
+"""The one edit needed to run the printed listing; everything else runs as printed."""
+
+
+def listing(*, repaired: bool = True) -> str:
+    """The thesis's VB6 listing (``data/papers/gr1.toml``, record ``listing``), with
+    :data:`LISTING_REPAIRS` applied when ``repaired`` (the default; as printed it does not
+    compile)."""
+    src = paper.LISTING
+    if repaired:
+        for rep in LISTING_REPAIRS:
+            if src.count(rep["printed"]) != 1:
+                raise ValueError(f"repair target {rep['printed']!r} not found exactly once")
+            src = src.replace(rep["printed"], rep["repaired"])
+    return src
+
+
+def run_command1(inputs: dict, **options: bool) -> dict:
+    """Run ``Command1_Click`` (the "计算" button) of the repaired listing on ``inputs``.
+
+    ``inputs`` maps ``Text1`` ... ``Text12`` (start px, py, pz, alpha, beta, gamma, then the
+    end pose, the order of Table 5-3) to what is typed. Returns :func:`analysis.audit.vb6.run`'s
+    dict.
+
+    Example (Table 5-3 start and end poses; printed Table 5-4 start theta1 is 56.828)::
+
+        >>> out = run_command1({"Text1": "151", "Text2": "231", "Text3": "250", "Text4": "32",
+        ...                     "Text5": "45", "Text6": "60", "Text7": "200", "Text8": "300",
+        ...                     "Text9": "178", "Text10": "20", "Text11": "50", "Text12": "80"})
+        >>> out["text"]["Text13"], out["text"]["Text14"]
+        ('56.828', '-66.006')
+    """
+    return vb6.run(listing(), "Command1_Click", inputs, **options)
+
+
 def listing_statement(prefix: str, *, repaired: bool = False) -> str:
     """The one line of the listing (as printed, or with the cf3 repair) starting ``prefix``."""
-    lines = [ln for ln in vb6.listing(repaired=repaired).splitlines() if ln.startswith(prefix)]
+    lines = [ln for ln in listing(repaired=repaired).splitlines() if ln.startswith(prefix)]
     if len(lines) != 1:
         raise ValueError(f"{len(lines)} listing lines start with {prefix!r}")
     return lines[0]
@@ -96,7 +144,7 @@ def equation_holds(text: str, *, angle: bool = False, atol: float = 1e-9) -> boo
 # --------------------------------------------------------------------------- repairs
 def atn_parts(statement: str) -> tuple[str, str]:
     """The numerator and denominator of the ``Atn(A / B)`` in a listing statement."""
-    from analysis.audit.kinds.listing import _atn_parts
+    from analysis.audit.kinds.listing import atn_operands
 
     def unwrap(s: str) -> str:
         depth = 0
@@ -106,7 +154,7 @@ def atn_parts(statement: str) -> tuple[str, str]:
                 return s
         return s[1:-1] if s.startswith("(") else s
 
-    return tuple(unwrap(p) for p in _atn_parts(statement))  # type: ignore[return-value]
+    return tuple(unwrap(p) for p in atn_operands(statement))  # type: ignore[return-value]
 
 
 def atan2_statement(name: str, y: str, x: str) -> str:
@@ -188,7 +236,7 @@ def repaired_listing(upto: str) -> str:
     """The listing with the repairs of :data:`REPAIRS` applied up to and including ``upto``."""
     if upto not in REPAIRS:
         raise ValueError(f"unknown repair {upto!r}; expected one of {list(REPAIRS)}")
-    src = vb6.listing()
+    src = listing()
     for name, fn in REPAIRS.items():
         src = fn(src)
         if name == upto:
@@ -227,7 +275,7 @@ def numbers(text: str) -> list[float]:
 @cache
 def printed_run() -> dict:
     """The listing (cf3 repaired) on Table 5-3: what the 计算 button displays."""
-    return vb6.run(vb6.listing(), "Command1_Click", table5_3_inputs())
+    return vb6.run(listing(), "Command1_Click", table5_3_inputs())
 
 
 def printed_cells() -> tuple[float, ...]:
@@ -262,7 +310,7 @@ def chain_values(arm: Arm, n: int = 200, seed: int = 2007) -> dict[str, np.ndarr
     T = arm.table.fk(q)
     rpy = rpy_from_matrix(T[:, :3, :3])
     v = {f"theta{j + 1}": q[:, j] for j in range(5)}
-    v["theta234"] = np.remainder(q[:, 1] + q[:, 2] + q[:, 3] + np.pi, 2 * np.pi) - np.pi
+    v["theta234"] = wrap_rad(q[:, 1] + q[:, 2] + q[:, 3])
     v.update(px=T[:, 0, 3], py=T[:, 1, 3], pz=T[:, 2, 3], phi=rpy[:, 0], theta=rpy[:, 1],
              psi=rpy[:, 2], **{k: float(P[k]) for k in ("a2", "a3", "a4")})  # fmt: skip
     v.update({f"{c}_{x}": T[:, i, k] for k, c in enumerate("noa") for i, x in enumerate("xyz")})
@@ -276,17 +324,17 @@ def listing_variants() -> dict[str, object]:
     orientation changes the end cells; whether it shows joint values for an unreachable
     start (600, 10, 0) mm; whether the printed cf3 line parses; the end theta3 it shows."""
     run = printed_run()["text"]
-    other = vb6.run_command1(dict(table5_3_inputs(), Text10="-70", Text11="10", Text12="5"))
-    shown = vb6.run_command1(dict(table5_3_inputs(), Text1="600", Text2="10", Text3="0"))["text"]
-    double = vb6.listing().replace("θ234 As Single", "θ234 As Double")
+    other = run_command1(dict(table5_3_inputs(), Text10="-70", Text11="10", Text12="5"))
+    shown = run_command1(dict(table5_3_inputs(), Text1="600", Text2="10", Text3="0"))["text"]
+    double = listing().replace("θ234 As Single", "θ234 As Double")
     try:
-        parses = bool(vb6.VB6Form(vb6.listing(repaired=False)))
+        parses = bool(vb6.VB6Form(listing(repaired=False)))
     except vb6.VB6SyntaxError:
         parses = False
     ends = [f"Text{i}" for i in range(18, 23)]
     return {
-        "as_printed": cells_matching(vb6.listing()),
-        "trig_in_degrees": cells_matching(vb6.listing(), trig_degrees=True),
+        "as_printed": cells_matching(listing()),
+        "trig_in_degrees": cells_matching(listing(), trig_degrees=True),
         "all_double": cells_matching(double.replace("θf234 As Single", "θf234 As Double")),
         "end_orientation_read": [other["text"][b] for b in ends] != [run[b] for b in ends],
         "far_pose_shown": all(shown[f"Text{i}"] not in ("", ".") for i in range(13, 18)),
@@ -407,7 +455,7 @@ def control_path() -> dict[str, np.ndarray]:
     (Command1_Click); Table 2-3 from Table 5-4 by the text's rule; a procedure for each of
     sec. 6.2's buttons (the write button's among them); counters with set values a PC can
     write (not K constants)."""
-    df, subs = st.printed_presets(), vb6.VB6Form(vb6.listing()).subs
+    df, subs = st.printed_presets(), vb6.VB6Form(listing()).subs
     buttons = paper_().record("c6.2-buttons").text.split(":")[-1].split("、")
     ladder = paper_().record("ladder")["recoverable"]["counters"]
     return {"implemented": np.array([

@@ -1,8 +1,8 @@
 """Seed 004's definitions for its checks (``data/registers/gr1.toml``): the GR-1's chain
 (``data/arms/gr1.toml``, d1 = 0 and the joint limits assumed), its VB6 listing
-(:mod:`analysis.audit.vb6`, run by the ``vb6`` kind on the presets of
-:mod:`analysis.studies.gr1_listing`) and the FX2N program's operand census. The studies
-behind the domains and facts: :mod:`analysis.studies.gr1`, :mod:`analysis.studies.gr1_listing`."""
+(:mod:`analysis.audit.vb6`, run by the ``vb6`` kind on the presets of :mod:`.listing`) and the
+FX2N program's operand census. The studies behind the domains and facts: :mod:`.thesis`,
+:mod:`.listing`."""
 
 from __future__ import annotations
 
@@ -16,10 +16,10 @@ import sympy as sp
 from analysis.audit import vb6
 from analysis.audit.context import Bespoke, context
 from analysis.audit.kinds import Result
+from analysis.audit.papers.gr1 import listing as gl
+from analysis.audit.papers.gr1 import thesis as st
 from analysis.kinematics.arm import Arm
 from analysis.kinematics.dh import link_transform_sym
-from analysis.studies import gr1 as st
-from analysis.studies import gr1_listing as gl
 
 B = Bespoke("gr1")
 _NUM = r"-?\d+(?:\.\d+)?"
@@ -199,7 +199,7 @@ def _work_area(text, ctx):
 @B.predicate("dh_rows")
 def _dh_rows(text, ctx):
     """D-H rows '(thetaK, d, a, alpha_deg)' (lengths by name or in mm): a chain on which sec.
-    4.2's c3 and tan(theta234) hold (analysis.studies.gr1_listing.sec42_holds_on)."""
+    4.2's c3 and tan(theta234) hold (analysis.audit.papers.gr1.listing.sec42_holds_on)."""
     row = r"\(theta(\d), ([\w.]+), ([\w.]+), (-?[\d.]+)\)"
     rows = re.findall(row, text)
     if not re.fullmatch(rf"{row}(?:, {row}){{4}}", text.strip()) or [r[0] for r in rows] != list("12345"):  # noqa: E501
@@ -230,7 +230,7 @@ def _t53(text, ctx):
         return False
     order = [tokens.index(n) for n in names]
     vals = [rec["rows"][k][i] for k in ("start", "end") for i in order]
-    return vb6.run_command1({f"Text{i + 1}": str(v) for i, v in enumerate(vals)})["text"] == gl.printed_run()["text"]  # noqa: E501
+    return gl.run_command1({f"Text{i + 1}": str(v) for i, v in enumerate(vals)})["text"] == gl.printed_run()["text"]  # noqa: E501
 
 
 @B.predicate("restored")

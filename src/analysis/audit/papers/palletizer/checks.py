@@ -2,7 +2,7 @@
 matrices' product, Craig's link transform, sample domains on the arm of
 ``data/arms/palletizer.toml`` (every length ASSUMED: the paper prints none; one domain adds an
 arm with L1 != L2 so that no check can lean on the assumed L1 = L2) and the facts the evidence
-names. The printed method as a model is :mod:`analysis.studies.palletizer`."""
+names. The printed method as a model is :mod:`analysis.audit.papers.palletizer.method`."""
 
 from __future__ import annotations
 
@@ -25,7 +25,7 @@ def _S(name):
 
 
 def _st():
-    from analysis.studies import palletizer as st
+    from analysis.audit.papers.palletizer import method as st
 
     return st
 

@@ -13,20 +13,17 @@ lost: the denominator of eq. 18 is negative), whose rounding is 190.21, not 190.
 
 from __future__ import annotations
 
-from decimal import Decimal
-
 import numpy as np
 import numpy.typing as npt
 import pandas as pd
 
+from analysis.audit.kinds.table import cell_matches, decimals
 from analysis.kinematics.arm import BRANCHES, Arm, paper_arm
 from analysis.kinematics.params import data_dir
 from analysis.kinematics.pulses import angles_to_pulses, pulses_to_angles
 
 __all__ = [
     "EVALUATIONS",
-    "cell_matches",
-    "decimals",
     "evaluations",
     "load_printed",
     "printed_formulas",
@@ -55,34 +52,6 @@ def load_printed(path=None) -> pd.DataFrame:
     if missing:
         raise ValueError(f"{path}: missing column(s) {', '.join(missing)}")
     return df
-
-
-def decimals(text: str) -> int:
-    """Number of decimals printed in a cell ("190.20" -> 2, "45" -> 0)."""
-    d = Decimal(text.strip())
-    return max(0, -d.as_tuple().exponent)
-
-
-def cell_matches(text: str, value_deg: float, mode: str = "round") -> bool:
-    """Does ``value_deg`` print as ``text`` at the printed number of decimals?
-
-    ``mode`` is "round" (to nearest) or "truncate" (toward zero). A non-numeric text
-    (无解) never matches a number.
-    """
-    try:
-        printed = float(text)
-    except ValueError:
-        return False
-    if not np.isfinite(value_deg):
-        return False
-    k = decimals(text)
-    scale = 10.0**k
-    # 1e-9 deg guards against binary representation of the printed decimal
-    if mode == "round":
-        return abs(value_deg - printed) <= 0.5 / scale + 1e-9
-    if mode == "truncate":
-        return abs(np.trunc(value_deg * scale) / scale - printed) <= 1e-9
-    raise ValueError(f"mode {mode!r}: expected 'round' or 'truncate'")
 
 
 def printed_formulas(

@@ -87,7 +87,7 @@ def mutation_errors(picker: pk.Picker, reading: str) -> dict[str, float]:
     return out
 
 
-def _rotate_about_z(p, centre, eps):
+def rotate_about_z(p, centre, eps):
     c, s = math.cos(eps), math.sin(eps)
     d = p - centre
     return centre + np.stack(
@@ -104,7 +104,7 @@ def misalignment_for(picker: pk.Picker, reading: str, error_mm: float = MAX_ERR)
     lo, hi = 0.0, 0.5
     for _ in range(100):  # bisection on a monotone function of eps (small angles)
         mid = (lo + hi) / 2
-        if _per_axis(_rotate_about_z(p, centre, mid), p) < error_mm:
+        if _per_axis(rotate_about_z(p, centre, mid), p) < error_mm:
             lo = mid
         else:
             hi = mid

@@ -9,6 +9,7 @@ import numpy as np
 import sympy as sp
 
 from analysis.audit.context import Bespoke, context, sample_q
+from analysis.validate import wrap_rad
 
 B = Bespoke("grabber")
 _RNG = 2016
@@ -76,7 +77,7 @@ def _values(P, theta) -> dict:
     return {
         "Px": P[:, 0], "Py": P[:, 1], "Pz": P[:, 2], "p_z": P[:, 2],
         "theta1": t1, "theta2": t2, "theta3": t3,
-        "theta23": np.mod(t2 + t3 + np.pi, 2 * np.pi) - np.pi,
+        "theta23": wrap_rad(t2 + t3),
         "num": z * k + r * prm.L2 * np.sin(t3), "den": -z * prm.L2 * np.sin(t3) + r * k,
         "c1": c[:, 0], "c2": c[:, 1], "c3": c[:, 2], "L1": prm.L1, "L2": prm.L2, "L3": prm.L3,
     }  # fmt: skip
@@ -118,7 +119,7 @@ def _reach():
     return {"reachable": arm.is_reachable(P), "acos_arg": arg}
 
 
-# --- the printed listings, executed (analysis.studies.grabber_listings) ----------------------
+# --- the printed listings, executed (analysis.audit.papers.grabber.listings) ----------------------
 B.domain("listings")(lambda: {k: np.array([v]) for k, v in _gs().census().items()})
 B.domain("hmi_targets")(lambda: _gs().hmi_targets())
 B.domain("table4_rows")(lambda: _gs().table4_rows())
@@ -129,9 +130,9 @@ B.domain("z600_line")(lambda: _z600())
 
 
 def _gs():
-    from analysis.studies import grabber
+    from analysis.audit.papers.grabber import listings
 
-    return grabber
+    return listings
 
 
 def _text(rid: str) -> str:
@@ -145,7 +146,7 @@ def _z600():
     P, th = _gs().front_up(np.stack([rho, np.zeros_like(rho), np.full_like(rho, 600.0)], -1))
     v = _values(P, th)
     printed = np.arctan(v["num"] / v["den"]) - v["theta3"]
-    ok = np.abs(np.mod(printed - v["theta2"] + np.pi, 2 * np.pi) - np.pi) < 1e-9
+    ok = np.abs(wrap_rad(printed - v["theta2"])) < 1e-9
     return {"rho": P[:, 0], "eq19_ok": ok}
 
 
@@ -177,7 +178,7 @@ for _t in ("table1", "table3"):
 
 @B.fact()
 def table4_fk():
-    from analysis.audit import table4
+    from analysis.audit.papers.grabber import table4
 
     return table4.summary().set_index("row")["fk_error_mm"].to_dict()
 

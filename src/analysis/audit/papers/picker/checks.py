@@ -2,7 +2,7 @@
 every displayed equation, Tables 1-2 and Figures 1-4; what is checked is the running text, the
 topology and the experiment's design, against the reconstructed mechanism
 (:mod:`analysis.kinematics.picker`, ``data/arms/picker.toml``, every dimension ASSUMED but the
-two the text prints). Studies the notebook shows: :mod:`analysis.studies.picker`."""
+two the text prints). Studies the notebook shows: :mod:`analysis.audit.papers.picker.method`."""
 
 from __future__ import annotations
 
@@ -42,7 +42,7 @@ def _laws():
 def _wrong():
     """Models with one element wrong, joint values in degrees: the largest per-axis change of
     the five sec. 4 positions (inf: the wrong model cannot assemble, which a test would see)."""
-    from analysis.studies import picker as st
+    from analysis.audit.papers.picker import method as st
 
     errs = st.mutation_errors(_pk().load_picker(), "value, deg")
     return {"change_mm": np.array(list(errs.values()))}
@@ -104,7 +104,7 @@ def _assumed():
 
 @B.domain("poe_routes")
 def _poe():
-    from analysis.audit.poe_checks import cross_check
+    from analysis.audit.papers.picker.poe_checks import cross_check
 
     return {"ok": np.array([r["ok"] for r in cross_check(n=200)])}
 

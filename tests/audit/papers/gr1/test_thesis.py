@@ -1,5 +1,5 @@
-"""analysis.studies.gr1: Table 5-4 recomputed, the counter presets, the work area and the
-FX2N move, against independent references (the VB6 test's FK misses, hand computations from
+"""analysis.audit.papers.gr1.thesis: Table 5-4 recomputed, the counter presets, the work area
+and the FX2N move, against independent references (the VB6 test's FK misses, hand computations from
 Table 2-1, the planar chain's analytic reach, the sequential model's own timing).
 
 Tolerances: positions 1e-9 mm (float64 on a 529 mm chain, see tests/kinematics/test_gr1.py);
@@ -11,8 +11,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from analysis.audit.papers.gr1 import thesis as S
 from analysis.kinematics.status import Status
-from analysis.studies import gr1 as S
 
 
 @pytest.fixture(scope="module")
