@@ -680,7 +680,8 @@ def _add_stl(sub) -> None:
         "against (S7-200: CPU 221, 222, 224, 224XP, 226, default CPU 224; S7-300: CPU 312, "
         "314, 315-2 DP, 317-2 DP, default CPU 315-2 DP; e.g. --cpu 224XP)",
     )
-    p.add_argument("--no-motion", action="store_true", help="S7-200: omit the PTO motion networks")
+    p.add_argument("--no-motion", action="store_true", help="omit the motion: the S7-200's PTO "
+                   "networks; st, scl, plcopen-xml: the machine program (the IK block alone)")
     p.add_argument(
         "--theta1-on-axis", type=_finite, metavar="DEG", help="waist angle on the base axis"
     )

@@ -116,7 +116,9 @@ def generate(
     params : Params, optional
         The arm and its numbers (default: the paper's arm, Table 3).
     motion : bool
-        S7-200 and the paper's arm only: append the PTO motion networks.
+        S7-200 and the paper's arm: append the PTO motion networks; st, scl, plcopen-xml:
+        the machine program beside the IK block (:func:`analysis.plc.machine.generate.
+        generate_machine`; False: the IK block on its own).
     theta1_on_axis : float, optional
         Waist angle [rad] on the base axis (default: refuse such targets, status 3).
     optimize : bool
@@ -131,9 +133,13 @@ def generate(
     """
     from analysis.plc.st_generate import ST_FAMILY, generate_st
 
-    if dialect in ST_FAMILY:  # IEC 61131-3 ST, SCL, PLCopen XML: no addresses, no motion
+    if dialect in ST_FAMILY:  # IEC 61131-3 ST, SCL, PLCopen XML: no addresses
         if mmap is not None:
             raise ValueError(f"a memory layout names addresses; {dialect} has none")
+        if motion:
+            from analysis.plc.machine.generate import generate_machine
+
+            return generate_machine(dialect, branch, trig, params, theta1_on_axis)
         return generate_st(dialect, branch, trig, params, theta1_on_axis)
     if dialect not in DIALECTS:
         raise ValueError(f"dialect {dialect!r} is not one of {', '.join((*DIALECTS, *ST_FAMILY))}")

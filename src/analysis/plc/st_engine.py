@@ -24,6 +24,7 @@ counts as they were, and the counts themselves where it changed them (which
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import os
 import re
@@ -259,19 +260,24 @@ class MachineRun:
 
 
 def machine_engine_path(check: bool = True) -> Path:
-    """The machine driver (as :func:`engine_path`)."""
+    """The machine driver (as :func:`engine_path`; its key checked once per process)."""
     env = os.environ.get(MACHINE_ENGINE_ENV)
     path = Path(env) if env else Path(sys.prefix) / "bin" / "analysis-st-machine"
     if check:
         if not path.exists():
             raise EngineMissing(f"the ST machine driver {path} is not built: run `make st-engine`")
-        key = build_key()
-        if key is not None:
-            got = subprocess.run([str(path), "--key"], capture_output=True, text=True)
-            if got.stdout.strip() != key:
-                raise EngineMissing(f"the ST machine driver {path} was built from other "
-                                    "sources: run `make st-engine`")  # fmt: skip
+        _check_key(str(path), path.stat().st_mtime_ns)
     return path
+
+
+@functools.cache
+def _check_key(path: str, mtime_ns: int) -> None:
+    key = build_key()
+    if key is not None:
+        got = subprocess.run([path, "--key"], capture_output=True, text=True)
+        if got.stdout.strip() != key:
+            raise EngineMissing(f"the ST machine driver {path} was built from other sources: "
+                                "run `make st-engine`")  # fmt: skip
 
 
 def _diagnostic(err: str) -> str:
@@ -295,16 +301,16 @@ def program_variables(source: str, program: str, engine: Path | None = None) -> 
     """The variables of PROGRAM ``program`` in ``source`` and their types (as the engine
     compiled them: BOOL, INT, DINT, REAL, LREAL, TIME, AXIS_REF, ...). ValueError with the
     first diagnostic (line and column) if it does not compile."""
-    engine = engine or machine_engine_path()
+    return dict(_program_variables(source, program, str(engine or machine_engine_path())))
+
+
+@functools.lru_cache(maxsize=64)
+def _program_variables(source: str, program: str, engine: str) -> tuple[tuple[str, str], ...]:
     r = _with_source(source, lambda p: subprocess.run(
-        [str(engine), "--vars", p, program], capture_output=True, timeout=60))  # fmt: skip
+        [engine, "--vars", p, program], capture_output=True, timeout=60))  # fmt: skip
     if r.returncode != 0:
         raise ValueError(f"the program does not compile: {_diagnostic(r.stderr.decode())}")
-    out = {}
-    for ln in r.stdout.decode().splitlines():
-        name, _, typ = ln.partition("\t")
-        out[name] = typ
-    return out
+    return tuple(tuple(ln.partition("\t")[::2]) for ln in r.stdout.decode().splitlines())
 
 
 def run_machine(
@@ -325,7 +331,7 @@ def run_machine(
     before the first scan. Raises :class:`EngineFault` (with the trace so far) when a scan
     faults, ValueError when the program does not compile or a name is not its variable."""
     engine = engine or machine_engine_path()
-    cycle_ns = int(round(cycle_s * 1e9))
+    cycle_ns = round(cycle_s * 1e9)
     names = sorted({n for _, n, _ in writes})
     rows = [(c, names.index(n), float(v)) for c, n, v in writes]
     variables = program_variables(source, program, engine)

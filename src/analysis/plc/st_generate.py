@@ -15,7 +15,7 @@ import json
 from xml.sax.saxutils import escape, quoteattr
 
 from analysis.plc.ir import Program, build_program
-from analysis.plc.st import block_name, emit_scl, emit_st
+from analysis.plc.st import StPrinter, block_name, emit_scl, emit_st
 
 __all__ = ["ST_FAMILY", "generate_st", "interface_map", "plcopen_xml", "validate_plcopen"]
 
@@ -71,6 +71,9 @@ def plcopen_xml(st_text: str, program: Program, fb: str, units) -> str:
     input variables) and the function block (inputs, outputs, static variables), each body
     the ST statements of :func:`~analysis.plc.st.emit_st`."""
     bodies = _st_bodies(st_text)
+    # the declared names are the printer's (a reserved word such as D gets "v_", as in the body)
+    printer = StPrinter()
+    printer.declare([*program.inputs, *program.outputs, "reachable", "status", *program.work])
 
     def var(name, typ, doc=""):
         d = (
@@ -97,7 +100,7 @@ def plcopen_xml(st_text: str, program: Program, fb: str, units) -> str:
         "<interface>"
         f"<inputVars>{ins}</inputVars>"
         f"<outputVars>{outs}</outputVars>"
-        f"<localVars>{''.join(var(n, 'REAL') for n in program.work)}</localVars>"
+        f"<localVars>{''.join(var(printer.ident(n), 'REAL') for n in program.work)}</localVars>"
         "</interface>"
     )
     pous.append(_pou(fb, "functionBlock", iface, bodies[fb]))

@@ -28,8 +28,12 @@ def machine_map(spec, ik_codes, dialect: str) -> dict:
     limits and homing (each value's provenance), the unit rule of the motion blocks."""
     name = machine_name(spec)
     inputs = {n: {"type": "BOOL"} for n in MACHINE_INPUTS}
-    inputs.update({n: {"type": "REAL", "unit": u}
-                   for n, u in zip(spec.targets, spec.target_units, strict=True)})  # fmt: skip
+    inputs.update(
+        {
+            n: {"type": "REAL", "unit": u}
+            for n, u in zip(spec.targets, spec.target_units, strict=True)
+        }
+    )
     outputs = {n: {"type": "INT" if n == "Status" else "BOOL"} for n in MACHINE_OUTPUTS}
     outputs["AxisErrorID"] = {"type": "DINT", "meaning": "the first axis error's ID (0: none)"}
     axes = [

@@ -40,8 +40,15 @@ from analysis.plc.machine.spec import MACHINE_STATUS, MachineSpec
 
 __all__ = ["STEPS", "MachinePrinter", "SclMachinePrinter", "machine_name", "machine_text"]
 
-STEPS = {"IDLE": 0, "HOMING": 10, "PLAN": 20, "MOVING": 21, "HALTING": 30, "STOPPED": 40,
-         "GRIPPING": 50}  # fmt: skip
+STEPS = {
+    "IDLE": 0,
+    "HOMING": 10,
+    "PLAN": 20,
+    "MOVING": 21,
+    "HALTING": 30,
+    "STOPPED": 40,
+    "GRIPPING": 50,
+}
 """The sequence's steps (``Phase`` in the program)."""
 
 _CODE = {word: code for code, (word, _, _) in MACHINE_STATUS.items()}
@@ -89,50 +96,79 @@ class MachinePrinter:
         s, t = self.spec, self.indent
         targets = ", ".join(f"{n} [{u}]" for n, u in zip(s.targets, s.target_units, strict=True))
         out = [
-            self.comment("inputs (written by an HMI or the I/O, never by the program): Enable "
-                         "powers the axes; Home, Start, Reset act on their rising edge; StopOK "
-                         f"is the normally closed stop circuit; {targets}; Grip closes the "
-                         "gripper"),  # fmt: skip
+            self.comment(
+                "inputs (written by an HMI or the I/O, never by the program): Enable "
+                "powers the axes; Home, Start, Reset act on their rising edge; StopOK "
+                f"is the normally closed stop circuit; {targets}; Grip closes the "
+                "gripper"
+            ),
             *[f"{t}{n} : BOOL;" for n in ("Enable", "Home", "Start", "StopOK", "Reset", "Grip")],
             *[f"{t}{n} : REAL;" for n in s.targets],
-            self.comment("outputs: Status is the IK block's code (0-7) or the machine's "
-                         "(100-104), see MAP.json; Gripper drives the gripper valve, "
-                         "GripperClosed follows it after the dwell"),  # fmt: skip
+            self.comment(
+                "outputs: Status is the IK block's code (0-7) or the machine's "
+                "(100-104), see MAP.json; Gripper drives the gripper valve, "
+                "GripperClosed follows it after the dwell"
+            ),
             *[f"{t}{n} : BOOL;" for n in ("Homed", "Busy", "Done", "Error")],
             f"{t}Status : INT;",
             f"{t}AxisErrorID : DINT;",
             f"{t}Gripper : BOOL;",
             f"{t}GripperClosed : BOOL;",
-            self.comment("seconds per time unit of the motion blocks' Velocity, Acceleration "
-                         "and Jerk: 1.0 (per second) on a PLC"),  # fmt: skip
+            self.comment(
+                "seconds per time unit of the motion blocks' Velocity, Acceleration "
+                "and Jerk: 1.0 (per second) on a PLC"
+            ),
             f"{t}MotionTimeUnit : LREAL := LREAL#1.0;",
-            f"{t}GripDwell : TIME := T#{int(round(s.grip_dwell_s * 1000))}ms;",
+            f"{t}GripDwell : TIME := T#{round(s.grip_dwell_s * 1000)}ms;",
         ]
         out += self.axis_declarations()
-        out += [self.comment("the sequence"), f"{t}Phase : INT;", f"{t}StopLatched : BOOL;",
-                f"{t}FaultLatched : BOOL;", f"{t}ResetPending : BOOL;", f"{t}Fault : BOOL;",
-                f"{t}Powered : BOOL;", f"{t}AllDone : BOOL;"]  # fmt: skip
+        out += [
+            self.comment("the sequence"),
+            f"{t}Phase : INT;",
+            f"{t}StopLatched : BOOL;",
+            f"{t}FaultLatched : BOOL;",
+            f"{t}ResetPending : BOOL;",
+            f"{t}Fault : BOOL;",
+            f"{t}Powered : BOOL;",
+            f"{t}AllDone : BOOL;",
+        ]
         out += [f"{t}Latched{n[6:]} : REAL;" for n in s.targets]
         out += [f"{t}{n} : LREAL;" for n in ("Tu", "Scale", "NormV", "NormA", "NormJ")]
-        out += [f"{t}StartEdge : R_TRIG;", f"{t}HomeEdge : R_TRIG;", f"{t}ResetEdge : R_TRIG;",
-                f"{t}GripTimer : {self.fb_type('TON')};", f"{t}Ik : {self.ik_block};"]  # fmt: skip
+        out += [
+            f"{t}StartEdge : R_TRIG;",
+            f"{t}HomeEdge : R_TRIG;",
+            f"{t}ResetEdge : R_TRIG;",
+            f"{t}GripTimer : {self.fb_type('TON')};",
+            f"{t}Ik : {self.ik_block};",
+        ]
         return out
 
     def axis_declarations(self) -> list[str]:
         t, out = self.indent, []
         for a in self.spec.axes:
             k = a.name[4:]
-            limits = "unlimited: moved the short way" if a.unlimited else \
-                f"{a.lower:g} .. {a.upper:g} {a.unit}"  # fmt: skip
-            out.append(self.comment(
-                f"{a.name}: joint {a.joint} [{a.unit}], {a.per_pulse:.9g} {a.unit}/pulse, "
-                f"{limits}; max {a.max_velocity:g} {a.unit}/s, {a.max_acceleration:g} "
-                f"{a.unit}/s2, {a.max_jerk:g} {a.unit}/s3; home: {a.home_mode} at "
-                f"{a.home_position:g} {a.unit}"))  # fmt: skip
+            limits = (
+                "unlimited: moved the short way"
+                if a.unlimited
+                else f"{a.lower:g} .. {a.upper:g} {a.unit}"
+            )
+            out.append(
+                self.comment(
+                    f"{a.name}: joint {a.joint} [{a.unit}], {a.per_pulse:.9g} {a.unit}/pulse, "
+                    f"{limits}; max {a.max_velocity:g} {a.unit}/s, {a.max_acceleration:g} "
+                    f"{a.unit}/s2, {a.max_jerk:g} {a.unit}/s3; home: {a.home_mode} at "
+                    f"{a.home_position:g} {a.unit}"
+                )
+            )
             out.append(f"{t}{a.name} : {self.axis_type()};")
-            for fb, kind in (("Power", "MC_Power"), ("Homing", "MC_Home"),
-                             ("Move", "MC_MoveAbsolute"), ("Halt", "MC_Halt"),
-                             ("Stop", self.stop_block()), ("Reset", "MC_Reset")):  # fmt: skip
+            for fb, kind in (
+                ("Power", "MC_Power"),
+                ("Homing", "MC_Home"),
+                ("Move", "MC_MoveAbsolute"),
+                ("Halt", "MC_Halt"),
+                ("Stop", self.stop_block()),
+                ("Reset", "MC_Reset"),
+            ):
                 out.append(f"{t}{fb}{k} : {self.fb_type(kind)};")
             out += self.read_declarations(k)
             out += [f"{t}{n}{k} : LREAL;" for n in ("Pos", "Goal", "Dist")]
@@ -152,9 +188,12 @@ class MachinePrinter:
 
     def read_axes(self) -> list[str]:
         v, out = self.v, [self.comment("1. edges; each axis powered, its position and error")]
-        out += [f"{v('StartEdge')}(CLK := {v('Start')});", f"{v('HomeEdge')}(CLK := {v('Home')});",
-                f"{v('ResetEdge')}(CLK := {v('Reset')});",
-                f"{v('Tu')} := {v('MotionTimeUnit')};"]  # fmt: skip
+        out += [
+            f"{v('StartEdge')}(CLK := {v('Start')});",
+            f"{v('HomeEdge')}(CLK := {v('Home')});",
+            f"{v('ResetEdge')}(CLK := {v('Reset')});",
+            f"{v('Tu')} := {v('MotionTimeUnit')};",
+        ]
         powered, faults = [], []
         for a in self.spec.axes:
             k = a.name[4:]
@@ -168,25 +207,32 @@ class MachinePrinter:
 
     def read_axis(self, k: str, axis: str) -> list[str]:
         v = self.v
-        return [f"{v('ReadPos' + k)}(Axis := {v(axis)}, Enable := TRUE);",
-                f"{v('ReadErr' + k)}(Axis := {v(axis)}, Enable := TRUE);",
-                f"{v('Pos' + k)} := {v('ReadPos' + k)}.Position;"]  # fmt: skip
+        return [
+            f"{v('ReadPos' + k)}(Axis := {v(axis)}, Enable := TRUE);",
+            f"{v('ReadErr' + k)}(Axis := {v(axis)}, Enable := TRUE);",
+            f"{v('Pos' + k)} := {v('ReadPos' + k)}.Position;",
+        ]
 
     def axis_fault(self, k: str) -> str:
         v = self.v
-        errs = " OR ".join(f"{v(fb + k)}.Error" for fb in ("Power", "Homing", "Move", "Halt",
-                                                           "Stop"))  # fmt: skip
+        errs = " OR ".join(
+            f"{v(fb + k)}.Error" for fb in ("Power", "Homing", "Move", "Halt", "Stop")
+        )
         return f"({v('ReadErr' + k)}.AxisErrorID <> 0) OR {errs}"
 
     def latches(self) -> list[str]:
         v, t = self.v, self.indent
-        first = [f"{'IF' if i == 0 else 'ELSIF'} {v('ReadErr' + a.name[4:])}.AxisErrorID <> 0 "
-                 f"THEN\n{t}{t}{v('AxisErrorID')} := {v('ReadErr' + a.name[4:])}.AxisErrorID;"
-                 for i, a in enumerate(self.spec.axes)]  # fmt: skip
+        first = [
+            f"{'IF' if i == 0 else 'ELSIF'} {v('ReadErr' + a.name[4:])}.AxisErrorID <> 0 "
+            f"THEN\n{t}{t}{v('AxisErrorID')} := {v('ReadErr' + a.name[4:])}.AxisErrorID;"
+            for i, a in enumerate(self.spec.axes)
+        ]
         return [
             "",
-            self.comment("2. the stop circuit (normally closed) and axis errors latch; Reset "
-                         "clears them once the circuit is closed and no axis reports an error"),
+            self.comment(
+                "2. the stop circuit (normally closed) and axis errors latch; Reset "
+                "clears them once the circuit is closed and no axis reports an error"
+            ),
             f"IF NOT {v('StopOK')} THEN",
             f"{t}{v('StopLatched')} := TRUE;",
             "END_IF;",
@@ -215,28 +261,38 @@ class MachinePrinter:
 
     def refuse(self, code: str, depth: int = 2) -> list[str]:
         t, v = self.indent * depth, self.v
-        return [f"{t}{v('Status')} := {code};", f"{t}{v('Error')} := TRUE;",
-                f"{t}{v('Done')} := FALSE;"]  # fmt: skip
+        return [
+            f"{t}{v('Status')} := {code};",
+            f"{t}{v('Error')} := TRUE;",
+            f"{t}{v('Done')} := FALSE;",
+        ]
 
     def commands(self) -> list[str]:
         v, t = self.v, self.indent
         st = STEPS
         gate = [
-            f"{t}IF {v('StopLatched')} THEN", *self.refuse(_CODE["stopped"]),
-            f"{t}ELSIF {v('FaultLatched')} THEN", *self.refuse(_CODE["axis-error"]),
+            f"{t}IF {v('StopLatched')} THEN",
+            *self.refuse(_CODE["stopped"]),
+            f"{t}ELSIF {v('FaultLatched')} THEN",
+            *self.refuse(_CODE["axis-error"]),
             f"{t}ELSIF NOT {v('Enable')} OR NOT {v('Powered')} THEN",
             *self.refuse(_CODE["not-powered"]),
-        ]  # fmt: skip
-        ik_call = ", ".join(f"{n} := {self.ik_arg(n, tgt)}" for n, tgt in
-                            zip(self.spec.ik_inputs, self.spec.targets, strict=True))  # fmt: skip
+        ]
+        ik_call = ", ".join(
+            f"{n} := {self.ik_arg(n, tgt)}"
+            for n, tgt in zip(self.spec.ik_inputs, self.spec.targets, strict=True)
+        )
         latch = [f"{t}{t}{v('Latched' + n[6:])} := {v(n)};" for n in self.spec.targets]
         return [
             "",
-            self.comment("3. commands: Home and Start on their rising edge, refused with a "
-                         "status where they cannot run (nothing moves then)"),
+            self.comment(
+                "3. commands: Home and Start on their rising edge, refused with a "
+                "status where they cannot run (nothing moves then)"
+            ),
             f"IF {v('HomeEdge')}.Q THEN",
             *gate,
-            f"{t}ELSIF {v('Phase')} <> {st['IDLE']} THEN", *self.refuse(_CODE["busy"]),
+            f"{t}ELSIF {v('Phase')} <> {st['IDLE']} THEN",
+            *self.refuse(_CODE["busy"]),
             f"{t}ELSE",
             f"{t}{t}{v('Phase')} := {st['HOMING']};",
             f"{t}{t}{v('Homed')} := FALSE;",
@@ -245,7 +301,8 @@ class MachinePrinter:
             "END_IF;",
             f"IF {v('StartEdge')}.Q THEN",
             *gate,
-            f"{t}ELSIF NOT {v('Homed')} THEN", *self.refuse(_CODE["not-homed"]),
+            f"{t}ELSIF NOT {v('Homed')} THEN",
+            *self.refuse(_CODE["not-homed"]),
             f"{t}ELSIF ({v('Phase')} = {st['HOMING']}) OR ({v('Phase')} = {st['GRIPPING']}) THEN",
             *self.refuse(_CODE["busy"]),
             f"{t}ELSE",
@@ -274,8 +331,11 @@ class MachinePrinter:
 
     def accepted(self, depth: int) -> list[str]:
         t, v = self.indent * depth, self.v
-        return [f"{t}{v('Status')} := 0;", f"{t}{v('Error')} := FALSE;",
-                f"{t}{v('Done')} := FALSE;"]  # fmt: skip
+        return [
+            f"{t}{v('Status')} := 0;",
+            f"{t}{v('Error')} := FALSE;",
+            f"{t}{v('Done')} := FALSE;",
+        ]
 
     def sequence(self) -> list[str]:
         v, t, st = self.v, self.indent, STEPS
@@ -329,29 +389,41 @@ class MachinePrinter:
         normalised profile (module docstring)."""
         v, t = self.v, self.indent
         big = "LREAL#1.0E30"
-        out = [self.comment("goals from the IK pulses; the normalised profile of all joints"),
-               f"{v('NormV')} := {big};", f"{v('NormA')} := {big};",
-               f"{v('NormJ')} := {big};"]  # fmt: skip
+        out = [
+            self.comment("goals from the IK pulses; the normalised profile of all joints"),
+            f"{v('NormV')} := {big};",
+            f"{v('NormA')} := {big};",
+            f"{v('NormJ')} := {big};",
+        ]
         for a in self.spec.axes:
             k = a.name[4:]
             goal, pos, dist = v("Goal" + k), v("Pos" + k), v("Dist" + k)
             out.append(f"{goal} := DINT_TO_LREAL({v('Ik')}.c{k}) * {lreal(a.per_pulse)};")
             if a.unlimited:
-                out += [f"{dist} := {goal} - {pos};",
-                        self.comment("the short way: within +-180 deg of where the axis is"),
-                        f"{goal} := {pos} + ({dist} - LREAL#360.0 * DINT_TO_LREAL("
-                        f"LREAL_TO_DINT({dist} / LREAL#360.0)));"]  # fmt: skip
+                out += [
+                    f"{dist} := {goal} - {pos};",
+                    self.comment("the short way: within +-180 deg of where the axis is"),
+                    f"{goal} := {pos} + ({dist} - LREAL#360.0 * DINT_TO_LREAL("
+                    f"LREAL_TO_DINT({dist} / LREAL#360.0)));",
+                ]
             out += [f"{dist} := ABS({goal} - {pos});", f"IF {dist} > LREAL#0.0 THEN"]
-            for norm, lim in (("NormV", a.max_velocity), ("NormA", a.max_acceleration),
-                              ("NormJ", a.max_jerk)):  # fmt: skip
+            for norm, lim in (
+                ("NormV", a.max_velocity),
+                ("NormA", a.max_acceleration),
+                ("NormJ", a.max_jerk),
+            ):
                 out.append(f"{t}{v(norm)} := MIN({v(norm)}, {lreal(lim)} / {dist});")
             out.append("END_IF;")
         return out
 
     def drive_axes(self) -> list[str]:
         v, st, out = self.v, STEPS, [""]
-        out.append(self.comment("5. the motion blocks, from the step (Velocity, Acceleration and "
-                                "Jerk per MotionTimeUnit)"))  # fmt: skip
+        out.append(
+            self.comment(
+                "5. the motion blocks, from the step (Velocity, Acceleration and "
+                "Jerk per MotionTimeUnit)"
+            )
+        )
         tu = v("Tu")
         for a in self.spec.axes:
             k = a.name[4:]
@@ -374,36 +446,45 @@ class MachinePrinter:
                 f"{v('Reset' + k)}(Axis := {ax}, Execute := {v('ResetPending')} AND "
                 f"({v('ReadErr' + k)}.AxisErrorID <> 0));",
             ]
-        out.append(f"{v('GripTimer')}(IN := {v('Phase')} = {st['GRIPPING']}, PT := "
-                   f"{v('GripDwell')});")  # fmt: skip
+        out.append(
+            f"{v('GripTimer')}(IN := {v('Phase')} = {st['GRIPPING']}, PT := {v('GripDwell')});"
+        )
         return out
 
     def home_call(self, k: str, ax: str, a) -> list[str]:
         v = self.v
-        return [f"{v('Homing' + k)}(Axis := {ax}, Execute := {v('Phase')} = {STEPS['HOMING']}, "
-                f"Position := {lreal(a.home_position)});"]  # fmt: skip
+        return [
+            f"{v('Homing' + k)}(Axis := {ax}, Execute := {v('Phase')} = {STEPS['HOMING']}, "
+            f"Position := {lreal(a.home_position)});"
+        ]
 
     def stop_call(self, k: str, ax: str, a) -> list[str]:
         v, tu = self.v, self.v("Tu")
-        return [f"{v('Stop' + k)}(Axis := {ax}, Execute := {v('Phase')} = {STEPS['STOPPED']}, "
-                f"Deceleration := {lreal(a.max_acceleration)} * {tu} * {tu}, Jerk := "
-                f"{lreal(a.max_jerk)} * {tu} * {tu} * {tu});"]  # fmt: skip
+        return [
+            f"{v('Stop' + k)}(Axis := {ax}, Execute := {v('Phase')} = {STEPS['STOPPED']}, "
+            f"Deceleration := {lreal(a.max_acceleration)} * {tu} * {tu}, Jerk := "
+            f"{lreal(a.max_jerk)} * {tu} * {tu} * {tu});"
+        ]
 
     # --- the POU --------------------------------------------------------------------------
     def header(self) -> list[str]:
         s = self.spec
         return [
             "",
-            self.comment(f"The machine of the {s.title} ({s.arm}): power, home, move to a "
-                         "target on Start, grip, stop; PLCopen Part 1 motion blocks"),
-            self.comment("CODESYS SoftMotion: the AXIS_REF declarations below name the "
-                         "device tree's axes (delete them there, keep the names); TwinCAT: "
-                         "link Axis1..AxisN to the NC axes"),  # fmt: skip
+            self.comment(
+                f"The machine of the {s.title} ({s.arm}): power, home, move to a "
+                "target on Start, grip, stop; PLCopen Part 1 motion blocks"
+            ),
+            self.comment(
+                "CODESYS SoftMotion: the AXIS_REF declarations below name the "
+                "device tree's axes (delete them there, keep the names); TwinCAT: "
+                "link Axis1..AxisN to the NC axes"
+            ),
         ]
 
     def text(self) -> str:
         t = self.indent
-        out = self.header() + [f"PROGRAM {self.name}", "VAR"]
+        out = [*self.header(), f"PROGRAM {self.name}", "VAR"]
         out += self.declarations()
         out += ["END_VAR", ""]
         out += [t + line if line else "" for line in self.body()]
@@ -438,14 +519,16 @@ class SclMachinePrinter(MachinePrinter):
         return [f"#Pos{k} := {self.v(axis)}.ActualPosition;"]
 
     def axis_fault(self, k: str) -> str:
-        errs = " OR ".join(f"#{fb}{k}.Error" for fb in ("Power", "Homing", "Move", "Halt",
-                                                        "Stop"))  # fmt: skip
+        errs = " OR ".join(f"#{fb}{k}.Error" for fb in ("Power", "Homing", "Move", "Halt", "Stop"))
         return f"{self.v('Axis' + k)}.StatusWord.%X1 OR {errs}"
 
     def latches(self) -> list[str]:
         out = super().latches()
-        return [ln.replace(f"#ReadErr{k}.AxisErrorID", f"#Axis{k}.ErrorDetail.Number")
-                for ln in out for k in [self._k(ln)]]  # fmt: skip
+        return [
+            ln.replace(f"#ReadErr{k}.AxisErrorID", f"#Axis{k}.ErrorDetail.Number")
+            for ln in out
+            for k in [self._k(ln)]
+        ]
 
     @staticmethod
     def _k(line: str) -> str:
@@ -454,33 +537,51 @@ class SclMachinePrinter(MachinePrinter):
 
     def home_call(self, k: str, ax: str, a) -> list[str]:
         mode = 3 if a.home_mode == "switch" else 0
-        return [f"#Homing{k}(Axis := {ax}, Execute := #Phase = {STEPS['HOMING']}, Position := "
-                f"{lreal(a.home_position)}, Mode := {mode});"]  # fmt: skip
+        return [
+            f"#Homing{k}(Axis := {ax}, Execute := #Phase = {STEPS['HOMING']}, Position := "
+            f"{lreal(a.home_position)}, Mode := {mode});"
+        ]
 
     def stop_call(self, k: str, ax: str, a) -> list[str]:
-        return [f"#Stop{k}(Axis := {ax}, Execute := #Phase = {STEPS['STOPPED']}, Deceleration := "
-                f"{lreal(a.max_acceleration)} * #Tu * #Tu, Jerk := {lreal(a.max_jerk)} * #Tu * "
-                "#Tu * #Tu);"]  # fmt: skip
+        return [
+            f"#Stop{k}(Axis := {ax}, Execute := #Phase = {STEPS['STOPPED']}, Deceleration := "
+            f"{lreal(a.max_acceleration)} * #Tu * #Tu, Jerk := {lreal(a.max_jerk)} * #Tu * "
+            "#Tu * #Tu);"
+        ]
 
     def drive_axes(self) -> list[str]:
         out = super().drive_axes()
-        return [re.sub(r"\(#ReadErr(\d+)\.AxisErrorID <> 0\)", r"#Axis\1.StatusWord.%X1", ln)
-                for ln in out]  # fmt: skip
+        return [
+            re.sub(r"\(#ReadErr(\d+)\.AxisErrorID <> 0\)", r"#Axis\1.StatusWord.%X1", ln)
+            for ln in out
+        ]
 
     def text(self) -> str:
         t = self.indent
-        out = [f'FUNCTION_BLOCK "{self.name}"',
-               f"TITLE = machine of the {self.spec.title} ({self.spec.arm})",
-               "{ S7_Optimized_Access := 'TRUE' }", "VERSION : 0.1"]  # fmt: skip
+        out = [
+            f'FUNCTION_BLOCK "{self.name}"',
+            f"TITLE = machine of the {self.spec.title} ({self.spec.arm})",
+            "{ S7_Optimized_Access := 'TRUE' }",
+            "VERSION : 0.1",
+        ]
         decl = self.declarations()
         axes = [ln for ln in decl if ": TO_PositioningAxis;" in ln]
         out += ["VAR_IN_OUT", *axes, "END_VAR", "VAR"]
         out += [ln for ln in decl if ln not in axes]
         out += ["END_VAR", "", "BEGIN"]
         out += [t + line if line else "" for line in self.body()]
-        out += ["END_FUNCTION_BLOCK", "", f'DATA_BLOCK "{self.name}_DB"',
-                "{ S7_Optimized_Access := 'TRUE' }", "VERSION : 0.1", "NON_RETAIN",
-                f'"{self.name}"', "BEGIN", "END_DATA_BLOCK", ""]  # fmt: skip
+        out += [
+            "END_FUNCTION_BLOCK",
+            "",
+            f'DATA_BLOCK "{self.name}_DB"',
+            "{ S7_Optimized_Access := 'TRUE' }",
+            "VERSION : 0.1",
+            "NON_RETAIN",
+            f'"{self.name}"',
+            "BEGIN",
+            "END_DATA_BLOCK",
+            "",
+        ]
         return "\n".join(out)
 
 

@@ -161,8 +161,10 @@ def _axis(index: int, joint) -> AxisSpec:
     for key, value in zip(("max_velocity", "max_acceleration", "max_jerk"), rates, strict=True):
         if not (math.isfinite(value) and value > 0):
             raise ValueError(f"joint {joint.name}: {key} must be positive, got {value!r}")
-    status = {k: getattr(joint, f"{k}_status", "") for k in ("max_velocity", "max_acceleration",
-                                                             "max_jerk", "home")}  # fmt: skip
+    status = {
+        k: getattr(joint, f"{k}_status", "")
+        for k in ("max_velocity", "max_acceleration", "max_jerk", "home")
+    }
     sources = dict(getattr(joint, "sources", {}) or {})
     return AxisSpec(
         name=f"Axis{index + 1}",
@@ -188,8 +190,10 @@ def machine_spec(arm) -> MachineSpec:
     the machine has no name for."""
     unknown = [n for n in arm.inputs if n not in TARGET_NAMES]
     if unknown:
-        raise ValueError(f"arm {arm.name}: no machine input for the closed form's "
-                         f"{', '.join(unknown)} (known: {', '.join(TARGET_NAMES)})")  # fmt: skip
+        raise ValueError(
+            f"arm {arm.name}: no machine input for the closed form's "
+            f"{', '.join(unknown)} (known: {', '.join(TARGET_NAMES)})"
+        )
     axes = tuple(_axis(k, j) for k, j in enumerate(arm.description.joints))
     return MachineSpec(
         arm=arm.name,
