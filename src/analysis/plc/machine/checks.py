@@ -1,9 +1,9 @@
 """The checks of a machine run, each a function over a :class:`Trace` (one row per cycle: ``t``
 [s], ``q`` and ``v`` (cycles, joints) in joint units, deg or mm, per second, and the outputs by
-name), returning its failures, one line each (an empty list: it holds). The scenarios that name
-them are :mod:`.scenarios`; the bounds come from :mod:`.profile`, computed apart from any
-engine. Used on the ST engine here and, by the same definitions, on the S7-200 evaluator and
-awlsim.
+name), returning its failures, one line each (an empty list: it holds). The scenarios that
+name them are :mod:`.scenarios` (:func:`~.scenarios.check` runs a scenario's); the bounds come
+from :mod:`.profile`, computed apart from any engine. Used on the ST engine here and, by the
+same definitions, on the S7-200 evaluator and awlsim.
 """
 
 from __future__ import annotations
@@ -20,7 +20,6 @@ from analysis.plc.machine.spec import MachineSpec
 
 __all__ = [
     "Trace",
-    "check",
     "check_final",
     "check_limits",
     "check_outputs",
@@ -262,31 +261,3 @@ def check_outputs(trace: Trace, expected) -> list[str]:
         if got != value:
             out.append(f"{name} = {got:g} at t = {t:g} s, expected {value:g}")
     return out
-
-
-def check(
-    scenario: Scenario, trace: Trace, spec: MachineSpec, arrive_s: float | None = None
-) -> list[str]:
-    """Every check ``scenario`` names (module docstring); the failures, each one line.
-    ``arrive_s``: how far apart the joints may arrive (default one cycle)."""
-    e = scenario.expect
-    out = check_limits(trace, spec)
-    if e.final is not None:
-        out += check_final(trace, spec, e.final)
-    for t0, t1 in e.still:
-        out += check_still(trace, spec, t0, t1)
-    if e.stop_t is not None:
-        out += check_stop(trace, spec, e.stop_t, e.stop_until)
-    out += check_short_way(trace, spec)
-    if e.sync:
-        segs = motion_segments(trace)
-        segs = segs[-1:] if e.sync == "last" else segs
-        k_stop = trace.at(e.stop_t) if e.stop_t is not None else None
-        for seg in segs:
-            if k_stop is not None and seg[0] <= k_stop <= seg[1]:
-                continue  # a stopped move
-            if not np.all(np.abs(trace.v[seg[0]]) < 1e-9) or seg[1] >= len(trace.t) - 1:
-                continue  # not from rest (a halted one continues), or still moving at the end
-            out += check_sync(trace, spec, seg, arrive_s)
-    out += check_outputs(trace, e.outputs)
-    return [f"{scenario.name}: {m}" for m in out]

@@ -40,7 +40,6 @@ import numpy as np
 from analysis.kinematics.status import Status
 from analysis.plc.machine.checks import (
     Trace,
-    check,
     check_final,
     check_limits,
     check_outputs,
@@ -354,3 +353,31 @@ def _limit_target(arm, spec, rng: np.random.Generator):
     status = np.asarray(arm.solve(p, arm.branches[0]).status)
     hits = np.flatnonzero(status == Status.JOINT_LIMITS)
     return _user_target(arm, q[hits[0]]) if len(hits) else None
+
+
+def check(
+    scenario: Scenario, trace: Trace, spec: MachineSpec, arrive_s: float | None = None
+) -> list[str]:
+    """Every check ``scenario`` names (module docstring); the failures, each one line.
+    ``arrive_s``: how far apart the joints may arrive (default one cycle)."""
+    e = scenario.expect
+    out = check_limits(trace, spec)
+    if e.final is not None:
+        out += check_final(trace, spec, e.final)
+    for t0, t1 in e.still:
+        out += check_still(trace, spec, t0, t1)
+    if e.stop_t is not None:
+        out += check_stop(trace, spec, e.stop_t, e.stop_until)
+    out += check_short_way(trace, spec)
+    if e.sync:
+        segs = motion_segments(trace)
+        segs = segs[-1:] if e.sync == "last" else segs
+        k_stop = trace.at(e.stop_t) if e.stop_t is not None else None
+        for seg in segs:
+            if k_stop is not None and seg[0] <= k_stop <= seg[1]:
+                continue  # a stopped move
+            if not np.all(np.abs(trace.v[seg[0]]) < 1e-9) or seg[1] >= len(trace.t) - 1:
+                continue  # not from rest (a halted one continues), or still moving at the end
+            out += check_sync(trace, spec, seg, arrive_s)
+    out += check_outputs(trace, e.outputs)
+    return [f"{scenario.name}: {m}" for m in out]
