@@ -15,6 +15,7 @@ from xml.sax.saxutils import escape, quoteattr
 
 from analysis.plc.machine.program import STEPS, machine_name, machine_text
 from analysis.plc.machine.spec import MACHINE_INPUTS, MACHINE_OUTPUTS, machine_spec
+from analysis.plc.machine.tags import signals
 
 __all__ = ["generate_machine", "machine_map", "program_pou_xml"]
 
@@ -61,6 +62,11 @@ def machine_map(spec, ik_codes, dialect: str) -> dict:
         "steps": STEPS,
         "axes": axes,
         "grip_dwell_s": spec.grip_dwell_s,
+        "grip_dwell_status": "assumed: no paper prints the gripper's closing time",
+        "signals": [
+            {"name": n, "type": t, "address": a, "comment": c, "hmi_writes": w}
+            for n, t, a, c, w in signals(spec)
+        ],
         "motion_time_unit": {
             "variable": "MotionTimeUnit",
             "plc": 1.0,

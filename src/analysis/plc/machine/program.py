@@ -36,7 +36,7 @@ from __future__ import annotations
 import re
 
 from analysis.plc.emit import fmt_real
-from analysis.plc.machine.spec import MACHINE_STATUS, MachineSpec
+from analysis.plc.machine.spec import MACHINE_INPUTS, MACHINE_OUTPUTS, MACHINE_STATUS, MachineSpec
 
 __all__ = ["STEPS", "MachinePrinter", "SclMachinePrinter", "machine_name", "machine_text"]
 
@@ -565,9 +565,18 @@ class SclMachinePrinter(MachinePrinter):
             "VERSION : 0.1",
         ]
         decl = self.declarations()
+        ins = {*MACHINE_INPUTS, *self.spec.targets}
+        outs = {*MACHINE_OUTPUTS, "AxisErrorID"}
+
+        def named(line: str, names) -> bool:
+            m = re.match(r"\s+(\w+) :", line)
+            return m is not None and m.group(1) in names
+
         axes = [ln for ln in decl if ": TO_PositioningAxis;" in ln]
-        out += ["VAR_IN_OUT", *axes, "END_VAR", "VAR"]
-        out += [ln for ln in decl if ln not in axes]
+        rest = [ln for ln in decl if ln not in axes and not named(ln, ins | outs)]
+        out += ["VAR_INPUT", *(ln for ln in decl if named(ln, ins)), "END_VAR"]
+        out += ["VAR_OUTPUT", *(ln for ln in decl if named(ln, outs)), "END_VAR"]
+        out += ["VAR_IN_OUT", *axes, "END_VAR", "VAR", *rest]
         out += ["END_VAR", "", "BEGIN"]
         out += [t + line if line else "" for line in self.body()]
         out += [
