@@ -201,6 +201,9 @@ MACHINE_ENGINE_ENV = "ANALYSIS_ST_MACHINE"
 ``bin/analysis-st-machine``, built by ``make st-engine`` beside ``analysis-st-run``)."""
 
 TIME_UNIT_VARIABLE = "MotionTimeUnit"
+CYCLE_VARIABLE = "TaskCycle"
+"""The task's cycle time [s] in a machine program: :func:`run_machine` writes the cycle there
+before the first scan too (the program plans its profiles in whole cycles of it)."""
 """Seconds per time unit of a motion block's Velocity/Acceleration/Jerk in a machine program
 (:mod:`analysis.plc.machine.program`). pyplcopen 0.21.0's ``axis::AxisModel`` plans a motion
 block's Velocity, Acceleration, Deceleration and Jerk as they are, per cycle (``FbMoveAbsolute``
@@ -327,8 +330,8 @@ def run_machine(
     """Run PROGRAM ``program`` for ``n_cycles`` cycles of ``cycle_s`` with one simulated
     axis per :class:`SimAxis` in ``axes``; ``writes`` are ``(cycle, name, value)`` stored
     before that cycle's scan (an HMI writing between scans); ``outputs`` the variables traced.
-    If the program declares :data:`TIME_UNIT_VARIABLE`, the cycle time is written there
-    before the first scan. Raises :class:`EngineFault` (with the trace so far) when a scan
+    If the program declares :data:`TIME_UNIT_VARIABLE` or :data:`CYCLE_VARIABLE`, the cycle
+    time [s] is written there before the first scan. Raises :class:`EngineFault` (with the trace so far) when a scan
     faults, ValueError when the program does not compile or a name is not its variable."""
     engine = engine or machine_engine_path()
     cycle_ns = round(cycle_s * 1e9)
@@ -336,11 +339,12 @@ def run_machine(
     rows = [(c, names.index(n), float(v)) for c, n, v in writes]
     variables = program_variables(source, program, engine)
     lower = {k.lower(): k for k in variables}
-    if TIME_UNIT_VARIABLE.lower() in lower:
-        tu = lower[TIME_UNIT_VARIABLE.lower()]
-        if tu not in names:
-            names.append(tu)
-        rows.insert(0, (0, names.index(tu), cycle_ns * 1e-9))
+    for var in (TIME_UNIT_VARIABLE, CYCLE_VARIABLE):
+        if var.lower() in lower:
+            tu = lower[var.lower()]
+            if tu not in names:
+                names.append(tu)
+            rows.insert(0, (0, names.index(tu), cycle_ns * 1e-9))
     rows.sort(key=lambda r: r[0])
     data = np.array(rows, dtype=[("c", "<i8"), ("i", "<i8"), ("v", "<f8")]).tobytes()
     axes = list(axes)

@@ -7,6 +7,7 @@ from __future__ import annotations
 import pytest
 from tests.plc.machine.conftest import machine, scenario_set
 
+from analysis.plc.machine.program import lreal
 from analysis.plc.machine.run import run_scenario
 from analysis.plc.machine.scenarios import check
 
@@ -36,10 +37,15 @@ BREAKS = {
     "stop": ("stop", "        StopLatched := TRUE;", "", "moved"),
     "stop_distance": (
         "stop",
-        "Stop1(Axis := Axis1, Execute := Phase = 40, Deceleration := LREAL#90.0 * Tu * Tu",
-        "Stop1(Axis := Axis1, Execute := Phase = 40, Deceleration := LREAL#45.0 * Tu * Tu",
+        # the stop braking at half the waist's deceleration (the grabber's max_acceleration)
+        "Stop1(Axis := Axis1, Execute := Phase = 40, Deceleration := {a} * Tu * Tu",
+        "Stop1(Axis := Axis1, Execute := Phase = 40, Deceleration := {a} * LREAL#0.5 * Tu * Tu",
         "came to rest",
     ),
+    # the unit move not aligned to whole cycles: the engine ends the joints cycles apart
+    "aligned": ("move", "+ LREAL#0.75) * TaskCycle", "+ LREAL#0.0) * TaskCycle", "apart"),
+    # half-cycle phases: the engine's correction quintic overshoots the goal and comes back
+    "overshoot": ("move", "+ LREAL#0.75) * TaskCycle", "+ LREAL#0.5) * TaskCycle", "moved back"),
     "refusal": ("unreachable", "IF NOT Ik.reachable THEN", "IF FALSE THEN", "Status"),
     "homed": ("power_home", "ELSIF NOT Homed THEN", "ELSIF FALSE THEN", "moved"),
     # the stop circuit watched only while the machine moves, and Reset clearing it whatever
@@ -57,12 +63,18 @@ BREAKS = {
 def test_a_broken_program_fails_its_check(machine_engine, prop):
     name, old, new, word = BREAKS[prop]
     _, spec, source, program, _ = machine("grabber")
+    decel = lreal(spec.axes[0].max_acceleration)
+    old, new = (tuple(x.replace("{a}", decel) for x in v) if not isinstance(v, str)
+                else v.replace("{a}", decel) for v in (old, new))  # fmt: skip
     broken = source
     for o, n in zip(*((x,) if isinstance(x, str) else x for x in (old, new)), strict=True):
         assert o in source, f"the program no longer holds {o!r}"
         broken = broken.replace(o, n)
     scenario = scenario_set("grabber")[name]
     failures = check(
-        scenario, run_scenario(broken, program, spec, scenario.rows), spec, arrive_s=10.0
+        scenario,
+        run_scenario(broken, program, spec, scenario.rows),
+        spec,
+        arrive_s=None if prop == "aligned" else 10.0,
     )
     assert any(word in f for f in failures), failures

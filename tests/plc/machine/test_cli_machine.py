@@ -83,7 +83,7 @@ def test_scenario_to_trace(grabber, capsys, suffix):
     sc = scenario_set("grabber")["move"]
     tr = Trace.from_csv(text)
     assert len(tr.t) == round((sc.end_s + 2.0) / 0.004) + 1 and tr.t[1] == 0.004
-    assert check(sc, tr, machine("grabber")[1], arrive_s=1.0) == []
+    assert check(sc, tr, machine("grabber")[1]) == []
 
 
 def test_cycle_and_settle(grabber, capsys):

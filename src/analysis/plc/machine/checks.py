@@ -149,7 +149,8 @@ def check_sync(
     1.5 times the synchronised one (:func:`.profile.sync_time`) plus two cycles; its peak
     velocity is at most the synchronised profile's ``Vn |d_i|`` (:func:`.profile.
     sync_limits`) and the peaks are in proportion to the distances within 2% (the velocities
-    scaled to the longest move); the joints arrive within ``arrive_s`` (default one cycle)."""
+    scaled to the longest move); no joint moves back (no overshoot); the joints arrive within
+    ``arrive_s`` (default one cycle)."""
     i0, i1 = seg
     dt, (v, a, j) = trace.cycle_s, _limits(spec)
     arrive_s = dt if arrive_s is None else arrive_s
@@ -173,6 +174,12 @@ def check_sync(
             )
         if took > 1.5 * t_sync + 2 * dt:
             out.append(f"{joint} took {took:.3f} s, the synchronised profile {t_sync:.3f} s")
+        back = np.diff(trace.q[i0 : i1 + 1, k]) * np.sign(d[k])
+        if back.min() < -1e-9:
+            out.append(
+                f"{joint} moved back {-back.min():.3g} {unit} in one cycle during its "
+                "move (an overshoot)"
+            )
         if peaks[k] > vn * abs(d[k]) * (1 + 1e-6) + 1e-9:
             out.append(
                 f"{joint} peaked at {peaks[k]:.6g} {unit}/s, above the synchronised "

@@ -212,14 +212,14 @@ def _axes(variables: dict[str, str], mapdoc: dict | None):
 
 
 def _outputs(variables, written, mapdoc) -> list[str]:
-    from analysis.plc.st_engine import TIME_UNIT_VARIABLE
+    from analysis.plc.st_engine import CYCLE_VARIABLE, TIME_UNIT_VARIABLE
 
     machine = (mapdoc or {}).get("machine") or {}
     if machine.get("outputs"):
         return [
             _variable(variables, n, "the program", "MAP.json output")[0] for n in machine["outputs"]
         ]
-    skip = {w.lower() for w in written} | {TIME_UNIT_VARIABLE.lower()}
+    skip = {w.lower() for w in written} | {TIME_UNIT_VARIABLE.lower(), CYCLE_VARIABLE.lower()}
     return [n for n, t in variables.items() if t in SCALARS and n.lower() not in skip]
 
 

@@ -15,8 +15,10 @@ One ``PROGRAM MACHINE_<ARM>`` (ST) or ``FUNCTION_BLOCK "MACHINE_<ARM>"`` (SCL). 
    within +-180 deg of where it is), and every axis gets the same normalised profile: the
    velocity, acceleration and jerk limits of the path parameter s in [0, 1] are the smallest
    ``limit_i / distance_i`` over the moving joints, and joint i moves with those times its
-   distance, so every joint is within its own limits and all arrive together (a new Start
-   during a move halts every axis with MC_Halt first, then plans from where they stopped);
+   distance, so every joint is within its own limits and all arrive together; the unit
+   move's phases are lengthened to whole task cycles (:meth:`MachinePrinter.align`), so a
+   planner that works in cycles ends every joint on the same one (a new Start during a move
+   halts every axis with MC_Halt first, then plans from where they stopped);
 4. Home: MC_Home per axis (Position = the description's home position; on TIA, Mode 0 for a
    set position, 3 for a reference switch); Start before Homed is refused (status 101);
 5. the gripper output (Gripper) follows Grip at standstill only, then a dwell (TON) before
@@ -26,6 +28,7 @@ Units (the ST engine's axes take a motion block's Velocity, Acceleration and Jer
 the vendors' per second): every such input is written as ``value * MotionTimeUnit**k``, with
 ``MotionTimeUnit`` 1.0 (per second) on a PLC; ``stl-run`` writes the cycle time there before
 the first scan (:mod:`analysis.plc.st_engine`). That is the one place the unit is converted.
+``TaskCycle`` is the task's cycle time [s] (4 ms unless set; ``stl-run`` writes its cycle).
 
 Why by hand: no library prints PLCopen motion programs; the text is held by the ST engine
 (scenarios in :mod:`analysis.plc.machine.scenarios`).
@@ -36,9 +39,9 @@ from __future__ import annotations
 import re
 
 from analysis.plc.emit import fmt_real
-from analysis.plc.machine.spec import MACHINE_INPUTS, MACHINE_OUTPUTS, MACHINE_STATUS, MachineSpec
+from analysis.plc.machine.spec import MACHINE_STATUS, MachineSpec
 
-__all__ = ["STEPS", "MachinePrinter", "SclMachinePrinter", "machine_name", "machine_text"]
+__all__ = ["STEPS", "MachinePrinter", "lreal", "machine_name", "machine_text"]
 
 STEPS = {
     "IDLE": 0,
@@ -56,6 +59,13 @@ _CODE = {word: code for code, (word, _, _) in MACHINE_STATUS.items()}
 
 def machine_name(spec: MachineSpec) -> str:
     return "MACHINE_" + re.sub(r"\W", "_", spec.arm).upper()
+
+
+def cycles_up(x: str, cycle: str) -> str:
+    """ST: the whole number of ``cycle`` s that ``x`` s rounds up to (a tolerance of 1e-9
+    cycle), as an LREAL."""
+    n = f"LREAL_TO_DINT({x} / {cycle} + LREAL#0.5 - LREAL#1.0E-9)"
+    return f"DINT_TO_LREAL({n})"
 
 
 def lreal(v: float) -> str:
@@ -119,6 +129,8 @@ class MachinePrinter:
                 "and Jerk: 1.0 (per second) on a PLC"
             ),
             f"{t}MotionTimeUnit : LREAL := LREAL#1.0;",
+            self.comment("the task's cycle time [s]: motion profiles are planned in whole cycles"),
+            f"{t}TaskCycle : LREAL := LREAL#0.004;",
             f"{t}GripDwell : TIME := T#{round(s.grip_dwell_s * 1000)}ms;",
         ]
         out += self.axis_declarations()
@@ -133,7 +145,20 @@ class MachinePrinter:
             f"{t}AllDone : BOOL;",
         ]
         out += [f"{t}Latched{n[6:]} : REAL;" for n in s.targets]
-        out += [f"{t}{n} : LREAL;" for n in ("Tu", "Scale", "NormV", "NormA", "NormJ")]
+        out += [
+            f"{t}{n} : LREAL;"
+            for n in (
+                "Tu",
+                "Scale",
+                "NormV",
+                "NormA",
+                "NormJ",
+                "PhaseJ",
+                "PhaseA",
+                "PhaseC",
+                "Peak",
+            )
+        ]
         out += [
             f"{t}StartEdge : R_TRIG;",
             f"{t}HomeEdge : R_TRIG;",
@@ -414,7 +439,54 @@ class MachinePrinter:
             ):
                 out.append(f"{t}{v(norm)} := MIN({v(norm)}, {lreal(lim)} / {dist});")
             out.append("END_IF;")
-        return out
+        return out + self.align()
+
+    def align(self) -> list[str]:
+        """The unit move's S-curve (jerk, constant acceleration, cruise phases of the path
+        parameter s in [0, 1] within NormV, NormA, NormJ) with each phase lengthened to whole
+        task cycles and three quarters, and the limits that give exactly those phases: a
+        planner that works in whole cycles (the ST engine's; a PLC's motion kernel) then ends
+        every joint's scaled copy of it on the same cycle, whatever its rounding of the
+        scaled numbers (each phase ``x.75`` cycles: floored or ceiled, never on a knife's
+        edge). Costs at most a cycle per phase; never exceeds a limit (phases only grow)."""
+        v, t = self.v, self.indent
+        nv, na, nj = v("NormV"), v("NormA"), v("NormJ")
+        tj, ta, tc, vp, tk = v("PhaseJ"), v("PhaseA"), v("PhaseC"), v("Peak"), v("TaskCycle")
+        one = "LREAL#1.0"
+        lines = [
+            self.comment("the unit move's phases, each lengthened to whole task cycles + 3/4"),
+            f"IF {nv} < LREAL#1.0E29 THEN",
+            f"{t}{tj} := {na} / {nj};",
+            f"{t}IF {nv} < {na} * {tj} THEN",
+            f"{t}{t}{tj} := SQRT({nv} / {nj});",
+            f"{t}END_IF;",
+            f"{t}{ta} := MAX({nv} / {na} - {tj}, LREAL#0.0);",
+            f"{t}{tc} := {one} / {nv} - (LREAL#2.0 * {tj} + {ta});",
+            f"{t}IF {tc} < LREAL#0.0 THEN",
+            self.comment("the peak velocity is below NormV: its phases"),
+            f"{t}{t}{tj} := {na} / {nj};",
+            f"{t}{t}{vp} := {na} * (SQRT({tj} * {tj} + LREAL#4.0 / {na}) - {tj}) / LREAL#2.0;",
+            f"{t}{t}IF {vp} < {na} * {tj} THEN",
+            f"{t}{t}{t}{vp} := EXP(LN(SQRT({nj}) / LREAL#2.0) * LREAL#2.0 / LREAL#3.0);",
+            f"{t}{t}{t}{tj} := SQRT({vp} / {nj});",
+            f"{t}{t}END_IF;",
+            f"{t}{t}{ta} := MAX({vp} / {na} - {tj}, LREAL#0.0);",
+            f"{t}{t}{tc} := LREAL#0.0;",
+            f"{t}END_IF;",
+        ]
+        for ph in (tj, ta, tc):
+            lines += [
+                f"{t}IF {ph} > LREAL#0.0 THEN",
+                f"{t}{t}{ph} := ({cycles_up(ph, tk)} + LREAL#0.75) * {tk};",
+                f"{t}END_IF;",
+            ]
+        return [
+            *lines,
+            f"{t}{nv} := {one} / (LREAL#2.0 * {tj} + {ta} + {tc});",
+            f"{t}{na} := {nv} / ({tj} + {ta});",
+            f"{t}{nj} := {na} / {tj};",
+            "END_IF;",
+        ]
 
     def drive_axes(self) -> list[str]:
         v, st, out = self.v, STEPS, [""]
@@ -492,109 +564,9 @@ class MachinePrinter:
         return "\n".join(out)
 
 
-class SclMachinePrinter(MachinePrinter):
-    """Siemens SCL for TIA Portal (S7-1500 technology objects): the same sequence as a
-    function block with the axes as in/out parameters (TO_PositioningAxis), MC_Halt for the
-    stop (TIA has no MC_Stop), MC_Home's Mode (0 set position, 3 reference switch), the
-    position and error read from the technology object."""
-
-    dialect = "scl"
-
-    def v(self, name: str) -> str:
-        return f"#{name}"
-
-    def axis_type(self) -> str:
-        return "TO_PositioningAxis"
-
-    def fb_type(self, kind: str) -> str:
-        return {"TON": "TON_TIME"}.get(kind, kind.upper())
-
-    def stop_block(self) -> str:
-        return "MC_Halt"
-
-    def read_declarations(self, k: str) -> list[str]:
-        return []
-
-    def read_axis(self, k: str, axis: str) -> list[str]:
-        return [f"#Pos{k} := {self.v(axis)}.ActualPosition;"]
-
-    def axis_fault(self, k: str) -> str:
-        errs = " OR ".join(f"#{fb}{k}.Error" for fb in ("Power", "Homing", "Move", "Halt", "Stop"))
-        return f"{self.v('Axis' + k)}.StatusWord.%X1 OR {errs}"
-
-    def latches(self) -> list[str]:
-        out = super().latches()
-        return [
-            ln.replace(f"#ReadErr{k}.AxisErrorID", f"#Axis{k}.ErrorDetail.Number")
-            for ln in out
-            for k in [self._k(ln)]
-        ]
-
-    @staticmethod
-    def _k(line: str) -> str:
-        m = re.search(r"#ReadErr(\d+)", line)
-        return m.group(1) if m else ""
-
-    def home_call(self, k: str, ax: str, a) -> list[str]:
-        mode = 3 if a.home_mode == "switch" else 0
-        return [
-            f"#Homing{k}(Axis := {ax}, Execute := #Phase = {STEPS['HOMING']}, Position := "
-            f"{lreal(a.home_position)}, Mode := {mode});"
-        ]
-
-    def stop_call(self, k: str, ax: str, a) -> list[str]:
-        return [
-            f"#Stop{k}(Axis := {ax}, Execute := #Phase = {STEPS['STOPPED']}, Deceleration := "
-            f"{lreal(a.max_acceleration)} * #Tu * #Tu, Jerk := {lreal(a.max_jerk)} * #Tu * "
-            "#Tu * #Tu);"
-        ]
-
-    def drive_axes(self) -> list[str]:
-        out = super().drive_axes()
-        return [
-            re.sub(r"\(#ReadErr(\d+)\.AxisErrorID <> 0\)", r"#Axis\1.StatusWord.%X1", ln)
-            for ln in out
-        ]
-
-    def text(self) -> str:
-        t = self.indent
-        out = [
-            f'FUNCTION_BLOCK "{self.name}"',
-            f"TITLE = machine of the {self.spec.title} ({self.spec.arm})",
-            "{ S7_Optimized_Access := 'TRUE' }",
-            "VERSION : 0.1",
-        ]
-        decl = self.declarations()
-        ins = {*MACHINE_INPUTS, *self.spec.targets}
-        outs = {*MACHINE_OUTPUTS, "AxisErrorID"}
-
-        def named(line: str, names) -> bool:
-            m = re.match(r"\s+(\w+) :", line)
-            return m is not None and m.group(1) in names
-
-        axes = [ln for ln in decl if ": TO_PositioningAxis;" in ln]
-        rest = [ln for ln in decl if ln not in axes and not named(ln, ins | outs)]
-        out += ["VAR_INPUT", *(ln for ln in decl if named(ln, ins)), "END_VAR"]
-        out += ["VAR_OUTPUT", *(ln for ln in decl if named(ln, outs)), "END_VAR"]
-        out += ["VAR_IN_OUT", *axes, "END_VAR", "VAR", *rest]
-        out += ["END_VAR", "", "BEGIN"]
-        out += [t + line if line else "" for line in self.body()]
-        out += [
-            "END_FUNCTION_BLOCK",
-            "",
-            f'DATA_BLOCK "{self.name}_DB"',
-            "{ S7_Optimized_Access := 'TRUE' }",
-            "VERSION : 0.1",
-            "NON_RETAIN",
-            f'"{self.name}"',
-            "BEGIN",
-            "END_DATA_BLOCK",
-            "",
-        ]
-        return "\n".join(out)
-
-
 def machine_text(spec: MachineSpec, ik_block: str, dialect: str) -> str:
     """The machine program of ``spec`` calling IK block ``ik_block`` in ``dialect``."""
+    from analysis.plc.machine.program_scl import SclMachinePrinter
+
     printer = {"st": MachinePrinter, "scl": SclMachinePrinter}[dialect]
     return printer(spec, ik_block).text()
