@@ -46,7 +46,7 @@ def machine_scan_times(rounds: int = 3) -> dict:
     out = {}
     for name in ("grabber", "palletizer", "picker", "gr1"):
         arm = load_arm(name)
-        st, _ = generate("st", params=arm.params)
+        st, _ = generate(arm, "st")
         spec = machine_spec(arm)
         writes, n = schedule(_ten_seconds(arm), 0.004, 2.0)
         walls, scans, cycles = [], [], 0

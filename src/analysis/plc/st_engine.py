@@ -331,8 +331,9 @@ def run_machine(
     axis per :class:`SimAxis` in ``axes``; ``writes`` are ``(cycle, name, value)`` stored
     before that cycle's scan (an HMI writing between scans); ``outputs`` the variables traced.
     If the program declares :data:`TIME_UNIT_VARIABLE` or :data:`CYCLE_VARIABLE`, the cycle
-    time [s] is written there before the first scan. Raises :class:`EngineFault` (with the trace so far) when a scan
-    faults, ValueError when the program does not compile or a name is not its variable."""
+    time [s] is written there before the first scan. Raises :class:`EngineFault` (with the
+    trace so far) when a scan faults, ValueError when the program does not compile or a name
+    is not its variable."""
     engine = engine or machine_engine_path()
     cycle_ns = round(cycle_s * 1e9)
     names = sorted({n for _, n, _ in writes})

@@ -27,14 +27,14 @@ def machine(arm_name: str, dialect: str = "st"):
     ``dialect`` prints it (the XML read back into ST by analysis.plc.machine.xml_st)."""
     import json
 
-    from analysis.plc.machine.generate import generate_machine
+    from analysis.plc.generate import generate
     from analysis.plc.machine.program import machine_name
     from analysis.plc.machine.spec import machine_spec
     from analysis.plc.machine.xml_st import st_from_plcopen
 
     arm = load_arm(arm_name)
     spec = machine_spec(arm)
-    text, mjson = generate_machine(dialect, params=arm.params)
+    text, mjson = generate(arm, dialect)
     source = st_from_plcopen(text) if dialect == "plcopen-xml" else text
     return arm, spec, source, machine_name(spec), json.loads(mjson)
 

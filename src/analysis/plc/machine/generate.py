@@ -1,10 +1,10 @@
 """``stl --dialect st|scl|plcopen-xml``: the IK block and, beside it, the machine program
 (:mod:`.program`), with the machine's part of MAP.json.
 
-The IK block is printed by :func:`analysis.plc.st_generate.generate_st` (it stays available
-on its own: ``stl --no-motion``); the machine program follows it in the same source (ST, SCL)
-or as one more POU, ``pouType="program"``, in the PLCopen XML, whose variables are the
-program's ``localVars`` and whose body is the same ST text.
+The IK block is printed by the dialect's printer (:func:`analysis.plc.generate.generate`; it
+stays available on its own: ``stl --no-motion``); the machine program follows it in the same
+source (ST, SCL) or as one more POU, ``pouType="program"``, in the PLCopen XML, whose
+variables are the program's ``localVars`` and whose body is the same ST text.
 """
 
 from __future__ import annotations
@@ -17,7 +17,7 @@ from analysis.plc.machine.program import STEPS, machine_name, machine_text
 from analysis.plc.machine.spec import MACHINE_INPUTS, MACHINE_OUTPUTS, machine_spec
 from analysis.plc.machine.tags import signals
 
-__all__ = ["generate_machine", "machine_map", "program_pou_xml"]
+__all__ = ["machine_map", "program_pou_xml", "with_machine"]
 
 _XHTML = "http://www.w3.org/1999/xhtml"
 _ELEMENTARY = {"BOOL", "INT", "DINT", "REAL", "LREAL", "TIME"}
@@ -109,34 +109,22 @@ def program_pou_xml(st_text: str, program: str) -> str:
     )
 
 
-def _ik_block(text: str, dialect: str) -> str:
-    names = re.findall(r'^FUNCTION_BLOCK "?(\w+)"?$', text, flags=re.M)
-    if not names:
-        raise ValueError("the IK source holds no function block")
-    return names[-1]
+def with_machine(arm, dialect: str, ik, block: str):
+    """The IK block's :class:`~analysis.plc.printer.Generated` ``ik`` (dialect st, scl or
+    plcopen-xml) with the machine program beside it: after the IK block in ST and SCL, one
+    more POU (``pouType="program"``) in the XML; MAP.json gains a ``machine`` section
+    (:func:`machine_map`). ``block``: the IK function block's name."""
+    from analysis.plc.plcopen import validate_plcopen
+    from analysis.plc.printer import Generated
 
-
-def generate_machine(dialect: str, branch=None, trig=None, params=None, theta1_on_axis=None):
-    """Program text and MAP.json text: the IK block (:func:`~analysis.plc.st_generate.
-    generate_st`) and the machine program beside it, for ``dialect`` st, scl or
-    plcopen-xml; MAP.json gains a ``machine`` section (:func:`machine_map`)."""
-    from analysis.kinematics.arm import Arm
-    from analysis.kinematics.params import paper_params
-    from analysis.plc.st_generate import generate_st, validate_plcopen
-
-    params = params if params is not None else paper_params()
-    spec = machine_spec(Arm(params))
-    ik_st, _ = generate_st("st", branch, trig, params, theta1_on_axis)
-    ik_text, mjson = generate_st(dialect, branch, trig, params, theta1_on_axis)
-    ik_block = _ik_block(ik_st, "st")
-    doc = json.loads(mjson)
+    spec = machine_spec(arm)
+    doc = json.loads(ik.map)
     ik_codes = [int(k) for k in doc.get("status_codes", {})]
     if dialect == "plcopen-xml":
-        machine_st = machine_text(spec, ik_block, "st")
-        pou = program_pou_xml(machine_st, machine_name(spec))
-        text = ik_text.replace("</pous>", pou + "</pous>", 1)
+        pou = program_pou_xml(machine_text(spec, block, "st"), machine_name(spec))
+        text = ik.program.replace("</pous>", pou + "</pous>", 1)
         validate_plcopen(text)
     else:
-        text = ik_text.rstrip("\n") + "\n" + machine_text(spec, ik_block, dialect)
+        text = ik.program.rstrip("\n") + "\n" + machine_text(spec, block, dialect)
     doc["machine"] = machine_map(spec, ik_codes, dialect)
-    return text, json.dumps(doc, indent=2, ensure_ascii=False) + "\n"
+    return Generated(text, json.dumps(doc, indent=2, ensure_ascii=False) + "\n", ik.files)
