@@ -26,15 +26,18 @@ reaches its terminal at that scan's end, before the PLS of the next scan (the fi
 of a train leaves at PLS, not at the end of the scan). The three joints cannot arrive
 together: PTO1 is one generator switched between two drivers.
 
-What the issue's defects became:
+What the issue's defects became (the status codes and the meaning of Error and Done are the
+ST machine's, :data:`analysis.plc.machine.spec.MACHINE_STATUS`, so an HMI reads both alike):
 
-* SB2 (``StopOK`` FALSE) or ``Enable`` FALSE during a move: both trains aborted (control byte
-  0 + PLS: the System Manual's way to stop a PTO), relays off, ``Homed`` off (without a
-  pulse counter the position is lost), ``Error``, status 102. Nothing moves again until
-  ``Reset`` (which re-enables the PTO: a disabled control byte made every later PLS abort),
-  ``Home`` and ``Start``. Every PLS is preceded by its control byte (16#A0: enabled, multiple
-  segments, microseconds), and a phase ends only when its channels are idle and no abort or
-  delta error was flagged (else status 106): a move whose PLS aborted is never "reached".
+* ``StopOK`` FALSE (SB2 pressed, or its wire broken) latches a stop (102, ``Error``) until the
+  circuit is closed and ``Reset``; during a move it aborts both trains (control byte 0 +
+  PLS: the System Manual's way to stop a PTO), relays off, ``Homed`` off (without a pulse
+  counter the position is lost: ``Home`` before the next ``Start``, status 101). ``Enable``
+  FALSE during a move aborts it the same way, without a latch. Reset re-enables the PTO (a
+  disabled control byte made every later PLS abort); every PLS is preceded by its control
+  byte (16#A0: enabled, multiple segments, microseconds); a phase ends only when its
+  channels are idle and no abort or delta error was flagged (else a fault latched, 103): a
+  move whose PLS aborted is never "reached".
 * Directions and relays one scan before PLS (above).
 * The +-180 deg cut: the move is ``target - position`` in counts; for an unlimited joint
   (:attr:`~analysis.kinematics.description.JointSpec.unlimited`) it is brought into half a
@@ -43,10 +46,11 @@ What the issue's defects became:
 * Ramps: multi-segment PTO profiles from the joint's ``max_velocity`` and
   ``max_acceleration`` (:mod:`.profile`); ramp level 0..m tables per joint, written on the
   first scan, the plateau's count filled in at Start.
-* Start before ``Homed`` is refused (status 100); so is Start while moving (104: the PTO
-  cannot re-plan a running profile, and the position mid-move is unknown), with the stop
-  circuit open (101), an error latched (105), ``Enable`` FALSE (103), and the IK's refusals
-  (its own status: unreachable, NaN, joint limits) - no axis moves.
+* Refused (Status, ``Error`` on, ``Done`` off; no axis moves): Home or Start while moving
+  (104: the PTO cannot re-plan a running profile, and the position mid-move is unknown), with
+  a stop (102) or a fault (103) latched, with ``Enable`` FALSE (100); Start before ``Homed``
+  (101) and the IK's refusals (its own status: unreachable 1, joint limits 4, NaN 6). An
+  accepted command clears ``Error``.
 
 What needs I/O the paper does not list: a reference switch per joint for homing by switch
 (the description's home mode "switch" is refused here), an E-stop circuit that removes the
@@ -88,6 +92,8 @@ MOTION_MAP = {
     "entry": "V123.0",
     "start": "V123.1",
     "home": "V123.2",
+    "stopped": "V123.3",
+    "fault": "V123.4",
     "Status": "VW124",
     "pos": ("VD128", "VD132", "VD136"),
     "target": ("VD140", "VD144", "VD148"),
@@ -107,34 +113,33 @@ MACHINE_IO = {
              "(home mode 'set': Table 2 has no reference switch)"),
     "Reset": ("V121.2", "BOOL", "input",
               "HMI bit (not in Table 2); rising edge: clear the error, re-enable the PTO"),
-    "Homed": ("V122.0", "BOOL", "output", "the positions are known (homed, no stop since)"),
+    "Homed": ("V122.0", "BOOL", "output", "the positions are known (homed, no stopped move since)"),
     "Busy": ("V122.1", "BOOL", "output", "a move runs"),
-    "Done": ("V122.2", "BOOL", "output", "the last move arrived (cleared by Start)"),
-    "Error": ("V122.3", "BOOL", "output", "an error is latched: see Status; Reset clears it"),
+    "Done": ("V122.2", "BOOL", "output", "the last move arrived, or Home was taken"),
+    "Error": ("V122.3", "BOOL", "output",
+              "the last command was refused or a stop or fault is latched: see Status"),
     "Status": ("VW124", "INT", "output", "the machine's status code (status codes below)"),
 }  # fmt: skip
 """Issue 29's machine variables on the CPU 224: address, type, direction, meaning."""
 
 STATUS = {
-    0: ("ok", "ready: homed, idle or moving, no error", ""),
-    100: ("not-homed", "Start refused: the positions are not known",
-          "Arm not homed: bring it to its home marks and press Home"),
-    101: ("stop-open", "the stop circuit (SB2, StopOK) is open: nothing moves",
-          "Stop circuit open (SB2 pressed or its wire broken): close it, then Reset"),
-    102: ("stopped-moving", "a move was stopped (StopOK or Enable FALSE): the position is lost",
-          "Move stopped: position lost. Reset, Home, then Start"),
-    103: ("not-enabled", "Start or Home refused: Enable is FALSE",
-          "Axes not enabled: set Enable"),
-    104: ("busy", "Start or Home refused during a move (the PTO cannot re-plan a running "
-          "profile): the move goes on to its latched target",
-          "Moving: wait until Done, then Start again"),
-    105: ("error-latched", "Start or Home refused: an error is latched",
-          "Error latched: Reset first"),
-    106: ("pto-aborted", "a pulse train ended early (SM66.4/.5, SM76.4/.5: delta error or "
-          "abort): the position is lost", "Pulse output aborted: Reset, Home, then Start"),
+    100: ("not-powered", "Home or Start refused: Enable is FALSE",
+          "Axes not enabled: switch Enable on"),
+    101: ("not-homed", "Start refused: the positions are not known (not homed since power-up or "
+          "since a stopped move)", "Arm not homed: bring it to its home marks, press Home"),
+    102: ("stopped", "the stop circuit is open or was (StopOK FALSE: SB2 or a broken wire): a "
+          "move is aborted and its position lost; nothing moves until the circuit is closed, "
+          "Reset, Home, then Start", "Stop circuit open: close it, press Reset, then Home"),
+    103: ("axis-error", "a pulse train ended early (SM66.4/.5, SM76.4/.5: a delta error or an "
+          "abort): the position is lost; Reset, Home, then Start",
+          "Pulse output fault: press Reset, then Home"),
+    104: ("busy", "Home or Start refused during a move (the PTO cannot re-plan a running "
+          "profile): the move goes on to its latched target", "Machine busy: wait for Done"),
 }  # fmt: skip
 """The machine's own status codes (beside the IK's, which Status repeats when the IK refuses
-a Start's target): name, meaning, alarm text."""
+a Start's target): name, meaning, alarm text. The codes and their words are the ST machine's
+(:data:`analysis.plc.machine.spec.MACHINE_STATUS`); the meanings say what the S7-200 does
+differently (a stopped move loses the position)."""
 
 _WIRING = (  # joint: PTO channel, relay output (None: its own channel), direction output
     (0, None, "Q0.2"),
@@ -211,11 +216,12 @@ def _table_writes(plan: MotionPlan) -> list[str]:
     return out
 
 
-def _abort(status: int) -> list[str]:
-    """Boxes (under the stack's top): end the move as an error with ``status``."""
+def _abort(latch: str | None) -> list[str]:
+    """Boxes (under the stack's top): end the move, the position lost (Homed, Busy off),
+    relays off; ``latch`` the stop or fault latch to set (None: none)."""
     m = MOTION_MAP
-    return [f"MOVB   0, {m['step']}", f"R      {m['Homed']}, 2", f"S      {m['Error']}, 1",
-            f"MOVW   {status}, {m['Status']}", "R      Q0.3, 2"]  # fmt: skip
+    out = [f"MOVB   0, {m['step']}", f"R      {m['Homed']}, 2", "R      Q0.3, 2"]
+    return out + ([f"S      {m[latch]}, 1"] if latch else [])
 
 
 def _phase_done(step: int, channels: tuple[int, ...], then: list[str], what: str) -> list[str]:
@@ -229,7 +235,7 @@ def _phase_done(step: int, channels: tuple[int, ...], then: list[str], what: str
         *(f"A      SM{66 + 10 * c}.7" for c in channels),
         "LPS",
         f"LD     {flags[0]}", *(f"O      {f}" for f in flags[1:]), "ALD",
-        *_abort(106),
+        *_abort("fault"),
         "LPP",
         *(f"AN     {f}" for f in flags),
         *then,
@@ -245,10 +251,21 @@ def _pls(j: int, plan: MotionPlan) -> list[str]:
 
 def _refuse(req: str, cond: list[str], status: str) -> list[str]:
     """A request bit refused when ``cond`` holds: Status := ``status`` (a code, or the IK's
-    status double word: DTI), the request dropped."""
+    status double word: DTI), Error on, Done off, the request dropped."""
     m = MOTION_MAP
     move = f"DTI    {status}, " if status.startswith("VD") else f"MOVW   {status}, "
-    return [f"LD     {req}", *cond, move + m["Status"], f"R      {req}, 1"]
+    return [f"LD     {req}", *cond, move + m["Status"], f"S      {m['Error']}, 1",
+            f"R      {m['Done']}, 1", f"R      {req}, 1"]  # fmt: skip
+
+
+def _refusals(req: str) -> list[str]:
+    """Home's and Start's common refusals: moving 104, a stop latched 102, a fault latched
+    103, Enable off 100."""
+    m = MOTION_MAP
+    return [*_refuse(req, [f"AB<>   {m['step']}, 0"], "104"),
+            *_refuse(req, [f"A      {m['stopped']}"], "102"),
+            *_refuse(req, [f"A      {m['fault']}"], "103"),
+            *_refuse(req, [f"AN     {m['Enable']}"], "100")]  # fmt: skip
 
 
 def _start(plan: MotionPlan, mmap) -> list[str]:
@@ -259,13 +276,10 @@ def _start(plan: MotionPlan, mmap) -> list[str]:
     out = [
         "Network // Start (SB1, I0.0): a rising edge asks for a move",
         "LD     I0.0", "EU", f"=      {m['start']}",
-        "Network // Start refused (Status; no axis moves): moving 104, stop circuit open 101, "
-        "error 105, not enabled 103, not homed 100, the IK's refusal (its own status code)",
-        *_refuse(m["start"], [f"AB<>   {m['step']}, 0"], "104"),
-        *_refuse(m["start"], ["AN     I0.1"], "101"),
-        *_refuse(m["start"], [f"A      {m['Error']}"], "105"),
-        *_refuse(m["start"], [f"AN     {m['Enable']}"], "103"),
-        *_refuse(m["start"], [f"AN     {m['Homed']}"], "100"),
+        "Network // Start refused (Status, Error; no axis moves): moving 104, a stop latched "
+        "102, a fault latched 103, Enable off 100, not homed 101, the IK's refusal (its status)",
+        *_refusals(m["start"]),
+        *_refuse(m["start"], [f"AN     {m['Homed']}"], "101"),
         *_refuse(m["start"], [f"AN     {ok}"], ik_status),
         "Network // Start: latch the targets (c1..c3: a target typed later changes nothing of "
         "this move) and the moves d = target - position",
@@ -307,8 +321,8 @@ def _start(plan: MotionPlan, mmap) -> list[str]:
     out += [
         "Network // Start accepted: phase A prepared (KM1 on: PTO1 -> shoulder; KM2 off), busy",
         f"LD     {m['start']}", "S      Q0.3, 1", "R      Q0.4, 1", f"MOVB   1, {m['step']}",
-        f"S      {m['Busy']}, 1", f"R      {m['Done']}, 1", f"MOVW   0, {m['Status']}",
-        f"R      {m['start']}, 1",
+        f"S      {m['Busy']}, 1", f"R      {m['Done']}, 1", f"R      {m['Error']}, 1",
+        f"MOVW   0, {m['Status']}", f"R      {m['start']}, 1",
     ]  # fmt: skip
     return out
 
@@ -343,7 +357,7 @@ def motion_networks(arm, mmap, work: dict | None = None, levels: int = 5) -> lis
         "segments in us (16#A0), idle, not homed, no error",
         "LD     SM0.0", "R      Q0.0, 8", f"MOVB   16#{CONTROL:02X}, SMB67",
         f"MOVB   16#{CONTROL:02X}, SMB77", f"MOVB   0, {m['step']}", "MOVB   0, VB122",
-        "MOVB   0, VB123", f"MOVW   100, {m['Status']}",
+        "MOVB   0, VB123", f"MOVW   0, {m['Status']}",
         *(f"MOVD   0, {p}" for p in m["pos"]),
         *_table_writes(plan),
         "Network // every scan from here",
@@ -351,7 +365,9 @@ def motion_networks(arm, mmap, work: dict | None = None, levels: int = 5) -> lis
         "Network // the stop circuit open (StopOK = I0.1, SB2 normally closed) or Enable off "
         "during a move: abort both trains (enable bit 0 + PLS), relays off, position lost",
         "LDN    I0.1", f"ON     {m['Enable']}", f"AB<>   {m['step']}, 0",
-        "MOVB   0, SMB67", "PLS    0", "MOVB   0, SMB77", "PLS    1", *_abort(102),
+        "MOVB   0, SMB67", "PLS    0", "MOVB   0, SMB77", "PLS    1", *_abort(None),
+        "Network // the stop circuit open (pressed, or a broken wire): latched until Reset",
+        "LDN    I0.1", f"S      {m['stopped']}, 1",
         *_phase_done(4, (1,), arrived, "phase B"),
         "Network // phase B prepared a scan ago (KM2 on): its first scan",
         f"LDB=   {m['step']}, 3", f"MOVB   4, {m['step']}", f"S      {m['entry']}, 1",
@@ -365,27 +381,23 @@ def motion_networks(arm, mmap, work: dict | None = None, levels: int = 5) -> lis
         *_pls(1, plan),
         "Network // phase B's first scan: PLS 1 (elbow through KM2)",
         f"LDB=   {m['step']}, 4", f"A      {m['entry']}", *_pls(2, plan),
-        "Network // Reset (HMI, rising edge) with the stop circuit closed: error cleared, the "
-        "PTO re-enabled (16#A0), its abort, overflow and delta-error bits cleared",
-        f"LD     {m['Reset']}", "EU", "A      I0.1", f"R      {m['Error']}, 1",
-        f"MOVB   16#{CONTROL:02X}, SMB67", f"MOVB   16#{CONTROL:02X}, SMB77",
-        "R      SM66.4, 3", "R      SM76.4, 3", "LPS", f"AN     {m['Homed']}",
-        f"MOVW   100, {m['Status']}", "LPP", f"A      {m['Homed']}", f"MOVW   0, {m['Status']}",
-        "Network // Home (HMI, rising edge): refused while moving 104, with an error 105, not "
-        "enabled 103",
-        f"LD     {m['Home']}", "EU", f"=      {m['home']}",
-        *_refuse(m["home"], [f"AB<>   {m['step']}, 0"], "104"),
-        *_refuse(m["home"], [f"A      {m['Error']}"], "105"),
-        *_refuse(m["home"], [f"AN     {m['Enable']}"], "103"),
+        "Network // Reset (HMI, rising edge) with the stop circuit closed: the latches and "
+        "Error cleared, the PTO re-enabled (16#A0), its abort, overflow and delta bits cleared",
+        f"LD     {m['Reset']}", "EU", "A      I0.1", f"R      {m['stopped']}, 2",
+        f"R      {m['Error']}, 1", f"MOVB   16#{CONTROL:02X}, SMB67",
+        f"MOVB   16#{CONTROL:02X}, SMB77", "R      SM66.4, 3", "R      SM76.4, 3",
+        f"MOVW   0, {m['Status']}",
+        "Network // a stop (102) or a fault (103) latched: Error, every scan until Reset",
+        f"LD     {m['stopped']}", f"O      {m['fault']}", f"S      {m['Error']}, 1",
+        f"MOVW   102, {m['Status']}", f"LD     {m['fault']}", f"MOVW   103, {m['Status']}",
+        "Network // Home (HMI, rising edge): refused while moving 104, a stop latched 102, a "
+        "fault latched 103, Enable off 100",
+        f"LD     {m['Home']}", "EU", f"=      {m['home']}", *_refusals(m["home"]),
         "Network // homed (mode 'set'): the arm stands at its home pose, the positions := its "
         "counts",
-        f"LD     {m['home']}", *home, f"S      {m['Homed']}, 1", f"MOVW   0, {m['Status']}",
-        f"R      {m['home']}, 1",
+        f"LD     {m['home']}", *home, f"S      {m['Homed']}, 1", f"S      {m['Done']}, 1",
+        f"R      {m['Error']}, 1", f"MOVW   0, {m['Status']}", f"R      {m['home']}, 1",
         *_start(plan, mmap),
-        "Network // the stop circuit open while idle: error latched (nothing moves until "
-        "Reset, then Start); a stopped move keeps its status 102",
-        "LDN    I0.1", f"AW<>   {m['Status']}, 102", f"S      {m['Error']}, 1",
-        f"MOVW   101, {m['Status']}",
         "Network // end of the scan: a step's first scan is over",
         "LD     SM0.0", f"R      {m['entry']}, 1",
     ]  # fmt: skip

@@ -27,8 +27,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from analysis.plc.machine.scenarios import Scenario
+from analysis.plc.machine.spec import machine_spec
 from analysis.plc.motion.engines import EvaluatorEngine
-from analysis.plc.motion.scenarios import Scenario
+from analysis.plc.motion.scenarios import S7Case
 from analysis.plc.paper_listings import paper_program
 from analysis.plc.stl_eval.legacy import PAPER_SYMBOLS
 
@@ -53,30 +55,32 @@ class PaperTrace:
 
 
 def run_paper(
-    scenario: Scenario,
+    case: S7Case,
     *,
     reading: str = "SM0.0",
     figures=(3, 4),
     real_inputs: bool = True,
     degrees: bool = True,
-    scan_ms: float = 20.0,
+    scan_ms: float = 40.0,
 ) -> PaperTrace:
-    """Run the paper's ``figures`` through ``scenario`` (module docstring). Rows the listings
-    have no input for (Home, Reset, Enable, jog) are ignored; SB2 (StopOK FALSE: the button
-    pressed, read by nothing) is still written to I0.1."""
+    """Run the paper's ``figures`` through ``case`` (module docstring). Rows the listings
+    have no input for (Home, Reset, Enable, jog) are ignored; SB2 is written to I0.1 as a
+    push button (TRUE while pressed: StopOK FALSE), and read by nothing."""
     if reading not in ("SM0.0", "SM0.1"):
         raise ValueError(f"reading {reading!r}: 上电置1 is read as SM0.0 or SM0.1")
     text = paper_program((100, 100, 600), figures, real_inputs, _VDD0, degrees)
     eng = EvaluatorEngine(text, scan_ms=scan_ms, symbols={**PAPER_SYMBOLS, "上电置1": reading})
-    rows = sorted(scenario.rows, key=lambda r: r[0])
+    rows = sorted(case.scenario.rows, key=lambda r: r[0])
     wanted = [k for k, f in (("c1", 4), ("c2", 5), ("c3", 6)) if f in figures]
     ts, out, i = [], {k: [] for k in wanted}, 0
-    while eng.time < scenario.end - 1e-9:
+    while eng.time < case.end - 1e-9:
         while i < len(rows) and rows[i][0] <= eng.time + 1e-9:
             _t, name, value = rows[i]
             if name in _IO:
                 addr, typ = _IO[name]
-                eng.write(typ, addr, (not value) if name == "StopOK" else value)  # SB2: NO
+                if typ == "BOOL":  # SB2 is a push button: TRUE while pressed (StopOK FALSE)
+                    value = not value if name == "StopOK" else bool(value)
+                eng.write(typ, addr, value)
             i += 1
         eng.scan()
         ts.append(eng.time)
@@ -103,36 +107,42 @@ def follow(t: np.ndarray, counts: np.ndarray, rate: float, start: int = 0) -> np
     return np.array(out)
 
 
-def paper_findings(
-    scenario: Scenario, stop_at: float, typed_target, reading: str = "SM0.0"
-) -> dict:
+def paper_findings(case: S7Case, stop_at: float, typed_target, reading: str = "SM0.0") -> dict:
     """The register's behaviour findings (data/registers/grabber.toml: grabber-impl-start's
-    sb2, grabber-op-target-entry, grabber-impl-absolute), executed on ``scenario``:
+    sb2, grabber-op-target-entry, grabber-impl-absolute), executed on ``case``:
 
     * ``stop_changes_nothing``: the counts with SB2 pressed at ``stop_at`` and never pressed
       are the same, scan for scan;
-    * ``target_followed``: whether c1 ever equals the count the IK gives for
-      ``typed_target`` (rounded from the float64 closed form of the paper's arm);
+    * ``target_followed``: whether c1 ever equals the waist's count the float64 IK gives for
+      ``typed_target`` (:func:`~analysis.plc.machine.scenarios.expected_joints`);
     * ``moves_before_home``: the first scan already commands a non-zero count (an absolute
       angle, with no reference input and no Home);
     * ``pls``: pulse trains issued (none: nothing reaches a driver).
     """
     from analysis.kinematics.arm import paper_arm
-    from analysis.plc.motion.scenarios import ik_counts
+    from analysis.plc.machine.scenarios import expected_joints
 
-    rows = [r for r in scenario.rows if r[1] != "StopOK"]
-    pressed = Scenario(scenario.name, (*rows, (0.0, "StopOK", True), (stop_at, "StopOK", False)),
-                       scenario.settle)  # fmt: skip
-    free = Scenario(scenario.name, (*rows, (0.0, "StopOK", True)), scenario.settle)
+    sc, end = case.scenario, case.end
+    rows = [r for r in sc.rows if r[1] != "StopOK"]
+
+    def until_end(rows_) -> S7Case:  # both runs as long as ``case``
+        return S7Case(Scenario(sc.name, sc.title, tuple(rows_), sc.expect),
+                      end - max(r[0] for r in rows_))  # fmt: skip
+
+    pressed = until_end([*rows, (0.0, "StopOK", 1.0), (stop_at, "StopOK", 0.0)])
+    free = until_end([*rows, (0.0, "StopOK", 1.0)])
     a, b = run_paper(pressed, reading=reading), run_paper(free, reading=reading)
-    want = ik_counts(paper_arm(), typed_target)
+    arm = paper_arm()
+    spec = machine_spec(arm)
+    want = expected_joints(arm, spec, tuple(typed_target))
     c1 = a.counts["c1"]
     return {
         "stop_changes_nothing": bool((a.counts["c1"] == b.counts["c1"]).all()),
-        "target_followed": bool(want is not None and (c1 == want[0]).any()),
+        "target_followed": bool(want is not None
+                                and (c1 == round(want[0] / spec.axes[0].per_pulse)).any()),
         "moves_before_home": bool(c1[0] != 0),
         "pls": a.pls,
         "c1": c1,
         "t": a.t,
         "notes": a.notes,
-    }
+    }  # fmt: skip
