@@ -429,7 +429,9 @@ def motion_uses(arm, mmap, work: dict | None = None) -> dict[str, str]:
     plan = motion_plan(arm, _table_base(mmap, work))
     uses = {m["step"]: "motion step (0 idle, 1/2 phase A prepared/running, 3/4 phase B)",
             m["entry"]: "motion: a step's first scan", m["start"]: "motion: Start requested",
-            m["home"]: "motion: Home requested"}  # fmt: skip
+            m["home"]: "motion: Home requested",
+            m["stopped"]: "motion: a stop latched (StopOK was FALSE) until Reset",
+            m["fault"]: "motion: a pulse-train fault latched until Reset"}  # fmt: skip
     for j in range(3):
         uses[m["pos"][j]] = f"motion: joint {j + 1} position [pulses]"
         uses[m["target"][j]] = f"motion: joint {j + 1} latched target [pulses]"
@@ -450,7 +452,7 @@ def motion_uses(arm, mmap, work: dict | None = None) -> dict[str, str]:
                           (6, "pipeline overflow"), (7, "idle")):  # fmt: skip
             uses[f"SM{66 + 10 * ch}.{bit}"] = f"PTO{ch} status: {what}"
     uses["VB122"] = "motion: Homed, Busy, Done, Error (cleared together at start-up)"
-    uses["VB123"] = "motion: a step's first scan, the Start and Home requests"
+    uses["VB123"] = "motion: a step's first scan, the requests, the latches (cleared at start-up)"
     for name, (addr, _t, _d, meaning) in MACHINE_IO.items():
         uses[addr] = f"{name}: {meaning}"
     uses.update({
