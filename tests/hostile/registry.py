@@ -277,10 +277,9 @@ def _toml_value(arm: str, slot: int, value) -> Outcome:
     """A length, a pulses_per_rev or a joint limit of ``data/arms/<arm>.toml``, rewritten."""
     with _toml_folder(arm, slot, value) as path, _captured() as (_out, _err, warned):
         try:
-            from analysis.kinematics.arm import Arm, Params
-            from analysis.kinematics.description import load_description
+            from analysis.kinematics.arm import load_arm
 
-            a = Arm(Params.from_description(load_description(str(path))))
+            a = load_arm(str(path))
             result = a.solve(np.array(a.from_user(default_target(arm))))
         except ValueError as exc:
             return Outcome(True, str(exc), warned=list(warned))
@@ -333,7 +332,7 @@ def s7200_program(arm: str) -> tuple[str, dict]:
     """The arm's generated S7-200 program (a file kept for the session) and its MAP.json."""
     from analysis.plc.generate import generate
 
-    text, mjson = generate("s7-200", params=arm_of(arm).params)
+    text, mjson = generate("s7-200", arm=arm_of(arm))
     path = Path(tempfile.mkdtemp(prefix="hostile-stl-run-")) / f"{arm}.awl"
     path.write_text(text, encoding="utf-8")
     return str(path), json.loads(mjson)
@@ -423,7 +422,6 @@ def _options(arm: str, slot: int, value) -> Outcome:
 @entry_point("Params.with_", "api", lambda arm: len(arm_of(arm).params) + 1,
              kind=lambda a, s: "ppr" if s == len(arm_of(a).params) else "len")  # fmt: skip
 def _params(arm: str, slot: int, value) -> Outcome:
-    from analysis.kinematics.arm import Arm
 
     a = arm_of(arm)
     names = list(a.params)
@@ -433,7 +431,7 @@ def _params(arm: str, slot: int, value) -> Outcome:
         change = {"pulses_per_rev": (value, *a.params.pulses_per_rev[1:])}
 
     def call():
-        b = Arm(a.params.with_(**change))
+        b = a.with_(**change)
         return b.solve([a.from_user(default_target(arm))], "all")
 
     return api(call)

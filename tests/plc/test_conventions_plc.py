@@ -37,7 +37,7 @@ OFFSETS = [0.0, 1e-9, -1e-9, 5e-7, -5e-7, 1e-6, -1e-6, 2e-6, -2e-6, 1e-4, -1e-4,
 def _model_run(targets, branch, dialect, trig, theta1_on_axis=None) -> RunResult:
     """What the PLC returns according to the float32 model (outputs unchanged if refused)."""
     m = predict(
-        ARM.params,
+        ARM,
         targets,
         branch,
         ops=PlcFloat32Ops(dialect, trig),
@@ -79,8 +79,7 @@ def _unit(azimuth, elevation):
 def test_reach_spheres_same_status_and_counts_as_python(direction, sphere, branch, dialect):
     """Across the folded-elbow and stretched spheres: refused where Python refuses, and no
     count a revolution off (the fold once gave PLC -2000 where Python gave +2000)."""
-    P = ARM.params
-    radius = P.reach_inner if sphere == "inner" else P.reach_outer
+    radius = ARM.geometry["reach_inner" if sphere == "inner" else "reach_outer"]
     D = radius + np.array(OFFSETS)
     _check(ARM.shoulder + D[:, None] * _unit(*direction), branch, *dialect)
 

@@ -136,12 +136,12 @@ def test_a_generated_program_leaves_the_same_memory_after_every_scan(dialect):
     from analysis.studies.gr1 import gr1_arm
 
     arm = gr1_arm()
-    text, map_json = generate(dialect, "front-up", "subroutine", params=arm.params)
+    text, map_json = generate(dialect, "front-up", "subroutine", arm=arm)
     mmap = MemoryMap.from_dict(json.loads(map_json))
     if dialect == "s7-200":
         plain, optimized = (translate_s7200(text, optimize=o).awl for o in (False, True))
     else:
-        plain, optimized = generate(dialect, "front-up", "subroutine", params=arm.params,
+        plain, optimized = generate(dialect, "front-up", "subroutine", arm=arm,
                                     optimize=False)[0], text  # fmt: skip
     assert len(optimized.splitlines()) < len(plain.splitlines())
     targets = sweep_targets(arm)[list(arm.inputs)].to_numpy()[::19][:60]

@@ -11,8 +11,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from analysis.kinematics.arm import BRANCHES
-from analysis.kinematics.params import paper_params
+from analysis.kinematics.arm import BRANCHES, paper_arm
 from analysis.plc.approx import acos_f32, atan2_f32, atan_coefficients, measure_errors
 from analysis.plc.emit import emit_s7200, fmt_real
 from analysis.plc.generate import generate
@@ -57,7 +56,7 @@ def test_golden_s7200_has_paper_structure():
 
 
 def test_no_link_length_typed_into_emitters():
-    p = paper_params().with_(L2=321.0, L3=123.0)
+    p = paper_arm().with_(L2=321.0, L3=123.0)
     text = emit_s7200(build_program(p))
     # the lengths come from the parameters: L2, L2 + L3 (the reach) and L2^2 + L3^2 (eq. 10)
     assert "321.0" in text and "444.0" in text and str(321.0**2 + 123.0**2) in text
@@ -127,9 +126,9 @@ def test_atan2_f32_quadrants_and_origin():
 
 def test_build_program_rejects_bad_options():
     with pytest.raises(ValueError, match="branch"):
-        build_program(paper_params(), "left")
+        build_program(paper_arm(), "left")
     with pytest.raises(ValueError, match="ATAN"):
-        emit_s7200(build_program(paper_params(), trig="native"))
+        emit_s7200(build_program(paper_arm(), trig="native"))
 
 
 @pytest.mark.parametrize(
@@ -225,7 +224,7 @@ def test_generated_listings_have_no_overlapping_operands(arm_name, dialect):
     from analysis.papers import grabber as paper
     from analysis.plc import stl_eval
 
-    text, _ = generate(dialect, params=load_arm(arm_name).params)
+    text, _ = generate(dialect, arm=load_arm(arm_name))
     area = "V" if dialect == "s7-200" else "M"
     v_text = text.replace(f"{area}D", "VD") if area == "M" else text
     instrs = stl_eval.parse_stl(v_text)

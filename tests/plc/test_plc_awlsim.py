@@ -15,8 +15,7 @@ import json
 import numpy as np
 import pytest
 
-from analysis.kinematics.arm import BRANCHES, Arm
-from analysis.kinematics.params import paper_params
+from analysis.kinematics.arm import BRANCHES, paper_arm
 from analysis.plc.emit import emit_s7200, emit_s7300
 from analysis.plc.generate import generate
 from analysis.plc.ir import build_program
@@ -31,11 +30,11 @@ pytestmark = pytest.mark.slow  # seconds per test: run first (tests/conftest.py)
 
 pytest.importorskip("awlsim")
 SENTINEL = -999_999
-ARM = Arm(paper_params())
+ARM = paper_arm()
 
 
 def _source(variant: str, branch: str = "front-up", with_program: bool = False):
-    P = ARM.params
+    P = ARM
     if variant.startswith("s7-300"):
         prog = build_program(P, branch, "native" if variant == "s7-300-native" else "subroutine")
         out = emit_s7300(prog), default_map("s7-300"), "s7-300"
@@ -337,7 +336,7 @@ def test_translated_call_passes_parameters_by_value():
 def test_program_with_a_waist_angle_for_the_base_axis(variant):
     """Generated with theta1_on_axis: the axis targets solved at that waist, as in Python."""
     waist = 0.5
-    P = ARM.params
+    P = ARM
     if variant.startswith("s7-300"):
         src = emit_s7300(build_program(P, "front-up", "native", theta1_on_axis=waist))
         mmap, dialect, trig = default_map("s7-300"), "s7-300", "native"

@@ -33,9 +33,9 @@ def test_emitted_text_matches_golden(dialect):
 @pytest.mark.parametrize("arm", ["grabber", "palletizer", "gr1"])
 def test_scl_is_the_st_text_in_scl_dialect(arm):
     """Undoing SCL's dialect words gives back the ST block but for the header comment."""
-    params = load_arm(arm).params
-    st, _ = generate_st("st", params=params)
-    scl, _ = generate_st("scl", params=params)
+    params = load_arm(arm)
+    st, _ = generate_st("st", arm=params)
+    scl, _ = generate_st("scl", arm=params)
     body = st[st.index("(*", 3) :]  # after the header comment
     assert scl_to_st(scl) == body.replace("VAR_TEMP", "VAR")
     assert 'DATA_BLOCK "IK_' in scl and "S7_Optimized_Access := 'TRUE'" in scl
@@ -59,7 +59,7 @@ def test_st_structure():
 
 @pytest.mark.parametrize("arm", ["grabber", "palletizer", "gr1"])
 def test_plcopen_xml_validates(arm):
-    text, _ = generate_st("plcopen-xml", params=load_arm(arm).params)
+    text, _ = generate_st("plcopen-xml", arm=load_arm(arm))
     project = validate_plcopen(text)
     pous = project.types.pous.pou
     assert [p.name for p in pous][-1] == f"IK_{arm.upper()}"
@@ -86,7 +86,7 @@ def test_cli_stl_dialects(tmp_path, arm, dialect):
     out, mp = tmp_path / "p", tmp_path / "m.json"
     rc = main(["stl", "--arm", arm, "--dialect", dialect, "-o", str(out), "--map", str(mp)])
     assert rc == 0
-    assert out.read_text("utf-8") == generate_st(dialect, params=load_arm(arm).params)[0]
+    assert out.read_text("utf-8") == generate_st(dialect, arm=load_arm(arm))[0]
     assert json.loads(mp.read_text())["dialect"] == dialect
 
 

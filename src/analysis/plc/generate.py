@@ -20,8 +20,6 @@ from __future__ import annotations
 
 import json
 
-from analysis.kinematics.arm import Params
-from analysis.kinematics.arms import closed_form
 from analysis.plc.emit import allocate, emit_s7200, emit_s7300
 from analysis.plc.ir import Program, build_program
 from analysis.plc.memmap import DIALECTS, MemoryMap, default_map
@@ -31,11 +29,8 @@ __all__ = ["generate", "input_units", "status_codes"]
 
 
 
-def input_units(params: Params) -> dict[str, str]:
+def input_units(arm) -> dict[str, str]:
     """Input name -> unit (:attr:`analysis.kinematics.arm.Arm.input_units`)."""
-    from analysis.kinematics.arm import Arm
-
-    arm = Arm(params)
     return dict(zip(arm.inputs, arm.input_units, strict=True))
 
 
@@ -53,15 +48,15 @@ def status_codes(program: Program) -> list[int]:
     return sorted(codes)
 
 
-def _startup_values(params: Params, startup_target):
+def _startup_values(arm, startup_target):
     if startup_target is None:
         return None
     if isinstance(startup_target, str):
         if startup_target != "paper":
             raise ValueError(f"startup_target {startup_target!r}: expected 'paper' or numbers")
-        start = closed_form(params.description.closed_form).startup_target(params)
+        start = arm.startup_target
         if start is None:
-            raise ValueError(f"arm {params.arm} names no example target (STARTUP_TARGET)")
+            raise ValueError(f"arm {arm.name} names no example target (STARTUP_TARGET)")
         return start
     return tuple(float(v) for v in startup_target)
 
@@ -94,7 +89,7 @@ def generate(
     branch: str | None = None,
     trig: str | None = None,
     mmap: MemoryMap | None = None,
-    params: Params | None = None,
+    arm=None,
     motion: bool = True,
     theta1_on_axis: float | None = None,
     optimize: bool = True,
@@ -113,8 +108,8 @@ def generate(
         Default: native on the S7-300, subroutine on the S7-200 (its only choice).
     mmap : MemoryMap, optional
         Addresses (default: :func:`~.memmap.default_map` for the program's I/O).
-    params : Params, optional
-        The arm and its numbers (default: the paper's arm, Table 3).
+    arm : Arm, optional
+        The arm (:class:`analysis.kinematics.arm.Arm`; default: the paper's, Table 3).
     motion : bool
         S7-200 and the paper's arm only: append the PTO motion networks.
     theta1_on_axis : float, optional
@@ -134,22 +129,22 @@ def generate(
     if dialect in ST_FAMILY:  # IEC 61131-3 ST, SCL, PLCopen XML: no addresses, no motion
         if mmap is not None:
             raise ValueError(f"a memory layout names addresses; {dialect} has none")
-        return generate_st(dialect, branch, trig, params, theta1_on_axis)
+        return generate_st(dialect, branch, trig, arm, theta1_on_axis)
     if dialect not in DIALECTS:
         raise ValueError(f"dialect {dialect!r} is not one of {', '.join((*DIALECTS, *ST_FAMILY))}")
-    if params is None:
-        from analysis.kinematics.params import paper_params
+    if arm is None:
+        from analysis.kinematics.arm import paper_arm
 
-        params = paper_params()
+        arm = paper_arm()
     trig = trig or ("native" if dialect == "s7-300" else "subroutine")
     if dialect == "s7-200" and trig == "native":
         raise ValueError("--trig native is not possible on the S7-200 (no ATAN/ACOS instruction)")
-    prog = build_program(params, branch, trig, theta1_on_axis=theta1_on_axis)
+    prog = build_program(arm, branch, trig, theta1_on_axis=theta1_on_axis)
     mmap = (mmap or default_map(dialect, prog.inputs, len(prog.outputs))).with_dialect(dialect)
     if cpu is not None:
         mmap = mmap.with_cpu(cpu)
-    start = _startup_values(params, startup_target)
-    units = input_units(params)
+    start = _startup_values(arm, startup_target)
+    units = input_units(arm)
     if start is not None and len(start) != len(prog.inputs):
         raise ValueError(
             f"startup_target has {len(start)} values; the program has {len(prog.inputs)} "
@@ -157,7 +152,7 @@ def generate(
         )
     work = allocate(prog, mmap)
     mmap.check_end(max(work.values(), default=mmap.work_base) + 3, "the work area")
-    with_motion = dialect == "s7-200" and motion and params.arm == "grabber"
+    with_motion = dialect == "s7-200" and motion and arm.name == "grabber"
     if dialect == "s7-300":
         text = emit_s7300(prog, mmap, startup_target=start, optimize=optimize)
     else:
@@ -167,9 +162,9 @@ def generate(
     uses = {"AC0": "finiteness test of the inputs (exponent bits, no REAL compare)"}
     if with_motion:
         uses.update(motion_uses())
-    joints = params.description.joints
+    joints = arm.description.joints
     outputs = {
-        f"c{j + 1}": {"joint": joints[j].name, "pulses_per_rev": params.pulses_per_rev[j]}
+        f"c{j + 1}": {"joint": joints[j].name, "pulses_per_rev": arm.params.pulses_per_rev[j]}
         for j in range(len(prog.outputs))
     }
     doc = mmap.document(
@@ -180,7 +175,7 @@ def generate(
         work=work,
         uses=uses,
         startup=_startup_doc(dialect, prog, start, units, with_motion),
-        arm=params.arm,
+        arm=arm.name,
         branch=prog.branch,
     )
     return text, json.dumps(doc, indent=2, ensure_ascii=False) + "\n"

@@ -43,7 +43,6 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from analysis.kinematics.arms import closed_form
 from analysis.kinematics.ops import CONDITIONS, OPS
 from analysis.kinematics.status import Status
 from analysis.kinematics.trace import Graph, Node, TraceOps
@@ -473,11 +472,11 @@ def _work_names(code: tuple[Instr, ...], io: set[str]) -> list[str]:
     return work
 
 
-def _notes(params, branch: str, trig: str, labels: dict) -> tuple[str, ...]:
+def _notes(arm, branch: str, trig: str, labels: dict) -> tuple[str, ...]:
     """The program header's notes: the arm, its lengths (assumed ones marked), pulses per
     revolution, the trigonometry, the status codes and the band it refuses."""
+    params, desc = arm.params, arm.description
     ppr = params.pulses_per_rev
-    desc = params.description
     assumed = set(desc.assumed)
     vals = ", ".join(
         f"{k} = {v:g} mm" + (" (assumed)" if k in assumed else "") for k, v in params.items()
@@ -490,7 +489,7 @@ def _notes(params, branch: str, trig: str, labels: dict) -> tuple[str, ...]:
         if j.kind == "prismatic"
     )
     return (
-        f"arm {params.arm}, branch {branch}; {vals}; "
+        f"arm {arm.name}, branch {branch}; {vals}; "
         + "/".join(f"{v:g}" for v in ppr)
         + " pulses/rev"
         + (" (assumed)" if ppr_assumed else "")
@@ -517,7 +516,7 @@ def _notes(params, branch: str, trig: str, labels: dict) -> tuple[str, ...]:
 
 
 def build_program(
-    params,
+    arm,
     branch: str | None = None,
     trig: str = "subroutine",
     *,
@@ -527,8 +526,8 @@ def build_program(
 
     Parameters
     ----------
-    params : Params
-        The arm's parameters (:class:`analysis.kinematics.arm.Params`, e.g. Table 3).
+    arm : Arm
+        The arm (:class:`analysis.kinematics.arm.Arm`: its closed form and numbers).
     branch : str, optional
         Default: the arm's first (the paper's) branch.
     trig : {"subroutine", "native"}
@@ -543,8 +542,8 @@ def build_program(
     joint limits) -> its status, reach flag off, c1..cn unchanged; else c1..cn = the
     pulses (eqs. 20-22), status 0, reach flag on.
     """
-    cf = closed_form(params.description.closed_form)
-    branch = branch or cf.BRANCHES[0]
+    cf = arm.closed_form
+    branch = branch or arm.branches[0]
     if trig not in TRIG:
         raise ValueError(f"trig = {trig!r}: expected one of {', '.join(TRIG)}")
     if theta1_on_axis is not None and not math.isfinite(theta1_on_axis):
@@ -552,7 +551,7 @@ def build_program(
     g = Graph()
     m = _PlcTrace(g, trig)
     p = [g.input(k) for k in cf.INPUTS]
-    body = program_body(m, params, p, branch, theta1_on_axis=theta1_on_axis)
+    body = program_body(m, arm, p, branch, theta1_on_axis=theta1_on_axis)
     refusals = body["refusals"]
     outs = {f"c{j + 1}": c for j, c in enumerate(body["c"])}
     conds = [c for _, c in refusals if isinstance(c, Node)]
@@ -575,12 +574,12 @@ def build_program(
         subs = (atan2_function(1),)
     else:
         subs = ()
-    notes = _notes(params, branch, trig, labels)
+    notes = _notes(arm, branch, trig, labels)
     return Program(
         code,
         subs,
         tuple(work),
-        params.arm,
+        arm.name,
         branch,
         trig,
         f"IK {branch}: target ({', '.join(cf.INPUTS)}) -> pulses",

@@ -184,18 +184,17 @@ def generate_st(
     dialect: str,
     branch: str | None = None,
     trig: str | None = None,
-    params=None,
+    arm=None,
     theta1_on_axis: float | None = None,
 ) -> tuple[str, str]:
     """Program text and map JSON for ``dialect`` in :data:`ST_FAMILY` (module docstring)."""
-    from analysis.kinematics.arm import Arm
-    from analysis.kinematics.params import paper_params
+    from analysis.kinematics.arm import paper_arm
 
     if dialect not in ST_FAMILY:
         raise ValueError(f"dialect {dialect!r} is not one of {', '.join(ST_FAMILY)}")
-    arm = Arm(params if params is not None else paper_params())
+    arm = arm if arm is not None else paper_arm()
     trig = trig or "function"
-    prog = build_program(arm.params, branch, trig, theta1_on_axis=theta1_on_axis)
+    prog = build_program(arm, branch, trig, theta1_on_axis=theta1_on_axis)
     units = arm.input_units
     first = arm.branches[0]
     fb = block_name(prog, first)

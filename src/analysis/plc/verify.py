@@ -334,7 +334,7 @@ def compare(
     xyz = targets[cols].to_numpy(dtype=float)
     ref, ok, _, exact = reference_pulses(arm, xyz, branch, rounding, theta1_on_axis=theta1_on_axis)
     model = predict(
-        arm.params, xyz, branch, ops=PlcFloat32Ops(dialect, trig), theta1_on_axis=theta1_on_axis
+        arm, xyz, branch, ops=PlcFloat32Ops(dialect, trig), theta1_on_axis=theta1_on_axis
     )
     model_exact = bool(
         (model.status == result.status).all()
@@ -430,7 +430,7 @@ def real_errors(arm: Arm, targets: pd.DataFrame, dialect: str = "s7-200") -> pd.
     xyz = targets[input_columns(arm)].to_numpy(dtype=float)
     rounding = "half-away" if dialect == "s7-200" else "half-even"
     _, ok, _, exact = reference_pulses(arm, xyz, arm.branches[0], rounding)
-    model = predict(arm.params, xyz, arm.branches[0], ops=PlcFloat32Ops(dialect))
+    model = predict(arm, xyz, arm.branches[0], ops=PlcFloat32Ops(dialect))
     both = ok & model.reachable
     ppr = np.asarray(arm.params.pulses_per_rev, dtype=float)
     diff = model.counts.astype(float) - exact
