@@ -375,7 +375,7 @@ def program(arm: Arm, dialect: str = "s7-200", branch: str | None = None) -> tup
     --dialect <dialect>`` writes them (default trigonometry of the dialect)."""
     from analysis.plc.generate import generate
 
-    return generate(dialect, branch=branch, params=arm.params)
+    return generate(dialect, branch=branch, arm=arm)
 
 
 class PlcRun(NamedTuple):
