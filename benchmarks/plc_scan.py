@@ -31,7 +31,7 @@ def plc_scan_times(n: int = 300) -> dict:
     for name in ("grabber", "palletizer", "gr1", "picker"):
         arm = load_arm(name)
         xyz = sweep_targets(arm)[input_columns(arm)].to_numpy(dtype=float)[:n]
-        text, map_text = generate("s7-300", arm=arm)
+        text, map_text = generate(arm, "s7-300")
         runner = AwlRunner(text, MemoryMap.from_dict(json.loads(map_text)))
         t0 = time.perf_counter()
         runner.solve(xyz)
@@ -43,7 +43,7 @@ def plc_scan_times(n: int = 300) -> dict:
                                  len(prog.outputs), xyz)  # fmt: skip
         wall = (time.perf_counter() - t0) / len(xyz)
         scan = run.scan_ns * 1e-9 / len(xyz)
-        s7200, map200 = generate("s7-200", arm=arm, motion=False)
+        s7200, map200 = generate(arm, "s7-200", motion=False)
         mmap200 = MemoryMap.from_dict(json.loads(map200))
         ev = S7200Runner(s7200, mmap200)
         t0 = time.perf_counter()

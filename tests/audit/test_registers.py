@@ -114,11 +114,11 @@ def test_items_table_is_the_register():
 def test_every_printed_cell_is_checked_once():
     """Every cell of the matrices and tables the holds rows expand is either a check that
     holds or a manifestation of a cause (seed 000)."""
-    raw = tomllib.loads((data_dir() / reg.PAPERS["grabber"]).read_text(encoding="utf-8"))
+    raw = tomllib.loads(reg.source_path("grabber").read_text(encoding="utf-8"))
     refs = [m.source for m in reg.register("grabber").manifestations]
     for c in raw["cause"]:
         for e in c.get("each", ()):
-            for _, ref, _, _ in reg._cells(e, context("grabber").paper):
+            for _, ref, _, _ in reg.each_cells(e, context("grabber").paper):
                 assert refs.count(ref) == 1, ref
 
 
@@ -126,7 +126,7 @@ def test_every_printed_cell_is_checked_once():
 def test_printed_texts_are_references_and_checks_never_hold_the_answer(paper):
     """A register refers to printed text (never retypes it), and no check spec contains the
     text it is to decide (a check cannot compare with the register's words)."""
-    raw = tomllib.loads((data_dir() / reg.PAPERS[paper]).read_text(encoding="utf-8"))
+    raw = tomllib.loads(reg.source_path(paper).read_text(encoding="utf-8"))
     for c in raw["cause"]:
         for m in c.get("manifestation", ()):
             p = m["printed"]

@@ -217,7 +217,7 @@ def test_random_arms_on_awlsim(family, tmp_path):
     bad[0, 0], bad[1, 1] = np.nan, np.inf
     t = np.concatenate([p, box, bad])
     branch = arm.branches[int(np.argmax(arm.solve(p).ok.sum(axis=0)))]  # within the limits
-    text, mjson = generate("s7-300", branch, arm=arm)
+    text, mjson = generate(arm, "s7-300", branch)
     res = sweep(text, MemoryMap.from_dict(json.loads(mjson)), t, sentinel=-999_999).result
     frame = pd.DataFrame(t, columns=input_columns(arm)).assign(kind="random")
     cmp = compare(res, frame, arm, branch, "s7-300", -999_999)

@@ -9,15 +9,17 @@ import json
 
 import pytest
 
-from analysis.kinematics.arm import load_arm
+from analysis.audit.papers.gr1.thesis import gr1_arm
+from analysis.kinematics.arm import load_arm, paper_arm
 from analysis.kinematics.status import Status
 from analysis.plc.generate import generate
 from analysis.plc.memmap import CPUS, SCHEMA, MemoryMap, default_map, map_document
-from analysis.studies.gr1 import gr1_arm
+
+PAPER = paper_arm()
 
 
 def _doc(dialect="s7-200", **kw) -> dict:
-    return json.loads(generate(dialect, **kw)[1])
+    return json.loads(generate(kw.pop("arm", PAPER), dialect, **kw).map)
 
 
 @pytest.mark.parametrize("dialect", ["s7-200", "s7-300"])
@@ -87,7 +89,7 @@ def test_the_target_cpu_limits_are_checked_at_generation():
     gr1 = gr1_arm()
     assert _doc("s7-300", arm=gr1)["memory"][-1]["last"] == 351
     with pytest.raises(ValueError, match=r"MB351, beyond the CPU 314's M memory \(MB0-MB255\)"):
-        generate("s7-300", arm=gr1, cpu="CPU 314")
+        generate(gr1, "s7-300", cpu="CPU 314")
     with pytest.raises(ValueError, match="CPU 221"):
         MemoryMap(
             "s7-200", {"px": 2048, "py": 4, "pz": 8}, default_map("s7-200").outputs, 3000, "CPU 221"
@@ -102,7 +104,7 @@ def test_the_target_cpu_limits_are_checked_at_generation():
         {"c1": 6100, "c2": 6104, "c3": 6108, "reachable": (6112, 0), "status": 6116},
         6200,
     )
-    text, mjson = generate("s7-200", mmap=big, motion=False)  # a CPU 224 has VB0-VB8191
+    text, mjson = generate(PAPER, "s7-200", mmap=big, motion=False)  # a CPU 224 has VB0-VB8191
     assert "VD6000" in text and json.loads(mjson)["inputs"]["px"] == "VD6000"
     assert MemoryMap.from_dict(json.loads(mjson)) == big
 

@@ -46,7 +46,7 @@ def targets():
 
 
 def _source(dialect: str, trig: str):
-    text, map_json = generate(dialect, "front", trig, arm=ARM)
+    text, map_json = generate(ARM, dialect, "front", trig)
     mmap = MemoryMap.from_dict(json.loads(map_json))
     assert mmap == default_map(dialect, COLS, 6)
     return (text if dialect == "s7-300" else translate_s7200(text).awl), mmap

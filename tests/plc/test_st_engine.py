@@ -88,7 +88,7 @@ def _s7_programs(arm):
         yield "s7-300", emit_s7300(build_program(P, None, "native")), default_map("s7-300")
         return
     for dialect in ("s7-200", "s7-300"):
-        text, map_text = generate(dialect, arm=arm)
+        text, map_text = generate(arm, dialect)
         awl = translate_s7200(text).awl if dialect == "s7-200" else text
         yield dialect, awl, MemoryMap.from_dict(json.loads(map_text))
 

@@ -36,6 +36,7 @@ import sys
 from pathlib import Path
 
 from analysis import validate
+from analysis.plc.dialects import DIALECTS, printer_class
 
 __all__ = ["add_stl_run", "parse_read", "parse_set", "run"]
 
@@ -184,29 +185,6 @@ class _Refused(ValueError):
         self.values = values
 
 
-def _read_as_real(loaded, addr: str) -> bool:
-    """Whether the S7-200 program reads the double word ``addr`` as a REAL anywhere (an
-    integer written there is then most likely a mistake: its bits are not its value)."""
-    m = re.fullmatch(rf"({_S7200_AREAS})D(\d+)", addr)
-    if not m:
-        return False
-    area, off = m.group(1), int(m.group(2))
-    for pou in loaded.pous.values():
-        for _, classes, opnds, builder in pou.code:
-            if builder == "call":
-                _, _, params, ops = opnds
-                pairs = [
-                    ("r" if p[2] == "REAL" else "d", o) for p, o in zip(params, ops, strict=True)
-                ]
-            else:
-                pairs = list(zip(classes, opnds, strict=False))
-            for cls, o in pairs:
-                if getattr(o, "kind", None) == "mem" and o.area == area and o.off == off:
-                    if cls[0] == "r" and not cls.endswith(">"):
-                        return True
-    return False
-
-
 def run(
     program: str,
     dialect: str,
@@ -225,52 +203,21 @@ def run(
         raise ValueError(f"--scans {scans}: at least one scan")
     if scans > 1_000_000:
         raise ValueError(f"--scans {scans}: at most 1,000,000 scans")
-    if cpu is not None and dialect != "s7-200":
-        raise ValueError("--cpu applies to --dialect s7-200 (awlsim's M area is 2048 bytes)")
+    cls = printer_class(dialect)
     if cpu is not None:
-        from analysis.plc.memmap import cpu_name
-
-        cpu = cpu_name(cpu, "s7-200")  # --cpu 224 means the CPU 224
+        cpu = cls.session_cpu(cpu)  # --cpu 224 means the CPU 224
     writes = [parse_set(s, dialect) for s in sets]
     wanted = [parse_read(r, dialect) for r in reads]
     if not wanted:
         raise ValueError("nothing to read: give at least one --read ADDRESS:TYPE")
-    if dialect == "s7-200":
-        from analysis.plc.stl_eval import S7200, load_program
-        from analysis.plc.stl_eval.legacy import PAPER_SYMBOLS
-
-        loaded = load_program(program, symbols=PAPER_SYMBOLS, cpu=cpu, source=source)
-        plc = S7200(loaded)
-        for addr, typ, v, explicit in writes:
-            if typ == "DINT" and not explicit and _read_as_real(loaded, addr):
-                raise ValueError(
-                    f"--set {addr}={v}: the program reads {addr} as a REAL; write {v}.0 (an "
-                    f"integer would store its bit pattern, {v} -> a REAL of about "
-                    f"{_bits_as_real(v):.3g}), or {addr}={v}:DINT to store those bits"
-                )
-            plc.write(typ, addr, v)
-        plc.scan(scans)
-        values = {a: plc.read(t, a) for a, t in wanted}
-        if plc.fault is not None:
-            raise _Refused(f"the CPU went to STOP: {plc.fault}", values)
-        if plc.stopped_by:
-            raise _Refused(f"the CPU went to STOP: {plc.stopped_by}", values)
-        return {"values": values}
-    from analysis.plc.memmap import default_map
-    from analysis.plc.runner import AwlRunner
-
-    r = AwlRunner(program, default_map("s7-300"), name=source, first_scan=False)
-    for addr, typ, v, _ in writes:
-        r.write(typ, addr, v)
-    for _ in range(scans):
-        r.cycle()
-    return {"values": {a: r.read(t, a) for a, t in wanted}}
-
-
-def _bits_as_real(v: int) -> float:
-    import struct
-
-    return struct.unpack(">f", struct.pack(">I", v & 0xFFFFFFFF))[0]
+    session = cls.session(program, cpu=cpu, source=source)
+    for addr, typ, v, explicit in writes:
+        session.write(typ, addr, v, explicit)
+    session.scan(scans)
+    values = {a: session.read(t, a) for a, t in wanted}
+    if session.fault is not None:
+        raise _Refused(f"the CPU went to STOP: {session.fault}", values)
+    return {"values": values}
 
 
 def _cmd_stl_run(args: argparse.Namespace) -> int:
@@ -340,7 +287,13 @@ def add_stl_run(sub, parser_class=None, formatter_class=None) -> None:
         **({"formatter_class": formatter_class} if formatter_class else {}),
     )
     p.add_argument("program", help="program file (- reads standard input)")
-    p.add_argument("--dialect", required=True, choices=("s7-200", "s7-300"))
+    engines = {name: cls for name, cls in DIALECTS.items() if cls.engine}
+    p.add_argument(
+        "--dialect",
+        required=True,
+        choices=tuple(engines),
+        help="; ".join(f"{name}: {cls.title} on {cls.engine}" for name, cls in engines.items()),
+    )
     p.add_argument(
         "--set",
         action="append",

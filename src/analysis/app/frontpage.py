@@ -129,7 +129,7 @@ def _audit_verdict() -> Verdict:
 
 def _table4_verdict() -> Verdict:
     """Table 4 recomputed row by row."""
-    from analysis.audit import table4
+    from analysis.audit.papers.grabber import table4
 
     # --- Table 4 -------------------------------------------------------------------------
     t4 = table4.report_table()
@@ -191,7 +191,7 @@ def _plc_verdict(arm) -> Verdict:
     targets = pd.DataFrame(xyz, columns=["x_mm", "y_mm", "z_mm"])
     rows = []
     for dialect, lang in (("s7-200", "STL"), ("s7-300", "AWL")):
-        text, _ = generate(dialect)
+        text, _ = generate(arm, dialect)
         src = translate_s7200(text).awl if dialect == "s7-200" else text
         res = sweep(src, default_map(dialect), xyz, sentinel=-999_999).result
         c = compare(res, targets, arm, "front-up", dialect=dialect, sentinel=-999_999)

@@ -532,7 +532,9 @@ def write_downloads(src: Path) -> list[Download]:
     """Write the PLC programs, memory maps and audit CSVs under ``src/downloads``."""
     import shutil
 
-    from analysis.audit import register, table4
+    from analysis.audit import register
+    from analysis.audit.papers.grabber import table4
+    from analysis.kinematics.arm import paper_arm
     from analysis.paths import data_dir
     from analysis.plc.generate import generate
 
@@ -542,7 +544,7 @@ def write_downloads(src: Path) -> list[Download]:
     items = []
     for dialect, kind in (("s7-200", "S7-200 STL (Micro/WIN text)"), ("s7-300", "S7-300 AWL")):
         prog, mmap = f"plc/ik_{dialect}.awl", f"plc/ik_{dialect}_map.json"
-        text, mjson = generate(dialect)
+        text, mjson = generate(paper_arm(), dialect)
         (dl / prog).write_text(text, encoding="utf-8", newline="")
         (dl / mmap).write_text(mjson, encoding="utf-8")
         how = (
@@ -584,7 +586,7 @@ def write_downloads(src: Path) -> list[Download]:
             "data/table4_audit.csv",
             "Audit tables",
             "Table 4 row by row: printed and corrected angles, FK error, verdict and cause",
-            "analysis.audit.table4.report_table()",
+            "analysis.audit.papers.grabber.table4.report_table()",
         )
     )
     return items

@@ -104,7 +104,7 @@ def predict(
     ops: Ops | None = None,
     theta1_on_axis: float | None = None,
 ) -> Prediction:
-    """Evaluate :func:`program_body` for targets (N, k) in single precision.
+    """Evaluate :func:`program_body` of ``arm`` for targets (N, k) in single precision.
 
     ``ops`` defaults to the S7-200 program (``PlcFloat32Ops("s7-200")``); pass
     ``PlcFloat32Ops("s7-300")`` for the S7-300 program with native trigonometry, or
