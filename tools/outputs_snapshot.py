@@ -13,8 +13,9 @@ targets, ``fk --json``, ``arms --json``, the compiled kernels' generated source,
 explorer's JavaScript closed forms and the golden files' regenerations. The arms: the four of
 ``data/arms``, the three D-H seed arms with their derived closed forms (the description
 without ``closed_form``) and a user's arm that names ``closed_form = "grabber"`` (README).
-The process runs every command in-process through :func:`analysis.app.cli.main`, so it takes
-about a minute.
+The process runs every command in-process through :func:`analysis.app.cli.main`. The package
+imported is the installed one (the checkout's ``src``); ``PYTHONPATH=<other>/src`` snapshots
+another version with the same script.
 """
 
 from __future__ import annotations
@@ -144,6 +145,7 @@ def snapshot(out: Path) -> None:
 
 
 if __name__ == "__main__":
-    sys.path.insert(0, str(ROOT / "src"))
     snapshot(Path(sys.argv[1]).resolve())
-    print(json.dumps({"written": sys.argv[1]}))
+    import analysis
+
+    print(json.dumps({"written": sys.argv[1], "package": str(Path(analysis.__file__).parent)}))

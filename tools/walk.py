@@ -6,8 +6,8 @@ Runs ``python -m analysis stl --arm PATH --dialect D -o FILE`` in this process u
 :func:`sys.setprofile` and records every call into a function of ``src/analysis`` made
 beneath the command's function (``_cmd_stl``), up to ``--depth`` calls below it (deeper calls
 are the math namespaces evaluating a closed form: thousands of steps that say nothing about
-the structure), leaving out the file I/O (``safe_io``) that every command shares. Consecutive calls within one
-file are one *stop*; a stop in a file the walk had already left is a *return*. The description
+the structure), leaving out the file I/O (``safe_io``) that every command shares. Consecutive
+calls within one file are one *stop*; a stop in a file the walk had already left is a *return*. The description
 is a fresh copy of ``data/arms/grabber.toml`` (so it is read, not taken from a cache).
 """
 
@@ -117,7 +117,8 @@ def main(argv=None) -> int:
     else:
         import analysis
 
-        print(f"{Path(analysis.__file__).parent}, depth {args.depth}: {len(seen)} files, {len(s)} stops, {returns} returns")
+        where = Path(analysis.__file__).parent
+        print(f"{where}, depth {args.depth}: {len(seen)} files, {len(s)} stops, {returns} returns")
         for k, v in doc["counts"].items():
             print(f"  {v} x {k}")
         for line in doc["walk"]:

@@ -17,7 +17,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from analysis.audit.papers.palletizer import method as chk
-from analysis.kinematics.arm import Arm, load_arm
+from analysis.kinematics.arm import load_arm
 from helpers import assert_points_close
 
 ATOL_MM = 1e-9
