@@ -8,7 +8,8 @@ beneath the command's function (``_cmd_stl``), up to ``--depth`` calls below it 
 are the math namespaces evaluating a closed form: thousands of steps that say nothing about
 the structure), leaving out the file I/O (``safe_io``) that every command shares. Consecutive
 calls within one file are one *stop*; a stop in a file the walk had already left is a
-*return*. The description is a fresh copy of ``data/arms/grabber.toml`` (so it is read, not taken from a cache).
+*return*. The description is a fresh copy of ``data/arms/grabber.toml`` (so it is read,
+not taken from a cache).
 """
 
 from __future__ import annotations
