@@ -157,7 +157,7 @@ class BitLogic:
 
             def f():
                 cpu.s &= ~1 | cpu.eno
-        else:  # NOP, WDR
+        else:  # NOP
 
             def f():
                 return None

@@ -15,6 +15,16 @@ SM0.5 is a 1 s clock and SM0.4 a 1 min clock of the simulated time (``scan_ms`` 
 SM0.6 alternates every scan [S2M p.496]. A fatal error (a NaN in a REAL compare [S2M p.96])
 puts the CPU in STOP; :attr:`S7200.fault` says where.
 
+Watchdog. A scan that does not end holds a real CPU until its watchdog puts it in STOP; the
+System Manual asks for WDR when a scan may exceed 300 ms [MWH s7-27sz5.htm; S2M A5E00066097-02
+p.9-146]. The evaluator does not model instruction times: it gives a scan a budget of
+statements (``watchdog``, :data:`WATCHDOG_STATEMENTS` by default, about 0.6 s of this
+evaluator), charged at every jump back (JMP to an earlier label, NEXT: the statements
+between the jump and its target) and every CALL (the subroutine's length), so straight
+code costs nothing extra per statement. Past it the CPU goes to STOP: ``watchdog at line N``
+names the jump (or call) that went over. WDR grants one new budget, up to
+:data:`MAX_SCAN_FACTOR` budgets a scan.
+
 Why hand-written (design.md asks for an established library where one fits): awlsim runs
 S7-300/400 AWL, a different machine (RLO and accumulators instead of a logic stack and
 in-place two-operand math, V memory, SM bits, different REAL error rules), and no S7-200
@@ -53,7 +63,12 @@ from analysis.plc.stl_eval.program_control import EndScan, ProgramControl, Stop
 from analysis.plc.stl_eval.pulse_output import Pto, PulseOutput
 from analysis.plc.stl_eval.syntax import StlError, Stmt
 
-__all__ = ["S7200", "Fault"]
+__all__ = ["MAX_SCAN_FACTOR", "S7200", "WATCHDOG_STATEMENTS", "Fault"]
+
+WATCHDOG_STATEMENTS = 1_000_000
+"""The evaluator's watchdog: statements a scan may run (module docstring, Watchdog)."""
+MAX_SCAN_FACTOR = 10
+"""WDR retriggers the watchdog; a scan past this many budgets stops all the same."""
 
 
 @dataclass(frozen=True)
@@ -65,9 +80,11 @@ class Fault:
     block: str
     network: int
     text: str
+    prefix: str = ""
+    """What stopped it, before the place (``"watchdog at "``)."""
 
     def __str__(self) -> str:
-        return str(
+        return self.prefix + str(
             StlError(
                 self.reason, line=self.line, block=self.block, network=self.network, text=self.text
             )
@@ -106,6 +123,7 @@ class S7200(BitLogic, Arithmetic, ProgramControl, PulseOutput):
         libraries=None,
         cpu=None,
         fragment: bool = False,
+        watchdog: int = WATCHDOG_STATEMENTS,
     ) -> None:
         if isinstance(program, str):
             program = load_program(program, symbols=symbols, libraries=libraries, cpu=cpu)
@@ -122,6 +140,10 @@ class S7200(BitLogic, Arithmetic, ProgramControl, PulseOutput):
         self.scan_ms = scan_ms
         self.pto_scans = pto_scans
         self.scans = 0
+        if not 1 <= watchdog <= 10**9:
+            raise ValueError(f"watchdog = {watchdog}: a statement budget of 1..1e9 a scan")
+        self.watchdog = watchdog
+        self._budget, self._renewals, self._wdr = watchdog, 0, False
         self.fault: Fault | None = None
         self.stopped_by: str | None = None
         self.events = {"denormal": 0, "overflow": 0}
@@ -219,6 +241,7 @@ class S7200(BitLogic, Arithmetic, ProgramControl, PulseOutput):
             sm[0] = b0
             self.s = 1 if self.fragment else 0
             self.depth = 0
+            self._budget, self._renewals, self._wdr = self.watchdog, 0, False
             try:
                 self._run("OB1")
             except EndScan:
@@ -241,9 +264,37 @@ class S7200(BitLogic, Arithmetic, ProgramControl, PulseOutput):
         try:
             while pc < n:
                 r = code[pc]()
-                pc = pc + 1 if r is None else r
+                if r is None:
+                    pc += 1
+                    continue
+                if r <= pc:  # a jump back (JMP to an earlier label, NEXT): the loop's body
+                    self.spend(pc - r + 1, key, pc)
+                pc = r
         finally:
             self._for = loops
+
+    def spend(self, n: int, key: str, idx: int) -> None:
+        """Count ``n`` statements against the scan's watchdog budget; past it, the CPU goes
+        to STOP naming statement ``idx`` of block ``key`` (module docstring, Watchdog)."""
+        self._budget -= n
+        if self._budget >= 0:
+            return
+        if self._wdr and self._renewals + 1 < MAX_SCAN_FACTOR:
+            self._wdr = False  # WDR retriggered the watchdog: a new budget
+            self._renewals += 1
+            self._budget = self.watchdog
+            return
+        pou = self.loaded.pous[key]
+        budget = f"{self.watchdog:,} statements"
+        if self._renewals:
+            budget = f"{self._renewals + 1} x {budget} (WDR retriggered it {self._renewals} times)"
+        self.fault = Fault(
+            f"the scan did not end within {budget}, the evaluator's watchdog: a loop that "
+            "never ends holds the CPU in one scan",
+            *self._where(pou.code[idx][0], pou),
+            prefix="watchdog at ",
+        )
+        raise Stop
 
     # --- binding the compiled program to this CPU's memory ----------------------------
     def _bind(self, pou: Pou):

@@ -126,7 +126,7 @@ _ins("CALL", (), "call", "manualshelf p.324 (Call Subroutine with parameters)")
 _ins("CRET", (), "cret", "MWH s7-250fn.htm (CRET: conditional return)")
 _ins("END", (), "end", "~ S7-200 END, conditional end of the main program (page not retrieved)")
 _ins("STOP", (), "stop", "~ S7-200 STOP: the CPU to STOP (page not retrieved)")
-_ins("WDR", (), "stack", "~ WDR: no effect here (no watchdog modelled)")
+_ins("WDR", (), "wdr", "MWH s7-27sz5.htm (Watchdog Reset retriggers the watchdog; cpu.spend)")
 _ins("FOR", ("i>", "i", "i"), "for", "~ S7-200 FOR INDX, INIT, FINAL (page not retrieved)")
 _ins("NEXT", (), "next", "~ S7-200 NEXT (page not retrieved)")
 _ins(

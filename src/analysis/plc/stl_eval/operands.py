@@ -20,7 +20,7 @@ import re
 import struct
 from dataclasses import dataclass
 
-from analysis.plc.stl_eval.syntax import Block
+from analysis.plc.stl_eval.syntax import Block, clip
 
 TYPES = ("BOOL", "BYTE", "INT", "WORD", "DINT", "DWORD", "REAL")
 U8 = struct.Struct(">B")
@@ -142,6 +142,11 @@ class Resolver:
             self.check_range(m.group(1), int(m.group(2)), 1, a)
             return Operand("addr", m.group(1), int(m.group(2)), text=a)
         if a.startswith("*"):
+            if a[1:].startswith("*"):
+                raise ValueError(
+                    f"{clip(a)}: a pointer to a pointer is no S7-200 operand (a pointer is "
+                    "*VDn, *ACn or *LDn)"
+                )
             if t == "x":
                 raise ValueError(f"{a}: a pointer addresses bytes, words or double words")
             ptr = self.operand(a[1:], "d")

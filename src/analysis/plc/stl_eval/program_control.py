@@ -65,6 +65,15 @@ class ProgramControl:
 
         return f
 
+    def _b_wdr(self, st, classes, o, pou, idx):
+        cpu = self
+
+        def f():
+            if cpu.s & 1:
+                cpu._wdr = True  # the next budget overrun renews the budget (cpu.spend)
+
+        return f
+
     def _b_stop(self, st, classes, o, pou, idx):
         cpu = self
 
@@ -161,8 +170,10 @@ class ProgramControl:
 
             return self._box(body, st, pou)
         callee = self.loaded.pous[key]
+        caller, cost = f"{pou.block.kind}{pou.block.number}", len(callee.code)
 
         def body():
+            cpu.spend(cost, caller, idx)  # the watchdog counts the subroutine's statements
             if cpu.depth >= 8:
                 cpu.eno = 0  # error 0008: maximum subroutine nesting exceeded
                 cpu.events.setdefault("nesting", 0)

@@ -34,7 +34,26 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
-__all__ = ["Block", "Program", "StlError", "Stmt", "Var", "parse_program"]
+__all__ = [
+    "MAX_PROGRAM_CHARS",
+    "MAX_STATEMENTS",
+    "Block",
+    "Program",
+    "StlError",
+    "Stmt",
+    "Var",
+    "clip",
+    "parse_program",
+]
+
+MAX_STATEMENTS = 65_536
+"""More statements than any S7-200 CPU's program memory holds (the largest, the CPU 226, has
+24 KB without run-mode edit (secondary: a distributor's summary of the data sheets) and
+every instruction takes at least a byte): a longer text is refused at the statement past it,
+so memory stays bounded (about 2 kB a statement once loaded)."""
+MAX_PROGRAM_CHARS = 8 * 1024 * 1024
+"""The longest program text read (a program of :data:`MAX_STATEMENTS` with comments is far
+shorter)."""
 
 _BLOCK = re.compile(
     r"^(ORGANIZATION_BLOCK|SUBROUTINE_BLOCK|INTERRUPT_BLOCK)\s+([^\s:]+)\s*:\s*(OB|SBR|INT)\s*(\d+)\s*$",
@@ -57,6 +76,18 @@ _NETWORK = re.compile(r"^NETWORK(?:\s+(\d+))?\s*(?://\s*(.*))?$", re.IGNORECASE)
 _DECL = re.compile(r"^([A-Za-z_\u0080-\uffff][\w\u0080-\uffff]*)\s*:\s*([A-Za-z]+)\s*;?\s*$")
 
 
+def clip(s: str, n: int = 60) -> str:
+    """``s`` shortened to about ``n`` characters for a message (its start and end kept, the
+    length said): a hostile operand of thousands of characters stays one readable line."""
+    if len(s) <= n:
+        return s
+    return f"{s[: n - 20]}...{s[-12:]} ({len(s):,} characters)"
+
+
+def _clip_words(message: str) -> str:
+    return re.sub(r"\S{81,}", lambda m: clip(m.group(), 80), message)
+
+
 class StlError(ValueError):
     """An S7-200 program that cannot be run as written: names the line, the block, the
     network and the statement."""
@@ -70,6 +101,8 @@ class StlError(ValueError):
         network: int | None = None,
         text: str | None = None,
     ) -> None:
+        message = _clip_words(message)
+        text = clip(text, 80) if text else text
         self.reason, self.line, self.block, self.network, self.text = (
             message,
             line,
@@ -182,6 +215,11 @@ def parse_program(
         A line outside a block, an unterminated block or VAR section, a malformed
         declaration, a block header that is not ``NAME:OBn/SBRn/INTn``.
     """
+    if len(text) > MAX_PROGRAM_CHARS:
+        raise StlError(
+            f"the program is {len(text):,} characters long; at most {MAX_PROGRAM_CHARS:,} are "
+            f"read (no S7-200 holds more than {MAX_STATEMENTS:,} statements)"
+        )
     lines = text.splitlines()
     reader = _Reader(dict(symbols or {}), lines)
     for lineno, raw in enumerate(lines, 1):
@@ -200,6 +238,7 @@ class _Reader:
         self.cur: Block | None = None
         self.section: str | None = None
         self.net = 0
+        self.n_statements = 0
         self.has_blocks = any(_BLOCK.match(ln.split("//", 1)[0].strip()) for ln in lines)
         if not self.has_blocks:
             self.cur = Block("OB", "MAIN", 1, 1)
@@ -241,6 +280,14 @@ class _Reader:
         mm = re.match(r"^(\S+)\s*(.*)$", code)
         op, rest = mm.group(1).upper(), mm.group(2)
         args = tuple(_resolve_symbol(a, self.symbols) for a in _split_operands(rest))
+        self.n_statements += 1
+        if self.n_statements > MAX_STATEMENTS:
+            raise StlError(
+                f"more than {MAX_STATEMENTS:,} statements: no S7-200 CPU's program memory "
+                "holds this program",
+                line=lineno,
+                block=cur.label,
+            )
         cur.code.append(Stmt(op, args, lineno, self.net, code))
 
     def begin_block(self, m, lineno: int, code: str) -> None:

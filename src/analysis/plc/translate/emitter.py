@@ -9,7 +9,7 @@ sequences that several statements share.
 
 from __future__ import annotations
 
-from analysis.plc.emit import fmt_real
+from analysis.plc.printer import fmt_real
 from analysis.plc.stl_eval.operands import Operand
 
 __all__ = ["Emitter"]
