@@ -390,7 +390,7 @@ def move_facts() -> dict[str, object]:
     fx = st.fx2n_vs_cubic(gr1_arm(), q[0], q[1], samples=1001)  # 1001: path lengths to 0.1 %
     s = profile("cubic", np.linspace(0.0, 1.0, 1001))[0][:, None]  # all joints together
     together = gr1_arm().fk(q[0] + (q[1] - q[0]) * s)
-    d1 = [np.linalg.norm(Arm(gr1_arm().params.with_(d1=float(h))).fk(st.printed_joints()[0])
+    d1 = [np.linalg.norm(gr1_arm().with_(d1=float(h)).fk(st.printed_joints()[0])
                          - st.thesis_poses()[0, :3]) for h in np.linspace(-200, 200, 81)]  # fmt: skip  # noqa: E501
     free = st.workspace_extents(limits=False)
 
