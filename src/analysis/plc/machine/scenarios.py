@@ -244,6 +244,26 @@ def scenarios(arm, seed: int = 29) -> dict[str, Scenario]:
         (*boot, *_start(START_T, ta, spec), *_start(mid, tb, spec), (t2, "Start", 0.0)),
         Expect(final=jb, sync="last"),
     )
+    far = tuple(x * 10.0 if k < 3 else x for k, x in enumerate(ta))
+    out["unreachable"] = _refused(
+        "unreachable", "a target out of reach", boot, far, spec, Status.OUT_OF_REACH
+    )
+    nan = (math.nan, *ta[1:])
+    out["nan"] = _refused("nan", "a NaN target", boot, nan, spec, Status.INVALID)
+    out.update(_wrap(arm, spec, boot, qw1, qw2))
+    lim = _limit_target(arm, spec, rng)
+    if lim is not None:
+        out["joint_limit"] = _refused(
+            "joint_limit", "a target beyond a joint limit", boot, lim, spec, Status.JOINT_LIMITS
+        )
+    out.update(_stops(spec, boot, ta, tb, ja, t_move, mid))
+    return out
+
+
+def _stops(spec, boot, ta, tb, ja, t_move: float, mid: float) -> dict[str, Scenario]:
+    """The stop family: the stop circuit opened mid-move (stop, reset_resume, wire_break)
+    and a drive's fault (axis_error)."""
+    out: dict[str, Scenario] = {}
     stop_rows = (*boot, *_start(START_T, ta, spec), (mid, "StopOK", 0.0))
     settle = mid + 1.5
     out["stop"] = Scenario(
@@ -280,18 +300,6 @@ def scenarios(arm, seed: int = 29) -> dict[str, Scenario]:
             outputs=((settle + 0.45, "Status", 0), (settle + 0.45, "Error", 0)),
         ),
     )
-    far = tuple(x * 10.0 if k < 3 else x for k, x in enumerate(ta))
-    out["unreachable"] = _refused(
-        "unreachable", "a target out of reach", boot, far, spec, Status.OUT_OF_REACH
-    )
-    nan = (math.nan, *ta[1:])
-    out["nan"] = _refused("nan", "a NaN target", boot, nan, spec, Status.INVALID)
-    out.update(_wrap(arm, spec, boot, qw1, qw2))
-    lim = _limit_target(arm, spec, rng)
-    if lim is not None:
-        out["joint_limit"] = _refused(
-            "joint_limit", "a target beyond a joint limit", boot, lim, spec, Status.JOINT_LIMITS
-        )
     drive = spec.axes[1].name
     out["axis_error"] = Scenario(
         "axis_error",
