@@ -71,6 +71,7 @@ __all__ = [
 ]
 
 SCENARIOS = (
+    "handling",
     "axis_error",
     "power_home",
     "move",
@@ -257,6 +258,7 @@ def scenarios(arm, seed: int = 29) -> dict[str, Scenario]:
             "joint_limit", "a target beyond a joint limit", boot, lim, spec, Status.JOINT_LIMITS
         )
     out.update(_stops(spec, boot, ta, tb, ja, t_move, mid))
+    out["handling"] = _handling(spec, boot, ta, tb, ja, jb)
     return out
 
 
@@ -343,6 +345,25 @@ def _stops(spec, boot, ta, tb, ja, t_move: float, mid: float) -> dict[str, Scena
         ),
     )
     return out
+
+
+def _handling(spec, boot, ta, tb, ja, jb) -> Scenario:
+    """A handling cycle: move to A, close the gripper (a Start during its dwell is refused,
+    nothing moves), move to B, open it."""
+    home = tuple(a.home_position for a in spec.axes)
+    at_a = START_T + 1.3 * _move_time(spec, home, ja) + 0.3
+    dwell = spec.grip_dwell_s
+    go_b = at_a + dwell + 0.2
+    at_b = go_b + 1.3 * _move_time(spec, ja, jb) + 0.3
+    end = at_b + dwell + 0.2
+    rows = (*boot, *_start(START_T, ta, spec), (at_a, "Grip", 1.0), *_start(at_a + 0.1, tb, spec),
+            *_start(go_b, tb, spec), (at_b, "Grip", 0.0), (end, "Start", 0.0))  # fmt: skip
+    return Scenario("handling", "move, grip (a Start during the dwell refused), move, release",
+        rows, Expect(final=jb, still=((at_a, go_b),), outputs=(
+            (at_a + 0.01, "Gripper", 1), (at_a + 0.01, "GripperClosed", 0),
+            (at_a + 0.01, "Busy", 1), (at_a + 0.15, "Status", 104),
+            (at_a + dwell + 0.05, "GripperClosed", 1), (at_a + dwell + 0.05, "Done", 1),
+            (end, "Gripper", 0), (end, "GripperClosed", 0), (end, "Done", 1))))  # fmt: skip
 
 
 def _refused(name, title, boot, target, spec, status) -> Scenario:
