@@ -48,8 +48,7 @@ TEMPLATES: dict[str, str] = {
     "invalid": "{target} is not a finite number",
     "branch": "{branch}: no solution on this branch ({why}); other solutions for this point are in "
     "the table",
-    "nearest": "the nearest reachable target on the line from the shoulder at {center} mm is "
-    "{nearest}",
+    "nearest": "nearest reachable on the line from the shoulder at {center} mm: {nearest}",
     "no-nearest": "no reachable target on the line from the shoulder at {center} mm",
 }
 """The explorer's sentences by situation (a status word of ``STATUS_TEXT``, ``branch`` for a
@@ -76,16 +75,19 @@ def _g(v: float) -> str:
     return f"{v:g}"
 
 
-def target_text(arm, p, decimals: int | None = None) -> str:
+def target_text(arm, p, decimals: int | None = None, *, word: bool = True) -> str:
     """``target (200, 500, 600) mm`` or ``pose (x, y, z) mm, RPY (a, b, c) deg``: the values
-    as given (``%g``) or with ``decimals`` decimals; angles [rad] shown in degrees."""
+    as given (``%g``) or with ``decimals`` decimals; angles [rad] shown in degrees; without
+    the first word (``target``, ``pose``) if not ``word``."""
     fmt = _g if decimals is None else (lambda v: f"{v:.{decimals}f}")
     mm = [fmt(float(v) + 0.0) for v, u in zip(p, arm.input_units, strict=True) if u == "mm"]
     deg = [fmt(math.degrees(float(v)) + 0.0)
            for v, u in zip(p, arm.input_units, strict=True) if u == "rad"]  # fmt: skip
     if deg:
-        return f"pose ({', '.join(mm)}) mm, RPY ({', '.join(deg)}) deg"
-    return f"target ({', '.join(mm)}) mm"
+        text = f"pose ({', '.join(mm)}) mm, RPY ({', '.join(deg)}) deg"
+    else:
+        text = f"target ({', '.join(mm)}) mm"
+    return text if word else text.split(" ", 1)[1]
 
 
 def _center(arm) -> tuple[float, float, float]:
@@ -160,7 +162,7 @@ def explain(arm, p, status: Status | int, outside: float, branch: str, *,
     >>> from analysis.kinematics.arm import paper_arm
     >>> e = explain(paper_arm(), [200, 500, 600], 1, 31.849, "front-up")
     >>> print(e)  # Table 4 row 8, which the paper marks 无解
-    out-of-reach — target (200, 500, 600) mm is 31.849 mm beyond the reach; the nearest reachable target on the line from the shoulder at (0, 0, 660) mm is target (188.244, 470.611, 603.527) mm
+    out-of-reach — target (200, 500, 600) mm is 31.849 mm beyond the reach; nearest reachable on the line from the shoulder at (0, 0, 660) mm: (188.244, 470.611, 603.527) mm
     """  # noqa: E501
     status = Status(int(status))
     fields = {"target": target_text(arm, p), "branch": branch, "why": why,
@@ -175,7 +177,7 @@ def explain(arm, p, status: Status | int, outside: float, branch: str, *,
         clause = "no-nearest" if nearest is None else "nearest"
         fields["nearest_sentence"] = TEMPLATES[clause].format_map(
             {"center": center,
-             "nearest": "" if nearest is None else target_text(arm, nearest, decimals=3)}
+             "nearest": "" if nearest is None else target_text(arm, nearest, 3, word=False)}
         )  # fmt: skip
     sentence = TEMPLATES[word].format_map(fields)
     return Explanation(word, sentence, None if nearest is None else tuple(map(float, nearest)))

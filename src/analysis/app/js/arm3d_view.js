@@ -174,7 +174,7 @@
     return true;
   }
 
-  const STALE = {line: "#b4b9be", marker: "#8a9096"}; // a pose kept without a solution: grey
+  const STALE = {line: "#8f969e", marker: "#6b7178"}; // a pose kept without a solution: grey
   const POSE_TOL_MM = 1e-6; // the kernel rounds its frames to 1e-6 mm (explore.Explorer._draw)
 
   /** Two poses [frames, target, title] that draw the same: titles equal, every coordinate
@@ -263,9 +263,10 @@
           path = inPlace ? "in-place" : "plotly";
           if (!inPlace) {
             showHidden(this.div);
+            const now = (k, part) => ((this.div.data[idx[k]] || {})[part] || {}).color || null;
             const styled = Object.assign({}, data, {
-              "line.color": style.map((c, k) => (c ? c.line : this.div.data[idx[k]].line.color)),
-              "marker.color": style.map((c, k) => (c ? c.marker : this.div.data[idx[k]].marker.color)),
+              "line.color": style.map((c, k) => (c ? c.line : now(k, "line"))),
+              "marker.color": style.map((c, k) => (c ? c.marker : now(k, "marker"))),
             });
             return this.Plotly.update(this.div, styled, Object.assign({"title.text": title}, liveCamera(this.div)), idx);
           }
@@ -289,8 +290,9 @@
   }
 
   /** The pose the printed kinematics gives: for IK, target `p` (inputs, angles in rad) on
-   * `branch`; for FK (`q` given), the joint angles. Returns {frames, target, title, q}. */
-  function pose(arm, {branch, p, q}) {
+   * `branch` (`theta1`: the waist angle on the base axis [rad], or null); for FK (`q`
+   * given), the joint angles. Returns {frames, target, title, q, status}. */
+  function pose(arm, {branch, p, q, theta1}) {
     let title = arm.title + " · ";
     let target = null;
     if (q) {
@@ -301,7 +303,7 @@
     }
     const ix = ["px", "py", "pz"].map((k) => arm.inputs.indexOf(k));
     if (ix.every((i) => i >= 0)) target = ix.map((i) => p[i]);
-    const s = arm.solve(p);
+    const s = arm.solve(p, theta1);
     const b = s.branches[branch];
     title += branch;
     if (!b || !b.ok) return {frames: null, target, q: null, title: title + " · no solution", status: s};
