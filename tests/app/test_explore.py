@@ -17,7 +17,6 @@ import pytest
 import analysis.app.explore
 import analysis.app.explore_logic
 from analysis.app.arm3d import PLOTLY_MIME
-from analysis.app.explore_logic import FK_CAPTION, IK_CAPTION
 from analysis.app.explore import (
     PoseReport,
     available_arms,
@@ -28,6 +27,7 @@ from analysis.app.explore import (
     pose_report,
     target_from_joints,
 )
+from analysis.app.explore_logic import FK_CAPTION, IK_CAPTION
 from analysis.kinematics.arm import BRANCHES, BaseAxisError, UnreachableError, load_arm
 from analysis.kinematics.params import data_dir
 from analysis.kinematics.status import STATUS_TEXT, Status
@@ -286,7 +286,8 @@ def test_explorer_sliders_update_message_table_plot(arm):
     x, y, z = ex.target_sliders
     x.value, y.value = 200.0, 500.0  # Table 4 row 8
     assert "31.849 mm beyond the reach" in ex.message.value
-    assert "out-of-reach" in ex.message.value and "nearest reachable on the line" in ex.message.value
+    assert "out-of-reach" in ex.message.value
+    assert "nearest reachable on the line" in ex.message.value
     # no layout shift: the table keeps its rows, without numbers
     assert ex.table.value.count(">out-of-reach<") == len(arm.branches) and _tip(ex) is None
     assert "nan" not in ex.message.value.lower()

@@ -40,9 +40,6 @@ import numpy.typing as npt
 
 from analysis.app.arm3d import Arm3DWidget, arm_figure, figure_bundle, workspace_box
 from analysis.app.explore_js import arm_module_js
-
-# the ``X as X`` imports: the logic's other public names, importable from here as before
-from analysis.app.explore_logic import MANIPULABILITY_UNIT as MANIPULABILITY_UNIT
 from analysis.app.explore_logic import (
     FK_CAPTION,
     IK_CAPTION,
@@ -56,6 +53,9 @@ from analysis.app.explore_logic import (
     pose_report,
     target_from_joints,
 )
+
+# the ``X as X`` imports: the logic's other public names, importable from here as before
+from analysis.app.explore_logic import MANIPULABILITY_UNIT as MANIPULABILITY_UNIT
 from analysis.app.explore_logic import RPY_INPUTS as RPY_INPUTS
 from analysis.app.explore_logic import greek as _greek
 from analysis.kinematics.arm import Arm, as_points, load_arm
@@ -125,7 +125,7 @@ class Explorer(W.VBox):
                                   indent=False, layout={"width": "240px"})  # fmt: skip
         self.on_axis_deg = W.FloatSlider(
             value=0.0, min=-180.0, max=180.0, step=0.01, description="θ1 on the axis [°]",
-            readout_format=".2f", continuous_update=False, layout=self.SLIDER_LAYOUT,
+            readout_format=".2f", continuous_update=True, layout=self.SLIDER_LAYOUT,
             style=self.SLIDER_STYLE,
         )  # fmt: skip
         self.message = W.HTML(layout={"width": "100%"})
@@ -153,9 +153,13 @@ class Explorer(W.VBox):
 
     # --- building ----------------------------------------------------------------------
     def _slider(self, value: float, lo: float, hi: float, label: str, step: float, fmt: str):
+        # continuous_update: the value reaches the browser's model at every move of a drag,
+        # where the 3D view draws it at once from the printed kinematics (arm3d_widget.js);
+        # the kernel gets the moves ipywidgets lets through (one message in flight at a
+        # time) and confirms the pose it computes for the latest
         s = W.FloatSlider(
             value=float(np.clip(value, lo, hi)), min=lo, max=hi, step=step,
-            description=label, readout_format=fmt, continuous_update=False,
+            description=label, readout_format=fmt, continuous_update=True,
             layout=self.SLIDER_LAYOUT, style=self.SLIDER_STYLE,
         )  # fmt: skip
         s.observe(self._on_change, names="value")

@@ -204,7 +204,8 @@ def _module(arm) -> str:
         "    for (let j = 0; j < arm.joints.length; j++) {\n"
         "      q.push(r['q:' + b + ':' + j]); c.push(r['c:' + b + ':' + j]);\n"
         "    }\n"
-        "    out.branches[b] = {ok: r['ok:' + b], status: r['status:' + b], q: q, c: c};\n"
+        "    out.branches[b] = {ok: r['ok:' + b], status: r['status:' + b], q: q, c: c};"
+        "\n"
         "  }\n"
         "  return out;\n"
         "};\n"
@@ -232,10 +233,11 @@ def arm_module_js(arm) -> str:
     of :mod:`analysis.app.explain` and its search's constants), and three functions printed
     from the closed form:
 
-    * ``solve(p, theta1)``: ``{status, outside, branches: {name: {ok, status, q: [rad], c:
-      [pulses]}}}`` (``status`` of a branch: its own, as solved alone) for one target ``p`` (the inputs' values, angles in rad), as
-      :meth:`Arm.solve` (NaN angles and pulses where a branch has no solution); ``theta1``
-      the waist angle on the base axis [rad] (an arm that takes it), as ``theta1_on_axis``;
+    * ``solve(p, theta1)``: ``{status, outside, branches: {name: {ok, status, q: [rad],
+      c: [pulses]}}}`` for one target ``p`` (the inputs' values, angles in rad), as
+      :meth:`Arm.solve` (NaN angles and pulses where a branch has no solution; a branch's
+      ``status`` its own, as solved alone); ``theta1`` the waist angle on the base axis
+      [rad] (an arm that takes it), as ``theta1_on_axis``;
     * ``pulses(q)``: the whole pulses of joint values ``q`` (eqs. 20-22);
     * ``frames(q)``: the frame origins [[x, y, z], ...] [mm] for joint angles ``q`` [rad], as
       :meth:`Arm.frames`.
