@@ -104,15 +104,15 @@ def engine_path(check: bool = True) -> Path:
 
 def harness(fb: str, inputs, outputs, name: str = "ST_HARNESS") -> str:
     """A PROGRAM calling function block ``fb`` with its inputs (REAL) and copying its
-    outputs (``c1..cn`` DINT, ``reachable`` BOOL, ``status`` DINT) to its own variables."""
+    outputs (``c1..cn`` DINT, ``reachable`` BOOL, ``status`` DINT) to its own variables: every
+    scan a rising edge of the block's Execute (called with Execute FALSE, then TRUE)."""
     decl = [f"    {n} : REAL;" for n in inputs]
     decl += [f"    {n} : DINT;" for n in outputs]
     decl += ["    reachable : BOOL;", "    status : DINT;", f"    ik : {fb};"]
     call = ", ".join(f"{n} := {n}" for n in inputs)
     copy = [f"{n} := ik.{n};" for n in (*outputs, "reachable", "status")]
-    return "\n".join(
-        [f"PROGRAM {name}", "VAR", *decl, "END_VAR", f"ik({call});", *copy, "END_PROGRAM", ""]
-    )
+    body = [f"ik(Execute := FALSE, {call});", f"ik(Execute := TRUE, {call});", *copy]
+    return "\n".join([f"PROGRAM {name}", "VAR", *decl, "END_VAR", *body, "END_PROGRAM", ""])
 
 
 @dataclass(frozen=True)

@@ -12,7 +12,8 @@ file) on the ST engine, offline (issue 29 item 3, a contract).
   not write).
 - Without a scenario: one scan, ``--set NAME=VALUE`` before it, ``--read NAME`` after it.
 - A source without a PROGRAM (the IK block on its own) runs through a generated PROGRAM that
-  calls its function block with its inputs and copies its outputs (today's IK sweep).
+  calls its function block with its inputs (a rising edge of its Execute in every scan) and
+  copies its outputs (today's IK sweep).
 
 Every user error raises ValueError with one line: an unknown variable, a time going
 backwards, a program that does not compile (its line and column), an engine fault (which, at
@@ -85,11 +86,18 @@ def _harness(source: str, fb: str) -> tuple[str, str]:
         body = re.findall(rf"(?is)\b{section}\b(.*?)\bEND_VAR\b", m.group(1))
         decl[section] = re.findall(r"(\w+)\s*:\s*(\w+)", body[0]) if body else []
     name = "STL_RUN_HARNESS"
+    execute = [n for n, _ in decl["VAR_INPUT"] if n.lower() == "execute"]
+    ins = [(n, t) for n, t in decl["VAR_INPUT"] if n not in execute]
     lines = [f"PROGRAM {name}", "VAR"]
-    lines += [f"    {n} : {t};" for n, t in decl["VAR_INPUT"] + decl["VAR_OUTPUT"]]
+    lines += [f"    {n} : {t};" for n, t in ins + decl["VAR_OUTPUT"]]
     lines += [f"    block : {fb};", "END_VAR"]
-    call = ", ".join(f"{n} := {n}" for n, _ in decl["VAR_INPUT"])
-    lines += [f"block({call});", *[f"{n} := block.{n};" for n, _ in decl["VAR_OUTPUT"]]]
+    call = ", ".join(f"{n} := {n}" for n, _ in ins)
+    if execute:  # a PLCopen block: a rising edge of Execute in every scan
+        lines += [f"block({execute[0]} := FALSE, {call});",
+                  f"block({execute[0]} := TRUE, {call});"]  # fmt: skip
+    else:
+        lines += [f"block({call});"]
+    lines += [f"{n} := block.{n};" for n, _ in decl["VAR_OUTPUT"]]
     return source + "\n" + "\n".join([*lines, "END_PROGRAM", ""]), name
 
 
