@@ -29,8 +29,8 @@ import numpy.typing as npt
 from analysis.kinematics.status import STATUS_TEXT, Status
 
 __all__ = [
-    "TEMPLATES", "Explanation", "explain", "line_search", "nearest_target", "search_range",
-    "target_text", "templates_js",
+    "TEMPLATES", "Explanation", "explain", "line_search", "nearest_target", "reach_sphere",
+    "search_range", "target_text", "templates_js",
 ]  # fmt: skip
 
 SCAN = 64
@@ -90,16 +90,30 @@ def target_text(arm, p, decimals: int | None = None, *, word: bool = True) -> st
     return text if word else text.split(" ", 1)[1]
 
 
+def reach_sphere(arm) -> tuple[tuple[float, float, float], float]:
+    """The reach centre [mm] (the ``shoulder`` of the closed form's ``geometry``, else the
+    base origin) and the largest reach radius [mm] (its ``reach*`` radii, else the farthest
+    point of the arm's workspace box, :func:`analysis.app.arm3d.workspace_box`)."""
+    geo = arm.closed_form.geometry(arm.params) if arm.closed_form is not None else {}
+    center = tuple(float(v) for v in geo.get("shoulder", (0.0, 0.0, 0.0)))
+    radii = [float(v) for k, v in geo.items() if k.startswith("reach")]
+    if not radii:
+        from analysis.app.arm3d import workspace_box
+
+        box = workspace_box(arm)
+        radii = [float(np.linalg.norm(np.maximum(np.abs(box.lo), np.abs(box.hi))))]
+    return center, max(radii)
+
+
 def _center(arm) -> tuple[float, float, float]:
-    return tuple(float(v) for v in arm.closed_form.geometry(arm.params)["shoulder"])
+    return reach_sphere(arm)[0]
 
 
 def search_range(arm, p: npt.ArrayLike) -> float:
     """How far along the line from the reach centre through ``p`` the search goes, as a
     multiple ``s_max`` of the target's distance: past the largest reach radius of the arm's
     ``geometry`` on the far side, at least twice the distance."""
-    geo = arm.closed_form.geometry(arm.params)
-    reach = max(float(v) for k, v in geo.items() if k.startswith("reach"))
+    reach = reach_sphere(arm)[1]
     p = np.asarray(p, dtype=float)
     pos = [k for k, u in enumerate(arm.input_units) if u == "mm"][:3]
     d = float(np.linalg.norm(p[pos] - np.asarray(_center(arm))[: len(pos)]))

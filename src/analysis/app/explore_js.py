@@ -154,11 +154,11 @@ def pulses_graph(arm) -> Graph:
 
 
 def _module(arm) -> str:
-    from analysis.app.explain import CHOOSE_THETA1, ROUNDS, SCAN, TEMPLATES
+    from analysis.app.explain import CHOOSE_THETA1, ROUNDS, SCAN, TEMPLATES, reach_sphere
     from analysis.app.explore_logic import FK_CAPTION, IK_CAPTION
 
     n_frames = len(frames_graph(arm).outputs) // 3
-    geo = arm.closed_form.geometry(arm.params)
+    center, reach = reach_sphere(arm)
     on_axis = "theta1_on_axis" in arm.closed_form.options
     meta = {
         "name": arm.name,
@@ -172,8 +172,8 @@ def _module(arm) -> str:
         "status_text": {int(k): v for k, v in STATUS_TEXT.items()},
         "n_frames": n_frames,
         "joint_units": list(arm.joint_user_units),
-        "center": [float(v) for v in geo["shoulder"]],
-        "reach": max(float(v) for k, v in geo.items() if k.startswith("reach")),
+        "center": list(center),
+        "reach": reach,
         "on_axis": on_axis,
         "explain": {"templates": TEMPLATES, "choose": CHOOSE_THETA1, "scan": SCAN,
                     "rounds": ROUNDS, "captions": {"ik": IK_CAPTION, "fk": FK_CAPTION}},
