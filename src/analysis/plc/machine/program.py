@@ -240,9 +240,8 @@ class MachinePrinter:
 
     def axis_fault(self, k: str) -> str:
         v = self.v
-        errs = " OR ".join(
-            f"{v(fb + k)}.Error" for fb in ("Power", "Homing", "Move", "Halt", "Stop")
-        )
+        # not the stop's own error: stopping an axis already in error fails by design
+        errs = " OR ".join(f"{v(fb + k)}.Error" for fb in ("Power", "Homing", "Move", "Halt"))
         return f"({v('ReadErr' + k)}.AxisErrorID <> 0) OR {errs}"
 
     def latches(self) -> list[str]:
