@@ -412,10 +412,10 @@ def _missing_branches(arm, target, names, sols, args) -> list[dict]:
 
 # --- stl ------------------------------------------------------------------------------------------
 def _cmd_stl(args: argparse.Namespace) -> int:
-    from analysis.safe_io import check_paths, write_many_atomic
     from analysis.plc.dialects import DIALECTS
     from analysis.plc.generate import generate
     from analysis.plc.memmap import MemoryMap
+    from analysis.safe_io import check_paths, write_many_atomic
 
     extra = [p for p in (args.tags, args.gvl) if p]  # the machine's tag table and GVL
     outputs = [args.output, *([args.map] if args.map else []), *extra]

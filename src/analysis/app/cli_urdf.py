@@ -3,8 +3,8 @@
 ``urdf --arm NAME|PATH [-o FILE] [--mkdir] [--json]``: the arm by name (``data/arms``) or the
 path of a description file (a user's own arm); the URDF on standard output (``-o -`` too), or
 written to ``FILE`` atomically (the old file stays whole on any error; never over the
-description or a table it read; a missing directory only with ``--mkdir``). With ``--json`` and ``-o`` a one-line
-summary is printed instead of the sentence.
+description or a table it read; a missing directory only with ``--mkdir``). With ``--json``
+and ``-o`` a one-line summary is printed instead of the sentence.
 """
 
 from __future__ import annotations
