@@ -360,7 +360,8 @@ def _load(name: str, tables: tuple, stamp: tuple) -> ArmDescription:
     except tomllib.TOMLDecodeError as exc:
         raise DescriptionError(file, "", f"not valid TOML ({exc})") from None
     except RecursionError:
-        raise DescriptionError(file, "", "nested deeper than the TOML reader follows") from None
+        raise DescriptionError(file, f"line {_deep_line(text)}", "arrays or tables nested "
+                               "deeper than the TOML reader follows") from None  # fmt: skip
     r = Reader(d, file)
     r.check_keys(schema.TOP)
     ctx = _Context(path, file, dict(tables))
@@ -391,6 +392,18 @@ def _load(name: str, tables: tuple, stamp: tuple) -> ArmDescription:
     if rows:
         desc.dh_table()  # every row resolves
     return desc
+
+
+def _deep_line(text: str, depth: int = 256) -> int:
+    """The line where brackets first open ``depth`` deep (where a TOML reader's recursion
+    ends), or the last line."""
+    level, n = 0, 1
+    for c in text:
+        level += (c in "[{") - (c in "]}")
+        n += c == "\n"
+        if level > depth:
+            break
+    return n
 
 
 class _Context:

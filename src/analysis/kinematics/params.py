@@ -141,7 +141,7 @@ def load_table3(path: str | Path | None = None) -> Params:
     0, 0 deg; a_1 = 0; d_2 = d_3 = 0) and that the printed cos/sin columns agree with
     alpha; raises ``ValueError`` naming the file, row and column otherwise.
     """
-    path = (Path(path) if path is not None else data_dir() / "table3.csv").resolve()
+    path = (Path(path) if path is not None else data_dir() / "table3.csv").absolute()
     try:
         st = path.stat()
     except OSError as exc:
