@@ -239,7 +239,7 @@ def test_a_closed_form_that_does_not_solve_the_rows_is_refused(case):
         return
     err = one_line_error(out, "arm.toml")
     # the closed form's own refusal (another arm's rows) or its contract's (a joint count)
-    assert ("does not solve this description's D-H rows" in err and " mm off" in err
+    assert (("does not solve this description's D-H rows" in err and " mm off" in err)
             or "returns the configuration itself" in err or "joint values per branch" in err
             or "D-H row is" in err or "joints for" in err), err  # fmt: skip
     assert not (folder / "x.awl").exists()
