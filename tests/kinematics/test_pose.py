@@ -126,6 +126,6 @@ def test_a_chain_without_a_closed_form_has_its_pose(tmp_path, capsys):
     doc = json.loads(out)
     assert code == 0 and doc["target"] is None and set(doc) == KEYS, err
     c, s = np.cos(np.radians([30.0, 70.0])), np.sin(np.radians([30.0, 70.0]))
-    np.testing.assert_allclose(doc["position_mm"], [300 * c[0] + 200 * c[1],
-                                                    300 * s[0] + 200 * s[1], 0.0], atol=1e-9)  # fmt: skip
+    tip = [300 * c[0] + 200 * c[1], 300 * s[0] + 200 * s[1], 0.0]
+    np.testing.assert_allclose(doc["position_mm"], tip, atol=1e-9)
     np.testing.assert_allclose(doc["rpy_deg"], [70.0, 0.0, 0.0], atol=1e-12)
