@@ -31,10 +31,10 @@ and at the reach shells.
 
 from __future__ import annotations
 
-import json
 import math
 from typing import ClassVar
 
+from analysis.escape import js_comment, js_json
 from analysis.kinematics.dh import chain_frames
 from analysis.kinematics.printing import INFIX, ExpressionPrinter
 from analysis.kinematics.pulses import pulse_count
@@ -100,8 +100,8 @@ def graph_js(graph: Graph, arg: str = "a") -> str:
         else:
             expr = JS.doprint(n.op, *map(ref, n.args))
         name = graph.names.get(n.index)
-        lines.append(f"  const v{n.index} = {expr};" + (f"  // {name}" if name else ""))
-    outs = ", ".join(f"{json.dumps(k)}: {ref(v)}" for k, v in graph.outputs.items())
+        lines.append(f"  const v{n.index} = {expr};" + (f"  // {js_comment(name)}" if name else ""))
+    outs = ", ".join(f"{js_json(k)}: {ref(v)}" for k, v in graph.outputs.items())
     lines.append(f"  return {{{outs}}};")
     return "\n".join(lines)
 
@@ -150,11 +150,15 @@ def _module(arm) -> str:
     }
     return (
         "(function () {\n"
-        f"// {arm.name}: printed by analysis.app.explore_js from the closed form "
-        f"'{arm.description.closed_form}' and the D-H chain of data/arms; do not edit\n"
+        "// "
+        + js_comment(
+            f"{arm.name}: printed by analysis.app.explore_js from the closed form "
+            f"'{arm.description.closed_form}' and the D-H chain of data/arms; do not edit"
+        )
+        + "\n"
         "const raw_solve = function (a) {\n" + graph_js(solve_graph(arm)) + "\n};\n"
         "const raw_frames = function (a) {\n" + graph_js(frames_graph(arm)) + "\n};\n"
-        f"const arm = {json.dumps(meta, ensure_ascii=False)};\n"
+        f"const arm = {js_json(meta)};\n"
         "arm.solve = function (p) {\n"
         "  const r = raw_solve(p), out = {status: r.status, outside: r.outside, branches: {}};\n"
         "  for (const b of arm.branches) {\n"
