@@ -415,7 +415,8 @@ def _cmd_stl(args: argparse.Namespace) -> int:
     from analysis.plc.generate import generate
     from analysis.plc.memmap import MemoryMap
 
-    outputs = [args.output, *([args.map] if args.map else [])]
+    extra = [p for p in (args.tags, args.gvl) if p]  # the machine's tag table and GVL
+    outputs = [args.output, *([args.map] if args.map else []), *extra]
     if str(args.output) == "-" and (args.json or str(args.map) == "-"):
         raise UsageError("-o - writes the program to stdout: --json and --map - cannot share it")
     check_paths(
@@ -446,6 +447,10 @@ def _cmd_stl(args: argparse.Namespace) -> int:
         cpu=cpu,
     )
     files = {p: c for p, c in ((args.output, text), (args.map, mjson)) if p and str(p) != "-"}
+    if extra:
+        from analysis.plc.machine.tags import machine_files
+
+        files.update(machine_files(arm, args.dialect, args.no_motion, args.tags, args.gvl))
     if files:
         write_many_atomic(files, newline="", make_parents=args.mkdir)
     for p, c in ((args.output, text), (args.map, mjson)):
@@ -686,7 +691,13 @@ def _add_stl(sub) -> None:
         "against (S7-200: CPU 221, 222, 224, 224XP, 226, default CPU 224; S7-300: CPU 312, "
         "314, 315-2 DP, 317-2 DP, default CPU 315-2 DP; e.g. --cpu 224XP)",
     )
-    p.add_argument("--no-motion", action="store_true", help="S7-200: omit the PTO motion networks")
+    p.add_argument("--tags", type=Path, metavar="TAGS.xlsx", help="st, scl, plcopen-xml: "
+                   "the machine's signals as a TIA Portal PLC tag table (Excel, import in the "
+                   "PLC tag editor)")
+    p.add_argument("--gvl", type=Path, metavar="GVL.st", help="st, scl, plcopen-xml: the "
+                   "machine's signals as a CODESYS global variable list")
+    p.add_argument("--no-motion", action="store_true", help="omit the motion: the S7-200's PTO "
+                   "networks; st, scl, plcopen-xml: the machine program (the IK block alone)")
     p.add_argument(
         "--theta1-on-axis", type=_finite, metavar="DEG", help="waist angle on the base axis"
     )

@@ -22,7 +22,15 @@ import tomllib
 from functools import cache
 from pathlib import Path
 
-from analysis.audit.schema import COUNTED, COUNTING_RULE, STATUSES, Cause, Manifestation, Register
+from analysis.audit.schema import (
+    COUNTED,
+    COUNTING_RULE,
+    STATUSES,
+    Cause,
+    Manifestation,
+    Register,
+    check_summary,
+)
 from analysis.paths import PROJECT, build_dir, data_dir
 
 __all__ = [
@@ -62,6 +70,21 @@ class _Namespace:
 
     def __getattr__(self, name):
         return self._get(name)
+
+
+class _Checked:
+    """``{m[<manifestation id>].printed.value}`` in a summary template: what a manifestation's
+    check computed on the printed text (``printed``) and on the correction (``corrected``)."""
+
+    def __init__(self, causes) -> None:
+        self._ms = {m.id: m for c in causes for m in c.manifestations}
+
+    def __getitem__(self, mid: str):
+        if mid not in self._ms:
+            raise KeyError(f"no manifestation {mid!r}")
+        m = self._ms[mid]
+        return _Namespace({"printed": m.result(m.checked), "corrected": m.result(m.corrected)}
+                          .__getitem__)  # fmt: skip
 
 
 def _printed(spec, paper) -> str:
@@ -216,8 +239,12 @@ def register(paper: str) -> Register:
                 rests_on=tuple(c.get("rests_on", ())), extra=_also(c, ctx, check),
             )
         )
-    ns = {"facts": _Namespace(ctx.fact)}
-    summary = {k: v.format_map(ns) for k, v in raw.get("summary", {}).items()}
+    check_summary(paper, raw.get("summary", {}))
+    ns = {"facts": _Namespace(ctx.fact), "m": _Checked(causes)}
+    try:
+        summary = {k: v.format_map(ns) for k, v in raw["summary"].items()}
+    except (AttributeError, KeyError, IndexError, TypeError, ValueError) as exc:
+        raise ValueError(f"register {paper}: [summary] template needs {exc!r}") from None
     head = raw["register"]
     return Register(paper, head["title"], tuple(causes), summary, tuple(raw.get("change", ())))
 

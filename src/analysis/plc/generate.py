@@ -23,7 +23,10 @@ from analysis.plc.dialects import printer_class
 from analysis.plc.ir import build_program
 from analysis.plc.printer import Generated, Options
 
-__all__ = ["Generated", "generate"]
+__all__ = ["MACHINE_DIALECTS", "Generated", "generate"]
+
+MACHINE_DIALECTS = ("st", "scl", "plcopen-xml")
+"""The dialects whose output carries the machine program (issue 29) unless ``motion=False``."""
 
 
 def generate(
@@ -57,7 +60,9 @@ def generate(
         Addresses (default: :func:`~.memmap.default_map` for the program's I/O; only for a
         dialect with addresses).
     motion : bool
-        S7-200 and the paper's arm only: append the PTO motion networks.
+        S7-200 and the paper's arm: append the PTO motion networks; st, scl, plcopen-xml:
+        the machine program beside the IK block (:func:`analysis.plc.machine.generate.
+        with_machine`; False: the IK block on its own).
     theta1_on_axis : float, optional
         Waist angle [rad] on the base axis (default: refuse such targets, status 3).
     optimize : bool
@@ -80,4 +85,10 @@ def generate(
     cls.check_options(options)
     trig = cls.check_trig(trig)
     program = build_program(arm, branch, trig, theta1_on_axis=theta1_on_axis)
-    return cls.generate(arm, program, options)
+    out = cls.generate(arm, program, options)
+    if motion and dialect in MACHINE_DIALECTS:  # the machine program beside the IK block
+        from analysis.plc.machine.generate import with_machine
+        from analysis.plc.st import block_name
+
+        return with_machine(arm, dialect, out, block_name(program, arm.branches[0]))
+    return out

@@ -27,6 +27,7 @@ class PlcopenXmlPrinter(StPrinter):
     """PLCopen XML TC6 0201 of the ST blocks (module docstring)."""
 
     name = "plcopen-xml"
+    engine = "pyplcopen's ST engine, the ST read from the XML (analysis.plc.machine.xml_st)"
     title = "PLCopen XML (TC6 0201) of the ST block (CODESYS, TwinCAT import)"
     target = "PLCopen XML"
     count_note = "pulses"
@@ -50,7 +51,7 @@ class PlcopenXmlPrinter(StPrinter):
         parts = ["<returnType><REAL/></returnType>"] if pou.kind == "function" else []
         for kind, decls in pou.sections:
             tag = self.sections[kind]
-            inner = "".join(self.variable(d.name, d.type, d.note) for d in decls)
+            inner = "".join(self.variable(d.ident, d.type, d.note) for d in decls)
             parts.append(f"<{tag}>{inner}</{tag}>")
         return f"<interface>{''.join(parts)}</interface>"
 

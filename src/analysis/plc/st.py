@@ -114,6 +114,7 @@ class StPrinter(PlcPrinter):
     (:meth:`pous`, :meth:`print_pou`)."""
 
     name = "st"
+    engine = "pyplcopen's ST engine (cycle by cycle, simulated axes: analysis.plc.machine.offline)"
     title = "IEC 61131-3 ST (CODESYS, TwinCAT, OpenPLC)"
     trigs = ("function", "native", "subroutine")
     runtime = "IEC 61131-3 runtime (CODESYS, TwinCAT, OpenPLC)"
@@ -409,6 +410,7 @@ class SclPrinter(StPrinter):
     docstring)."""
 
     name = "scl"
+    engine = None  # TIA Portal's SCL: no engine here (held by golden files and scl_to_st)
     title = "Siemens SCL (TIA Portal, S7-1200/1500)"
     runtime = "S7-1200/S7-1500 (TIA Portal, SCL source)"
     target = "Siemens SCL"
