@@ -69,12 +69,22 @@ def hostile_strings():
 # --------------------------------------------------------------------------------------------
 # the description and its fields
 # --------------------------------------------------------------------------------------------
+_MOTION = (
+    'max_velocity = { value = 90.0, unit = "deg/s", status = "assumed", source = "test" }\n'
+    'max_acceleration = { value = 360.0, unit = "deg/s2", status = "assumed", source = "test" }\n'
+    'max_jerk = { value = 3600.0, unit = "deg/s3", status = "assumed", source = "test" }\n'
+    'home = { mode = "set", position = 0.0, status = "assumed", source = "test" }\n'
+)
+
+
 @cache
 def readme_toml() -> str:
-    """The README's user arm (``closed_form = "grabber"``), as written there."""
+    """The README's user arm (``closed_form = "grabber"``), as written there, with the
+    joints' motion limits and homing the machine program needs (the shared contract)."""
     text = (PROJECT / "README.md").read_text(encoding="utf-8")
     section = text.split("## One source per arm (and how to add one)")[1]
-    return section.split("```toml\n", 1)[1].split("```", 1)[0]
+    toml = section.split("```toml\n", 1)[1].split("```", 1)[0]
+    return toml.replace("pulses_per_rev = 3200\n", "pulses_per_rev = 3200\n" + _MOTION)
 
 
 def toml_string(value: str) -> str:
@@ -184,6 +194,7 @@ def check_terminal(text: str) -> None:
 
 # --- PLC programs -----------------------------------------------------------------------------
 _IK_BLOCK = re.compile(r"\bIK(?:_(?!ATAN2\b|ACOS\b)[A-Za-z0-9_]+)?\b")
+_MACHINE_BLOCK = re.compile(r"\bMACHINE(?:_[A-Za-z0-9_]+)?\b")
 
 
 IEC_IDENTIFIER = re.compile(r"[A-Za-z_](?:_?[A-Za-z0-9])*")
@@ -199,18 +210,36 @@ def check_identifiers(text: str) -> None:
         assert IEC_IDENTIFIER.fullmatch(n), n
 
 
+def strip_nested_comments(text: str) -> str:
+    """ST text without its ``(* *)`` comments, nested ones as CODESYS reads them (an
+    unclosed ``(*`` inside a comment keeps the comment open)."""
+    out, depth, i = [], 0, 0
+    while i < len(text):
+        two = text[i : i + 2]
+        if two == "(*":
+            depth, i = depth + 1, i + 2
+        elif two == "*)" and depth:
+            depth, i = depth - 1, i + 2
+        else:
+            if not depth:
+                out.append(text[i])
+            i += 1
+    return "".join(out)
+
+
 def plc_code(text: str, dialect: str) -> list[str]:
-    """The lines of a PLC program that are code: comments, titles and blank lines out, the
-    arm's block name (built from its name) as ``IK_ARM``."""
+    """The lines of a PLC program that are code: comments (nested ones as CODESYS reads
+    them), titles and blank lines out, the arm's block names (built from its name) as
+    ``IK_ARM`` and ``MACHINE_ARM``."""
     if dialect in ("st", "scl"):
-        text = re.sub(r"\(\*.*?\*\)", "", text, flags=re.S)
+        text = strip_nested_comments(text)
     text = re.sub(r"//[^\n]*", "", text)
     lines = []
     for line in text.replace("\r\n", "\n").split("\n"):
         s = line.rstrip()
         if not s.strip() or re.match(r"\s*TITLE\s*=", s):
             continue
-        lines.append(_IK_BLOCK.sub("IK_ARM", s))
+        lines.append(_MACHINE_BLOCK.sub("MACHINE_ARM", _IK_BLOCK.sub("IK_ARM", s)))
     return lines
 
 
@@ -228,7 +257,7 @@ def _stl(dialect: str):
             assert doc.get("arm", "") == value  # JSON carries the text as it is
         text = hostile["program"]
         if dialect == "plcopen-xml":
-            _check_xml_program(text, clean["program"])
+            check_xml_program(text, clean["program"])
             return
         assert plc_code(text, dialect) == plc_code(clean["program"], dialect)
         if dialect in ("st", "scl"):
@@ -241,12 +270,14 @@ def _stl(dialect: str):
     return run, check
 
 
-def _check_xml_program(text: str, clean: str) -> None:
-    """PLCopen XML: parses, validates against the TC6 0201 schema model, and its ST bodies
-    are the clean program's (comments and the block name aside)."""
+def check_xml_program(text: str, clean: str, schema: bool = False) -> None:
+    """PLCopen XML: parses, validates against the TC6 0201 schema model (``schema``; the
+    ``stl`` command validates what it writes and refuses what does not validate), and its
+    ST bodies are the clean program's (comments and the block names aside)."""
     from analysis.plc.plcopen import validate_plcopen
 
-    validate_plcopen(text)
+    if schema:
+        validate_plcopen(text)
 
     def bodies(xml: str) -> list[list[str]]:
         root = ET.fromstring(xml)
@@ -254,7 +285,8 @@ def _check_xml_program(text: str, clean: str) -> None:
         out = []
         for pou in root.iterfind(".//p:pou", ns):
             st_text = "".join(pou.find("p:body/p:ST", ns).itertext())
-            out.append([_IK_BLOCK.sub("IK_ARM", pou.get("name")), *plc_code(st_text, "st")])
+            name = _MACHINE_BLOCK.sub("MACHINE_ARM", _IK_BLOCK.sub("IK_ARM", pou.get("name")))
+            out.append([name, *plc_code(st_text, "st")])
         return out
 
     assert bodies(text) == bodies(clean)
