@@ -153,7 +153,7 @@ def _module(arm) -> str:
         "// "
         + js_comment(
             f"{arm.name}: printed by analysis.app.explore_js from the closed form "
-            f"'{arm.description.closed_form}' and the D-H chain of data/arms; do not edit"
+            f"'{arm.cf.name}' and the D-H chain of data/arms; do not edit"
         )
         + "\n"
         "const raw_solve = function (a) {\n" + graph_js(solve_graph(arm)) + "\n};\n"

@@ -7,7 +7,7 @@ shared solver, the compiled kernel, the float32 model, SymPy and the PLC program
 unchanged. ``ik`` is the subproblem decomposition of :mod:`analysis.kinematics.derive`
 (its docstring gives the steps), written against the math namespace ``m``; the lengths come
 from ``P`` through the description's D-H rows at every call, so a changed parameter
-(``Params.with_``) or a traced one (the compiled kernel) is used as it is.
+(``Arm.with_``) or a traced one (the compiled kernel) is used as it is.
 """
 
 from __future__ import annotations
