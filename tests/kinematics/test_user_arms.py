@@ -422,7 +422,7 @@ def test_arms_lists_every_arm_when_one_description_is_broken(data_copy, capsys):
     out = capsys.readouterr().out
     lines = {line.split()[0]: line for line in out.splitlines()}
     assert {"grabber", "palletizer", "picker", "gr1", "measured"} <= set(lines)
-    assert "not loadable" in lines["broken"] and "status 'guessed'" in lines["broken"]
+    assert "not loadable" in lines["broken"] and "status: 'guessed'" in lines["broken"]
     docs = {d["name"]: d for d in _json(capsys, "arms")}
     assert docs["measured"]["parameters"]["L1"]["status"] == "measured"
     assert "error" in docs["broken"] and "error" not in docs["palletizer"]

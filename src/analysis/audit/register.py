@@ -362,7 +362,7 @@ def _store_digests(papers, files: dict[Path, str]) -> None:
 
 def write_all(papers=None) -> list[str]:
     """Rewrite every register CSV, the item table and the README block; what changed."""
-    from analysis.app.safe_io import write_many_atomic
+    from analysis.safe_io import write_many_atomic
 
     papers = list(papers or available())
     files = generated(papers)
