@@ -21,12 +21,13 @@ import dataclasses
 import json
 import re
 import tempfile
+import xml.etree.ElementTree as ET
 from functools import cache
 from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, example, given, settings
 
 from analysis.kinematics.arm import load_arm
 from hostile.texts import (
@@ -121,22 +122,22 @@ def test_every_hostile_string_in_the_name_and_title(value, gen, fields):
 
 @pytest.mark.parametrize("value", ["theta2", "a\x01b", "c\x1b[0m--", "\u2028"])
 def test_a_joint_name_in_the_urdf(value):
-    """A joint named as another (``theta2``) is refused (by the description's reader; the
-    URDF writer refuses one too, :func:`analysis.kinematics.urdf.to_xml`), not written
-    twice; control characters never reach the XML."""
+    """A joint named as another (``theta2``) is refused (by the description's reader: its
+    schema; the URDF writer refuses one too, :func:`analysis.kinematics.urdf.to_xml`), not
+    written twice; control characters never reach the XML."""
     run_hostile("urdf", "joint name", value)
     with tempfile.TemporaryDirectory() as tmp:
         path = description(Path(tmp), "joint name", value)
         try:
             out = GENERATORS["urdf"].run(path)
         except ValueError as exc:
-            assert value == "theta2" and "'theta2'" in str(exc)
+            assert f"{value!r}"[1:-1] in str(exc) or repr(value) in str(exc), str(exc)
             return
     assert value != "theta2", "a duplicate joint name was written"
     assert "\x01" not in out["urdf"] and "\x1b" not in out["urdf"]
 
 
-def test_the_urdf_writer_refuses_two_joints_of_one_name():
+def test_the_urdf_writer_refuses_two_joints_of_one_name_and_writes_xml():
     import numpy as np
 
     from analysis.kinematics.urdf import UrdfJoint, to_xml
@@ -144,6 +145,10 @@ def test_the_urdf_writer_refuses_two_joints_of_one_name():
     j = UrdfJoint("j", "revolute", "base_link", "l1", np.eye(4), limits=(-1.0, 1.0))
     with pytest.raises(ValueError, match="two joints are named 'j'"):
         to_xml("r", [], ["base_link", "l1", "l2"], [j, dataclasses.replace(j, child="l2")])
+    # whatever reaches the writer, its XML parses (characters XML 1.0 forbids removed)
+    odd = dataclasses.replace(j, name="a\x01b\x1b", comments=("-->\x00 ---",))
+    root = ET.fromstring(to_xml("r\x02", ["h\x0b"], ["base_link", "l1"], [odd]))
+    assert [e.get("name") for e in root.iter("joint")] == ["ab"]
 
 
 # --------------------------------------------------------------------------------------------
@@ -334,3 +339,79 @@ def test_variables_named_by_hostile_text_are_iec_identifiers(dialect):
             assert len({d.upper() for d in declared}) == len(declared), declared
 
     prop()
+
+
+# --------------------------------------------------------------------------------------------
+# what the description's schema refuses today, escaped all the same (defence in depth)
+# --------------------------------------------------------------------------------------------
+def test_the_machine_program_escapes_the_arm_it_names():
+    """The machine program (ST and SCL) of an arm whose name and title are hostile: the code
+    is the clean one's, every name an IEC 61131-3 identifier."""
+    from analysis.plc.machine.generate import machine_text
+    from analysis.plc.machine.spec import machine_spec
+
+    arm = load_arm(str(description(Path(tempfile.mkdtemp()), None)))
+    spec = machine_spec(arm)
+
+    @examples(6)
+    @given(value=hostile_strings())
+    @example(value=HOSTILE[3])  # an opened (* (CODESYS nests comments)
+    def prop(value):
+        odd = dataclasses.replace(spec, arm=value, title=value)
+        for dialect in ("st", "scl"):
+            clean, text = (
+                machine_text(spec, "IK_MINE", dialect),
+                machine_text(odd, "IK_MINE", dialect),
+            )
+            assert plc_code(text, dialect) == plc_code(clean, dialect)
+            check_identifiers(text)
+
+    prop()
+
+
+def test_the_explorer_escapes_the_arm_it_names():
+    """The explorer's JavaScript of an arm whose name, title and joint names are hostile:
+    nothing ends the script, the JSON round-trips, the code is the clean one's."""
+    from analysis.app.explore_js import arm_module_js
+
+    arm = load_arm("grabber")
+    clean = arm_module_js(arm)
+    meta = re.compile(r"^const arm = (.*);$", re.M)
+
+    @examples(6)
+    @given(value=hostile_strings())
+    def prop(value):
+        joints = tuple(dataclasses.replace(j, name=value + str(k))
+                       for k, j in enumerate(arm.description.joints))  # fmt: skip
+        desc = dataclasses.replace(arm.description, name=value, title=value, joints=joints)
+        js = arm_module_js(dataclasses.replace(arm, description=desc))
+        check_script(js)
+        doc = json.loads(meta.search(js).group(1))
+        assert (doc["name"], doc["title"], doc["joints"][0]) == (value, value, value + "0")
+
+        def code(text):
+            lines = [meta.sub("META", ln) for ln in text.split("\n")]
+            return [re.sub(r"\s*//.*$", "", ln) for ln in lines]
+
+        assert code(js) == code(clean)
+
+    prop()
+
+
+def test_a_terminal_never_gets_a_control_sequence(monkeypatch, tmp_path):
+    """``arms`` prints a title, ``stl`` the file it wrote: control characters shown as
+    escapes, whatever the text."""
+    from analysis.kinematics import catalog
+    from hostile.registry import cli
+    from hostile.texts import check_terminal
+
+    value = "\x1b[2J\x1b]0;pwned\x07\r\u202eevil\x9b"
+    fake = {"name": value, "title": value, "joints": ["a"], "parameters": {}}
+    monkeypatch.setattr(catalog, "describe_arm", lambda a: fake)
+    out = cli("arms", "--arm", "grabber")
+    assert out.code == 0 and "pwned" in out.stdout
+    check_terminal(out.stdout)
+    prog = tmp_path / f"p{value.replace('/', '')}.awl"
+    out = cli("stl", "--dialect", "s7-300", "-o", str(prog))
+    assert out.code == 0 and prog.exists()
+    check_terminal(out.stdout + out.stderr)
