@@ -78,6 +78,7 @@ import json
 from analysis.kinematics.derive.chain import home
 from analysis.kinematics.derive.closed_form import DerivedClosedForm
 from analysis.kinematics.derive.families import FAMILIES, NotDerivable, classify
+from analysis.kinematics.derive.forms import build
 
 __all__ = ["DERIVED", "FAMILIES", "DerivedClosedForm", "NotDerivable", "attach", "derive",
            "derived_arm", "lookup"]  # fmt: skip
@@ -102,14 +103,12 @@ def derive(desc) -> DerivedClosedForm:
     """The derived closed form of description ``desc`` (whatever its ``closed_form``), or
     NotDerivable with the reason. The same structure gives the same object."""
     table = desc.dh_table()
-    if any(r.get("kind", "revolute") not in ("revolute", "fixed") for r in desc.rows):
-        raise NotDerivable("the chain has a joint that is neither revolute nor fixed")
     from analysis.kinematics.ops import numpy_ops
 
     h = home(numpy_ops, table)
-    structure = classify(h.axes, h.rotation, desc.derive)
-    probe = DerivedClosedForm("derived:probe", desc, structure)
-    flags = (probe.kappa, probe.bend_zero, probe.lateral_zero, probe.h_zero)
+    structure = classify(h.axes, h.rotation, desc.derive, h.kinds)
+    probe = build("derived:probe", desc, structure)
+    flags = probe.flags
     name = f"{DERIVED}:{structure.family}-{_digest(_key(desc), flags)}"
     known = _REGISTRY.get(name)
     if isinstance(known, DerivedClosedForm):
