@@ -202,14 +202,14 @@ def _plain(family, axes, kinds, rotation, d) -> Structure:
 
 
 def _vertical(family: str, u, n_rev: int) -> None:
-    """A planar arm's or a SCARA's parallel axes: along a base axis (a 2R arm's point is
-    given by the two coordinates across it), along z where the tool's turn is an input
-    (RPY ``alpha``, the turn about z)."""
+    """A planar arm's or a SCARA's parallel axes: along a base axis (a planar arm's point
+    is given by the coordinates across it; a SCARA's lift is one coordinate), along z where
+    the tool's turn is an input (RPY ``alpha``, the turn about z)."""
     along = [k for k in range(3) if abs(abs(u[k]) - 1.0) <= PARALLEL_TOL]
-    if family == "2R-planar" and not along:
+    if not along:
         raise NotDerivable(
-            f"the two parallel axes {_fmt(u)} lie along no base axis: the arm's plane is not a "
-            "coordinate plane of the base frame, so no two target coordinates name its points"
+            f"the {family} arm's parallel axes {_fmt(u)} lie along no base axis: the arm's "
+            "plane is not a coordinate plane of the base frame"
         )
     if n_rev == 3 and along != [2]:
         raise NotDerivable(
@@ -259,12 +259,21 @@ def _prismatic_family(axes, kinds) -> str:
 
 
 def _wrist_axes(axes, what: str) -> None:
-    """Three wrist axes, each across the next (their meeting point: the closed form)."""
+    """Three wrist axes, each perpendicular to the next (where they meet: the closed form,
+    :mod:`.wrist`; a wrist whose axes are not perpendicular cannot take every orientation
+    and is not derived)."""
     for k in range(2):
-        if _sin(axes[k], axes[k + 1]) < ACROSS_MIN:
-            raise NotDerivable(
-                f"the {what}'s wrist axes {k + 4} and {k + 5} are parallel: no spherical wrist"
-            )
+        _perpendicular(axes[k], axes[k + 1], f"the {what}'s wrist axes {k + 4} and {k + 5}")
+
+
+def _perpendicular(a, b, what: str) -> None:
+    c = abs(float(np.dot(a, b)))
+    if c > PARALLEL_TOL:
+        angle = math.degrees(math.acos(min(c, 1.0)))
+        raise NotDerivable(
+            f"{what} make {angle:.4g} deg, not 90: the derived wrist needs them perpendicular "
+            f"(every published wrist); {FAMILY_TEXT}"
+        )
 
 
 def _six_family(axes) -> str:
@@ -278,11 +287,8 @@ def _six_family(axes) -> str:
             f"joints 2 and 3 of the six are not parallel (angle {angle:.4g} deg); {FAMILY_TEXT}"
         )
     if _sin(u, axes[3]) <= PARALLEL_TOL:
-        if _sin(u, axes[4]) < ACROSS_MIN or _sin(axes[4], axes[5]) < ACROSS_MIN:
-            raise NotDerivable(
-                "joints 2, 3 and 4 are parallel but joint 5 is not across them or joint 6 "
-                f"not across joint 5; {FAMILY_TEXT}"
-            )
+        _perpendicular(u, axes[4], "axis 5 and the parallel axes 2-4")
+        _perpendicular(axes[4], axes[5], "axes 5 and 6")
         return "6R-parallel"
     _wrist_axes(axes[3:], "arm")
     return "6R-wrist"

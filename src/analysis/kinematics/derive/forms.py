@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 from analysis.kinematics.derive.closed_form import DerivedClosedForm
-from analysis.kinematics.derive.families import WAIST_FAMILIES, NotDerivable, Structure
+from analysis.kinematics.derive.families import WAIST_FAMILIES, Structure
+from analysis.kinematics.derive.gantry import GantryArm
+from analysis.kinematics.derive.planar import PlanarArm
 
 __all__ = ["build"]
 
@@ -13,4 +15,6 @@ def build(name: str, description, structure: Structure):
     the chain's numbers break a rule the axes alone do not show: axes that must meet)."""
     if structure.family in WAIST_FAMILIES:
         return DerivedClosedForm(name, description, structure)
-    raise NotDerivable(f"the {structure.family} family has no closed form yet")
+    if structure.family.startswith("gantry"):
+        return GantryArm(name, description, structure)
+    return PlanarArm(name, description, structure)

@@ -176,24 +176,25 @@ class WaistArm(FamilyForm):
 
     def _check_meeting(self, probes) -> None:
         """6R-wrist: axes 4, 5 and 6 meet in one point; 6R-parallel: axes 5 and 6 meet
-        (structurally: at every parameter value)."""
+        (structurally: at every parameter value). The solved point is where the first two
+        meet (:meth:`_solved_home`); it must lie on each of the axes."""
         fam = self.family
         if fam not in ("6R-wrist", "6R-parallel"):
             return
         ax = self.structure.axes
         for g in probes:
             h = g["home"]
-            pairs = ((4, 5),) if fam == "6R-parallel" else ((3, 4), (3, 5), (4, 5))
-            for i, j in pairs:
-                n = np.cross(ax[i], ax[j])
-                dist = abs(float(np.dot(n, np.subtract(h.points[j], h.points[i]))))
-                dist /= float(np.linalg.norm(n))
+            W = np.array([float(v) for v in g["wh"]])
+            for i in ((3, 4, 5) if fam == "6R-wrist" else (4, 5)):
+                off = np.cross(W - np.array([float(v) for v in h.points[i]]), ax[i])
+                dist = float(np.linalg.norm(off))
                 if dist > ZERO_MM:
                     raise NotDerivable(
-                        f"axes {i + 1} and {j + 1} do not meet (they pass {dist:.4g} mm apart "
-                        "at some parameter values): "
-                        + ("no spherical wrist (Pieper's condition)" if fam == "6R-wrist"
-                           else "axis 6 must meet axis 5 (the Universal Robots geometry)")
+                        f"axis {i + 1} passes {dist:.4g} mm from where axes "
+                        + ("4 and 5 meet (at some parameter values): no spherical wrist "
+                           "(Pieper's condition)" if fam == "6R-wrist" else
+                           "5 and 6 are nearest (at some parameter values): axis 6 must meet "
+                           "axis 5 (the Universal Robots geometry)")
                     )  # fmt: skip
 
     def _forward_sign(self, g) -> float:
