@@ -252,8 +252,8 @@ class DerivedClosedForm(WaistArm):
                 q6, a5_1 = wr.ur_pitch(m, self, cols, v["c1"], v["s1"], q5, tag)
                 psi, cp, spsi, _ = self._pitch(m, a5_1, tag)
                 arm = {**v, "psi": psi, "cp": cp, "sp": spsi, "conds": []}
-                extra = [(Status.DEGENERATE, m.le(flip, ctx["band"]))]
                 elbows = self._plane_elbows(m, g, arm, side, tag, ctx)
+                extra = [(Status.DEGENERATE, m.le(flip, ctx["band"]))]
                 arm["branches"] = {f"{side}-{e}-{wrist}": ((*q, q5, q6), extra)
                                    for e, q in elbows.items()}  # fmt: skip
                 arm["flip"] = dict.fromkeys(arm["branches"], flip)

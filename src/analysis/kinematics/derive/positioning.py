@@ -306,7 +306,7 @@ class WaistArm(FamilyForm):
         rho = m.let("rho", m.sqrt(rho2))
         ell, cyl = 0.0, None
         if not self.lateral_zero:
-            ell = m.let("lateral", (g["hq1"] - self._uw1 * xa) / self._nu)
+            ell = m.let("lateral", (g["hq1"] - sp.mul(self._uw1, xa)) / self._nu)
             cyl = m.let("inside_cylinder", m.abs(ell) - rho)
             refusals.append((Status.INSIDE_REACH, m.gt(cyl, tol)))
         on_axis = m.le(rho, axis_tol)

@@ -35,6 +35,7 @@ from analysis.kinematics.dh import _add, _mul
 __all__ = [
     "across",
     "add",
+    "mul",
     "cross",
     "dot",
     "norm_sq",
@@ -45,6 +46,13 @@ __all__ = [
     "sub",
     "waist_offset",
 ]
+
+
+def mul(k, x):
+    """``k x`` for a plain number ``k`` and a value of ``m``: exact where ``k`` is 0 or +-1,
+    as the recorder simplifies it (a numpy ``0.0 * x`` is an array of zeros that would turn
+    a constant it meets into a REAL of the PLC model, where the program folds it)."""
+    return _mul(k, x)
 
 
 def add(a, b) -> tuple:
