@@ -59,8 +59,9 @@ AWLSIM_MEMO := $(CURDIR)/build/awlsim-memo
 # download or compilation at test time.
 ST_ENGINE := $(VENV)/bin/analysis-st-run
 ST_SOURCES := tools/st-engine/requirements.txt tools/st-engine/st_run.cpp
+KIN_ORACLE := $(VENV)/bin/analysis-kin-oracle
 
-st-engine: $(ST_ENGINE)
+st-engine: $(ST_ENGINE) $(KIN_ORACLE)
 
 # make test builds the engine where g++ is (CI: .ci/run installs it); on a machine with only the
 # README's prerequisites the ST engine tests are skipped, saying why (analysis.plc.st_engine).
@@ -77,6 +78,14 @@ $(ST_ENGINE): $(ST_SOURCES) | $(STAMP)
 	g++ -std=c++17 -O2 -ffp-contract=off -fno-fast-math \
 	  -DST_RUN_KEY='"'$$(cat $(ST_SOURCES) | sha256sum | cut -c1-16)'"' \
 	  -Ibuild/st-engine/pyplcopen-0.21.0/core tools/st-engine/st_run.cpp -o $@.tmp
+	mv $@.tmp $@
+
+# pyplcopen's own kinematics (core/kin of the same sdist) as an oracle of the derived closed
+# forms (analysis.kinematics.derive.plcopen_oracle): tools/st-engine/kin_oracle.cpp, built beside
+# the engine from the sources it unpacked.
+$(KIN_ORACLE): tools/st-engine/kin_oracle.cpp $(ST_ENGINE)
+	g++ -std=c++17 -O2 -ffp-contract=off -fno-fast-math \
+	  -Ibuild/st-engine/pyplcopen-0.21.0/core tools/st-engine/kin_oracle.cpp -o $@.tmp
 	mv $@.tmp $@
 
 test: $(STAMP) st-engine-if-gxx

@@ -246,10 +246,10 @@ class DerivedClosedForm(WaistArm):
             a6 = apply_columns(cols, mat_vec(self._R0T, self.structure.axes[5]))
             a6_1 = sp.rotate(self._w1, a6, v["c1"], -v["s1"])
             q5s, flip = wr.ur_q5(m, self._u, self._w5, tuple(self.structure.axes[5]), a6_1, side)
-            for wrist, q5 in zip(wr.WRISTS, q5s, strict=True):
+            for wrist, (q5, c5, s5) in zip(wr.WRISTS, q5s, strict=True):
                 tag = f"{side}_{wrist}"
                 q5 = m.let(f"theta5_{tag}", q5)
-                q6, a5_1 = wr.ur_pitch(m, self, cols, v["c1"], v["s1"], q5, tag)
+                q6, a5_1 = wr.ur_pitch(m, self, cols, v["c1"], v["s1"], (c5, s5), tag)
                 psi, cp, spsi, _ = self._pitch(m, a5_1, tag)
                 arm = {**v, "psi": psi, "cp": cp, "sp": spsi, "conds": []}
                 elbows = self._plane_elbows(m, g, arm, side, tag, ctx)
@@ -271,14 +271,13 @@ class DerivedClosedForm(WaistArm):
                        q5=m.wrap(sp.pk1(m, self._w5, self._n5, n1)))  # fmt: skip
         elif fam == "4R-kept":
             arm["psi"], arm["cp"], arm["sp"] = self.structure.keep
-        elbows = self._plane_elbows(m, g, arm, side, side, ctx)
+        turns = {"up": [], "down": []} if fam == "6R-wrist" else None
+        elbows = self._plane_elbows(m, g, arm, side, side, ctx, turns)
         if fam == "6R-wrist":
             arm["branches"], arm["flip"] = {}, {}
-            turn1 = (v["c1"], v["s1"])
             for e, (q2, q3) in elbows.items():
-                turns = (turn1, (m.cos(q2), m.sin(q2)), (m.cos(q3), m.sin(q3)))
-                sols, flip = wr.spherical(m, self.structure.axes, self._R0T, cols, turns,
-                                          f"{side}_{e}")  # fmt: skip
+                sols, flip = wr.spherical(m, self.structure.axes, self._R0T, cols,
+                                          [(v["c1"], v["s1"]), *turns[e]], f"{side}_{e}")
                 extra = [(Status.DEGENERATE, m.le(flip, ctx["band"]))]
                 for wrist, q in sols.items():
                     arm["branches"][f"{side}-{e}-{wrist}"] = ((q2, q3, *q), extra)
@@ -288,14 +287,15 @@ class DerivedClosedForm(WaistArm):
             arm["branches"] = {f"{side}-{e}": ((*q, *tail), []) for e, q in elbows.items()}
         yield side, arm
 
-    def _plane_elbows(self, m, g, arm, side, tag, ctx) -> dict:
-        """The arm plane's reach and both elbows: {"up": joints 2.., "down": ...}."""
+    def _plane_elbows(self, m, g, arm, side, tag, ctx, turns=None) -> dict:
+        """The arm plane's reach and both elbows: {"up": joints 2.., "down": ...}; ``turns``
+        {"up": [], "down": []} receives each elbow's joint 2 and 3 cosines and sines."""
         t, c, gam, sg = self._plane(m, g, arm, tag, ctx, ctx["tol"], ctx["axis_tol"],
                                     ctx["precise"])  # fmt: skip
         return {
             elbow: self._elbow(m, g, t, c, gam, sg,
                                self.s_up[side] * (1.0 if elbow == "up" else -1.0), arm, tag,
-                               elbow)  # fmt: skip
+                               elbow, None if turns is None else turns[elbow])  # fmt: skip
             for elbow in ("up", "down")
         }
 

@@ -15,8 +15,9 @@ joints turn nothing, so the wrist is solved first and the slides after:
    and offsets: exact).
 
 The slides' strokes (``limits_mm``) bound the reachable set: a target whose slides would pass a
-stroke end is refused (``out-of-reach``) unless the slides' overshoot moves the carried
-point by at most ``tol`` (then each slide is put on its end); ``outside`` is that
+stroke end by more than ``tol`` is refused (``out-of-reach``; a negative ``tol``, the PLC's
+band, refuses within it of an end), and one whose overshoot moves the carried point by more
+than ``tol`` (a corner); within, each slide is put on its end. ``outside`` is that
 displacement, or minus the distance to the nearest stroke face inside. Branches: ``single``
 (no wrist, a roll) or the wrist's ``noflip`` and ``flip`` (:data:`.wrist.WRISTS`); a
 spherical wrist on its flip (axes 4 and 6 aligned) is refused (``degenerate``).
@@ -117,9 +118,10 @@ class GantryArm(FamilyForm):
         refusals, wrists, conds = [], {"single": ()}, {}
         if fam == "gantry-roll":
             m.section("the roll (alpha)")
-            q4 = m.let("q4", m.wrap(self.k_up * (p[3] - self.alpha0)))
-            c = sp.sub(pos, sp.rotate(tuple(self.structure.axes[3]), g["o"], m.cos(q4),
-                                      m.sin(q4)))  # fmt: skip
+            d = self.k_up * (p[3] - self.alpha0)
+            c4, s4 = m.cos(d), m.sin(d)  # any alpha: read by its sine and cosine
+            q4 = m.let("q4", m.atan2(s4, c4))
+            c = sp.sub(pos, sp.rotate(tuple(self.structure.axes[3]), g["o"], c4, s4))
             wrists = {"single": (q4,)}
         elif fam == "gantry-wrist":
             m.section("the spherical wrist (PK2, PK1)")
@@ -133,9 +135,11 @@ class GantryArm(FamilyForm):
         m.section("the slides: q = D^-1 (c - c0), within their strokes")
         q = mat_vec(self._Dinv, sp.sub(c, g["c0"]))
         q = [m.let(f"q{j + 1}", v) for j, v in enumerate(q)]
+        excess = [m.select(m.gt(v - hi, lo - v), v - hi, lo - v)  # signed: < 0 inside
+                  for v, lo, hi in zip(q, self._lo, self._hi, strict=True)]  # fmt: skip
+        refusals.append((Status.OUT_OF_REACH, m.any_(*(m.gt(e, tol) for e in excess))))
         over = [m.select(m.gt(v, hi), v - hi, m.select(m.lt(v, lo), v - lo, 0.0))
                 for v, lo, hi in zip(q, self._lo, self._hi, strict=True)]  # fmt: skip
-        refusals.append((Status.OUT_OF_REACH, m.any_(*(m.gt(m.abs(e), tol) for e in over))))
         moved = mat_vec(self._D, over)
         moved2 = m.let("overshoot2", sp.norm_sq(moved))
         refusals.append((Status.OUT_OF_REACH, m.gt(moved2, tol * tol)))

@@ -8,7 +8,9 @@ problem splits (Murray, Li and Sastry, sec. 3.2; the subproblems of :mod:`.subpr
 1. **the turn** (three revolute joints): the tool's turn about ``u`` is the sum
    ``S = sum sigma_i q_i`` (``sigma_i = +-1``: the axis along or against ``u``), set by the
    input ``alpha`` (RPY, the turn about z: ``S = k (alpha - alpha0)``, ``k = +-1`` as ``u``
-   points up or down, ``alpha0`` the tool's at q = 0); the point of the third axis is then
+   points up or down, ``alpha0`` the tool's at q = 0; taken as ``atan2(sin, cos)``, so any
+   alpha, as the RPY angles of a pose, is read by its sine and cosine); the point of the
+   third axis is then
    the target less the tool's offset from it turned by ``S``;
 2. **the elbow**: PK3 in the plane across ``u``, the law of cosines of the two links
    between the first two axes and the solved point, ``cos(bend) = (d^2 - La^2 - Lb^2) /
@@ -151,8 +153,10 @@ class PlanarArm(FamilyForm):
         turn, w = None, pos
         if len(self.rev) == 3:
             m.section("the turn about the parallel axes (alpha), the third axis's point")
-            turn = m.let("turn", m.wrap(self.k_up * (p[-1] - self.alpha0)))
-            w = sp.sub(pos, sp.rotate(u, g["o"], m.cos(turn), m.sin(turn)))
+            d = self.k_up * (p[-1] - self.alpha0)
+            ct, st_ = m.cos(d), m.sin(d)  # any alpha: RPY angles are used by sine and cosine
+            turn = m.let("turn", m.atan2(st_, ct))
+            w = sp.sub(pos, sp.rotate(u, g["o"], ct, st_))
         m.section("the elbow (PK3: law of cosines), the first joint (PK1)")
         t = sp.across(u, sp.sub(w, g["P0"]))
         d2 = m.let("d2", sp.norm_sq(t))

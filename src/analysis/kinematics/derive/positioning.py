@@ -390,9 +390,11 @@ class WaistArm(FamilyForm):
         c, gam, sg = sp.pk3_cos(m, d2, g["la2"], g["lb2"], g["la"], g["lb"], precise=precise)
         return t, m.let(f"cos_bend_{tag}", c), m.let(f"bend_{tag}", gam), sg
 
-    def _elbow(self, m, g, t, c, gam, sg, s, v, tag, elbow):
+    def _elbow(self, m, g, t, c, gam, sg, s, v, tag, elbow, turns=None):
         """Joints 2.. of one branch: the bend ``s * gamma`` (PK3's root), the shoulder by
-        PK1 onto the solved point, the last parallel joint from the pitch."""
+        PK1 onto the solved point, the last parallel joint from the pitch. A list ``turns``
+        receives the cosines and sines of joints 2 and 3 (for a wrist that follows), from
+        PK1's arguments and the bend's own cosine and sine: no trigonometry."""
         st = self.structure
         u = self._u
         la, lb = g["la"], g["lb"]
@@ -402,8 +404,14 @@ class WaistArm(FamilyForm):
             c0, s0 = g["ab"] / (la * lb), g["axb"] / (la * lb)
             cb, sb = c * c0 + (s * sg) * s0, (s * sg) * c0 - c * s0
         vec = sp.add(g["a"], sp.rotate(u, g["b"], cb, sb))  # shoulder -> wrist at q2 = 0
-        phi2 = sp.pk1(m, u, vec, t)
         sig = st.sigma
+        if turns is None:
+            phi2 = sp.pk1(m, u, vec, t)
+        else:
+            phi2, c2, s2 = sp.pk1_cs(m, u, vec, t)
+            # cos/sin of q3 = sig3 (s gamma - beta0), beta0 = atan2(axb, ab): (cb, -sb) the
+            # bend's cos and sin seen from the upper arm turned back by beta0
+            turns += [(c2, sp.mul(sig[0], s2)), (cb, sp.mul(sig[1], sb))]
         q2 = m.let(f"theta2_{tag}_{elbow}", m.wrap(sig[0] * phi2))
         if self.bend_zero:
             q3 = sig[1] * (s * gam)

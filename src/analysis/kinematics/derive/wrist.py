@@ -31,6 +31,7 @@ from __future__ import annotations
 import numpy as np
 
 from analysis.kinematics.derive import subproblems as sp
+from analysis.kinematics.dh import exact_cos_sin
 from analysis.kinematics.derive.positioning import apply_columns, mat_vec, transpose_apply
 
 __all__ = ["WRIST_BAND", "WRIST_TOL_RAD", "WRISTS", "pick_noflip", "spherical", "ur_pitch",
@@ -63,10 +64,11 @@ def _turn_back(m, axes, qs, vec):
     return vec
 
 
-def pick_noflip(m, q5_a, q5_b, a, b):
-    """Branches ``a`` and ``b`` (tuples of joint values, their q5 ``q5_a``, ``q5_b``) named:
-    ``noflip`` the one whose q5 has a sine >= 0 (``a`` where both do), ``flip`` the other."""
-    first = m.ge(m.sin(q5_a), 0.0)
+def pick_noflip(m, sin_a, a, b):
+    """Branches ``a`` and ``b`` (tuples of joint values; ``sin_a`` the sine of ``a``'s q5)
+    named: ``noflip`` the one whose q5 has a sine >= 0 (``a`` where both do), ``flip`` the
+    other."""
+    first = m.ge(sin_a, 0.0)
     noflip = tuple(m.select(first, x, y) for x, y in zip(a, b, strict=True))
     flip = tuple(m.select(first, y, x) for x, y in zip(a, b, strict=True))
     return {"noflip": noflip, "flip": flip}
@@ -88,15 +90,16 @@ def spherical(m, axes, R0T, cols, turns, tag: str):
     alpha = m.let(f"wrist_along_{tag}", sp.dot(w4, v))
     gam = m.let(f"wrist_flip_{tag}", m.sqrt(sp.norm_sq(sp.cross(w4, v))))
     n45 = tuple(np.cross(w4, w5))
-    sols = []
+    sols, sines = [], []
     for sign in (1.0, -1.0):
         z = sp.add(sp.scale(alpha, w4), sp.scale(sign * gam, n45))
-        q5 = m.wrap(sp.pk1(m, w5, w6, z))
-        q4 = m.wrap(sp.pk1(m, w4, z, v))
-        y = _turn_back(m, (w4, w5), ((m.cos(q4), m.sin(q4)), (m.cos(q5), m.sin(q5))), x)
+        q5, c5, s5 = sp.pk1_cs(m, w5, w6, z)
+        q4, c4, s4 = sp.pk1_cs(m, w4, z, v)
+        y = _turn_back(m, (w4, w5), ((c4, s4), (c5, s5)), x)
         q6 = m.wrap(sp.pk1(m, w6, w5, y))
-        sols.append((q4, q5, q6))
-    picked = pick_noflip(m, sols[0][1], sols[1][1], sols[0], sols[1])
+        sols.append((m.wrap(q4), m.wrap(q5), q6))
+        sines.append(s5)
+    picked = pick_noflip(m, sines[0], sols[0], sols[1])
     for w in WRISTS:
         picked[w] = tuple(m.let(f"theta{4 + k}_{tag}_{w}", q) for k, q in enumerate(picked[w]))
     return picked, gam
@@ -110,21 +113,30 @@ def ur_q5(m, u, w5, w6, a6_1, tag: str):
     sine >= 0), and the sine of the angle between axis 6 and the parallel axes (0 on the
     flip)."""
     s = m.let(f"wrist_flip_{tag}", m.sqrt(sp.norm_sq(sp.cross(u, a6_1))))
-    gam = m.atan2(s, sp.dot(u, a6_1))
+    c = sp.dot(u, a6_1)
+    gam = m.atan2(s, c)
     phi0 = float(np.arctan2(np.dot(u, np.cross(w5, w6)), np.dot(u, w6)))
-    k = 1.0 if np.cos(phi0) >= 0 else -1.0
-    return (m.wrap(phi0 + k * gam), m.wrap(phi0 - k * gam)), s
+    c0, s0 = (float(v) for v in exact_cos_sin(phi0))
+    k = 1.0 if c0 >= 0 else -1.0
+    out = []
+    for sign in (k, -k):  # cos and sin of phi0 + sign gamma (|a6| = 1: (c, s) are gamma's)
+        ks = sp.mul(sign, s)
+        out.append((m.wrap(phi0 + sign * gam), sp.mul(c0, c) - sp.mul(s0, ks),
+                    sp.mul(s0, c) + sp.mul(c0, ks)))  # fmt: skip
+    return tuple(out), s
 
 
-def ur_pitch(m, cf, cols, c1, s1, q5, tag: str):
+def ur_pitch(m, cf, cols, c1, s1, cs5, tag: str):
     """q6 (PK1) and axis 5 where the pose puts it, turned back by the waist (for the pitch,
-    :meth:`.positioning.WaistArm._pitch`), for one wrist solution ``q5``."""
+    :meth:`.positioning.WaistArm._pitch`), for one wrist solution (``cs5``: cos and sin of
+    its q5)."""
     st = cf.structure
     w1, u, w5, w6 = cf._w1, cf._u, cf._w5, tuple(st.axes[5])
     u1 = sp.rotate(w1, u, c1, s1)
     x = mat_vec(st.rotation, transpose_apply(cols, u1))
-    y = sp.rotate(w5, u, m.cos(q5), -m.sin(q5))
-    q6 = m.let(f"theta6_{tag}", m.wrap(sp.pk1(m, w6, x, y)))
-    a5 = sp.rotate(w6, w5, m.cos(q6), -m.sin(q6))
+    y = sp.rotate(w5, u, cs5[0], -cs5[1])
+    q6, c6, s6 = sp.pk1_cs(m, w6, x, y)
+    q6 = m.let(f"theta6_{tag}", m.wrap(q6))
+    a5 = sp.rotate(w6, w5, c6, -s6)
     a5_1 = sp.rotate(w1, apply_columns(cols, mat_vec(cf._R0T, a5)), c1, -s1)
     return q6, a5_1
