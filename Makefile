@@ -56,9 +56,12 @@ AWLSIM_MEMO := $(CURDIR)/build/awlsim-memo
 # pinned source distribution (tools/st-engine/requirements.txt, hash-checked by pip), built once
 # with Debian's g++ against tools/st-engine/st_run.cpp into the venv (about a minute). Rebuilt only
 # when the pin or the driver changes; the binary reports the key of both (st_run --key). No
-# download or compilation at test time.
+# download or compilation at test time. The second binary, analysis-st-machine
+# (tools/st-engine/st_machine.cpp), runs a machine program cycle by cycle with simulated axes
+# (analysis.plc.st_engine.run_machine, stl-run --dialect st); same sources, same key.
 ST_ENGINE := $(VENV)/bin/analysis-st-run
-ST_SOURCES := tools/st-engine/requirements.txt tools/st-engine/st_run.cpp
+ST_MACHINE := $(VENV)/bin/analysis-st-machine
+ST_SOURCES := tools/st-engine/requirements.txt tools/st-engine/st_run.cpp tools/st-engine/st_machine.cpp
 KIN_ORACLE := $(VENV)/bin/analysis-kin-oracle
 
 st-engine: $(ST_ENGINE) $(KIN_ORACLE)
@@ -78,6 +81,10 @@ $(ST_ENGINE): $(ST_SOURCES) | $(STAMP)
 	g++ -std=c++17 -O2 -ffp-contract=off -fno-fast-math \
 	  -DST_RUN_KEY='"'$$(cat $(ST_SOURCES) | sha256sum | cut -c1-16)'"' \
 	  -Ibuild/st-engine/pyplcopen-0.21.0/core tools/st-engine/st_run.cpp -o $@.tmp
+	g++ -std=c++17 -O2 -ffp-contract=off -fno-fast-math \
+	  -DST_RUN_KEY='"'$$(cat $(ST_SOURCES) | sha256sum | cut -c1-16)'"' \
+	  -Ibuild/st-engine/pyplcopen-0.21.0/core tools/st-engine/st_machine.cpp -o $(ST_MACHINE).tmp
+	mv $(ST_MACHINE).tmp $(ST_MACHINE)
 	mv $@.tmp $@
 
 # pyplcopen's own kinematics (core/kin of the same sdist) as an oracle of the derived closed

@@ -31,19 +31,19 @@ def plc_scan_times(n: int = 300) -> dict:
     for name in ("grabber", "palletizer", "gr1", "picker"):
         arm = load_arm(name)
         xyz = sweep_targets(arm)[input_columns(arm)].to_numpy(dtype=float)[:n]
-        text, map_text = generate("s7-300", params=arm.params)
+        text, map_text = generate(arm, "s7-300")
         runner = AwlRunner(text, MemoryMap.from_dict(json.loads(map_text)))
         t0 = time.perf_counter()
         runner.solve(xyz)
         awl = (time.perf_counter() - t0) / len(xyz)
-        prog = build_program(arm.params, None, "function")
+        prog = build_program(arm, None, "function")
         st = emit_st(prog, units=arm.input_units, default_branch=arm.branches[0])
         t0 = time.perf_counter()
         _, run = st_engine.sweep(st, block_name(prog, arm.branches[0]), prog.inputs,
                                  len(prog.outputs), xyz)  # fmt: skip
         wall = (time.perf_counter() - t0) / len(xyz)
         scan = run.scan_ns * 1e-9 / len(xyz)
-        s7200, map200 = generate("s7-200", params=arm.params, motion=False)
+        s7200, map200 = generate(arm, "s7-200", motion=False)
         mmap200 = MemoryMap.from_dict(json.loads(map200))
         ev = S7200Runner(s7200, mmap200)
         t0 = time.perf_counter()

@@ -23,6 +23,9 @@ Cold calls: the first compiled call after a second of idling, with fresh outputs
 whole process, median of 5. Vectorization: packed (ymm/zmm) divide and square-root
 instructions counted in the IK kernel's assembly.
 
+The machine program (benchmarks/machine_scan.py): each arm's 10 s scenario at 4 ms on the ST
+engine (wall and in-scan scans per second) beside awlsim's scans of the same arm's program.
+
 Derived closed forms (benchmarks/derived.py): EAIK's solution sets against the derived
 ones on the seed arms and 120 random arms (20 per family and D-H convention, 50
 configurations each), and the derived seed arms' compiled kernels against numpy and against
@@ -210,6 +213,9 @@ def main(argv=None) -> int:
     from plc_scan import plc_scan_times  # benchmarks/ is the script's folder
 
     plc_scan = plc_scan_times()
+    from machine_scan import machine_scan_times  # the machine program (issue 29 item 7)
+
+    machine_scan = machine_scan_times()
     # the derived closed forms: EAIK's solution sets, and their kernels (benchmarks/derived.py)
     from derived import derived_kernels, eaik_agreement
 
@@ -229,6 +235,7 @@ def main(argv=None) -> int:
         "cold call within 1.5 x warm (fresh outputs)": (rate["compiled"] / cold["compiled"], 1.5),
         "public API within 1.25 x its kernel": (ratio("kernel", "compiled_out"), 1.25),
         "CLI answers in < 0.3 s": (cli, 0.3),
+        "GR-1 machine, 10 s at 4 ms on the ST engine < 2 s": (machine_scan["gr1"]["wall_s"], 2.0),
     }
     doc = {
         "rates_per_s": rate,
@@ -249,6 +256,7 @@ def main(argv=None) -> int:
         "targets": {k: _verdict(k, v, lim) for k, (v, lim) in targets.items()},
         "cli_seconds_median_of_5": cli,
         "plc_scan_us": plc_scan,
+        "machine_scan": machine_scan,
         "derived_closed_forms": derived,
         "vectorization": vec,
         "machine": {
@@ -277,6 +285,11 @@ def main(argv=None) -> int:
         print(f"S7-200   {k:<10} awlsim {v['awlsim_s7200_translated_us_per_scan']:9.1f} us "
               f"(translated), evaluator {v['s7200_evaluator_us_per_scan']:7.1f} us "
               f"({v['awlsim_s7200 / evaluator']:.1f}x)")
+    for k, v in machine_scan.items():
+        print(f"machine  {k:<10} 10 s at 4 ms in {v['wall_s']:.3f} s: "
+              f"{v['machine_scans_per_s_wall']:,.0f} scans/s (wall), "
+              f"{v['machine_scans_per_s_in_scan']:,.0f} in scan; awlsim IK "
+              f"{v['awlsim_ik_scans_per_s']:,.0f} scans/s")
     for k, v in derived["eaik_agreement"].items():
         if isinstance(v, dict):
             print(

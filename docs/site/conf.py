@@ -75,6 +75,11 @@ html_theme_options = {
     "use_sidenotes": False,
     "show_prev_next": True,
     "navigation_with_keys": False,
+    # one search box: the sidebar's (the header's persistent search button was a second one)
+    "navbar_persistent": [],
+    # the front page opens with the four verdicts at a glance, which link to its sections: its
+    # table gets the width of the right-hand contents column (every other page keeps it)
+    "secondary_sidebar_items": {"**": ["page-toc"], "index": []},
 }
 
 
@@ -89,5 +94,14 @@ def _plotly_where_needed(app, pagename, templatename, context, doctree) -> None:
         app.add_js_file("static_explorer.js", priority=900, defer="defer")
 
 
+def _words_whole(app, pagename, templatename, context, doctree) -> None:
+    """A table cell of one word stays on one line (analysis.app.tables.keep_words_whole)."""
+    from analysis.app.tables import keep_words_whole
+
+    if "body" in context and "<t" in context["body"]:
+        context["body"] = keep_words_whole(context["body"])
+
+
 def setup(app) -> None:
     app.connect("html-page-context", _plotly_where_needed)
+    app.connect("html-page-context", _words_whole)

@@ -228,9 +228,9 @@ def test_errata_subcommand_passes_options_through(capsys):
 def test_errata_for_one_paper_generates_its_register_and_never_the_readme(monkeypatch):
     from analysis.audit import register as reg
 
-    assert list(reg._generated(["picker"])) == [reg.register_path("picker")]
+    assert list(reg.generated(["picker"])) == [reg.register_path("picker")]
     monkeypatch.setattr(reg, "available", lambda: ["picker"])  # all papers: the README too
-    assert list(reg._generated(["picker"])) == [
+    assert list(reg.generated(["picker"])) == [
         reg.register_path("picker"),
         reg.PROJECT / "README.md",
     ]

@@ -252,3 +252,41 @@ def test_preview_png_is_the_same_picture_in_a_palette(tmp_path):
     assert len(np.unique(small.reshape(-1, 4), axis=0)) > 150
     with pytest.raises(ValueError, match="colours=300"):
         preview_png(path, colours=300)
+
+
+def test_executing_a_notebook_leaves_no_socket_to_the_garbage_collector(tmp_path):
+    """make report runs under the CLI's warnings.simplefilter("default"): a kernel's zmq sockets
+    left open were ~130 lines of ResourceWarning in its output."""
+    import gc
+    import warnings
+
+    path = tmp_path / "one.ipynb"
+    _notebook(path, "1 + 1", "One cell")
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("default")
+        execute_notebook(path)
+        gc.collect()
+    leaks = [str(w.message) for w in caught if issubclass(w.category, ResourceWarning)]
+    assert not leaks, leaks[:3]
+
+
+def test_third_party_noise_is_kept_out_and_the_projects_warnings_are_not():
+    """What the build ignores (THIRD_PARTY_NOISE) is the dependency's warning only: under the
+    CLI's warnings.simplefilter("default") a warning of the project still shows."""
+    import warnings
+
+    from sphinx.deprecation import RemovedInSphinx11Warning
+
+    from analysis.app.report import _quiet_dependencies
+
+    noise = "'sphinx_book_theme._transforms.HandleFootnoteTransform.app' is deprecated."
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("default")
+        with _quiet_dependencies():
+            warnings.warn(noise, RemovedInSphinx11Warning, stacklevel=1)
+            warnings.warn("analysis: a warning of the project", UserWarning, stacklevel=1)
+            warnings.warn("another RemovedInSphinx11Warning", RemovedInSphinx11Warning,
+                          stacklevel=1)  # fmt: skip
+    assert [str(w.message) for w in caught] == [
+        "analysis: a warning of the project", "another RemovedInSphinx11Warning"
+    ]

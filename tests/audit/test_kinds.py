@@ -103,6 +103,12 @@ def test_table_cells_at_the_printed_decimals():
     assert not cell_matches("10.2", 10.2087, places=2)  # the printed cell fixes two decimals
     assert cell_matches("-91.16", -91.164) and not cell_matches("-91.20", -91.164)
     assert cell_matches("3.1", 3.19, mode="truncate") and not cell_matches("3.2", 3.19, mode="truncate")  # noqa: E501
+    assert [decimals(t) for t in ("45", "17.5", "190.20", "-131.71")] == [0, 1, 2, 2]
+    assert cell_matches("17.5", 17.4915) and not cell_matches("17.49", 17.4849)
+    assert cell_matches("190.20", 190.2087, "truncate") and not cell_matches("190.20", 190.2087)
+    assert not cell_matches("无解", 1.0)  # a word never matches a number
+    with pytest.raises(ValueError, match="mode"):
+        cell_matches("1", 1.0, "floor")
 
 
 # --- claims -------------------------------------------------------------------------------------

@@ -12,6 +12,7 @@ is the one before issue 20 with each deliberate change listed in the register's 
 from __future__ import annotations
 
 import csv
+import re
 import tomllib
 from pathlib import Path
 
@@ -114,11 +115,11 @@ def test_items_table_is_the_register():
 def test_every_printed_cell_is_checked_once():
     """Every cell of the matrices and tables the holds rows expand is either a check that
     holds or a manifestation of a cause (seed 000)."""
-    raw = tomllib.loads((data_dir() / reg.PAPERS["grabber"]).read_text(encoding="utf-8"))
+    raw = tomllib.loads(reg.source_path("grabber").read_text(encoding="utf-8"))
     refs = [m.source for m in reg.register("grabber").manifestations]
     for c in raw["cause"]:
         for e in c.get("each", ()):
-            for _, ref, _, _ in reg._cells(e, context("grabber").paper):
+            for _, ref, _, _ in reg.each_cells(e, context("grabber").paper):
                 assert refs.count(ref) == 1, ref
 
 
@@ -126,7 +127,7 @@ def test_every_printed_cell_is_checked_once():
 def test_printed_texts_are_references_and_checks_never_hold_the_answer(paper):
     """A register refers to printed text (never retypes it), and no check spec contains the
     text it is to decide (a check cannot compare with the register's words)."""
-    raw = tomllib.loads((data_dir() / reg.PAPERS[paper]).read_text(encoding="utf-8"))
+    raw = tomllib.loads(reg.source_path(paper).read_text(encoding="utf-8"))
     for c in raw["cause"]:
         for m in c.get("manifestation", ()):
             p = m["printed"]
@@ -185,3 +186,34 @@ def test_counting_rule_is_one_for_every_paper():
             if c.status in schema.COUNTED:
                 assert c.manifestations, f"{c.id}: a counted cause shows somewhere"
         assert r.summary.get("verdict") and r.summary.get("take_away"), p
+
+
+def test_summary_has_a_headline_and_the_worst_consequence_in_numbers():
+    """Every register's [summary]: a headline of at most 15 words (the front page's verdict at a
+    glance) and the worst consequence with its numbers filled from the checks."""
+    for p in PAPERS:
+        s = reg.register(p).summary
+        assert set(s) == set(schema.SUMMARY_KEYS), p
+        assert len(s["headline"].split()) <= schema.HEADLINE_WORDS, p
+        assert re.search(r"\d", s["worst"]) and "{" not in s["worst"], (p, s["worst"])
+
+
+@pytest.mark.parametrize(
+    ("change", "message"),
+    [
+        ({"colour": "red"}, "unknown key 'colour'"),
+        ({"headline": None}, "missing key 'headline'"),
+        ({"headline": " ".join(["word"] * 16)}, "16 words, at most 15"),
+        ({"headline": "Off by 180 degrees."}, "types a number"),
+        ({"worst": "The arm misses by a lot."}, "names no computed number"),
+        ({"verdict": ""}, "verdict must be a non-empty string"),
+    ],
+)
+def test_summary_schema_refuses(change, message):
+    raw = {"headline": "A short verdict.", "worst": "Off by {facts.x} mm.", "verdict": "v",
+           "take_away": "t"} | change  # fmt: skip
+    raw = {k: v for k, v in raw.items() if v is not None}
+    with pytest.raises(ValueError, match=re.escape(message)):
+        schema.check_summary("paper", raw)
+    schema.check_summary("paper", {"headline": "A short verdict.", "worst": "{facts.x} mm",
+                                   "verdict": "v", "take_away": "t"})  # fmt: skip

@@ -12,6 +12,7 @@ import math
 import pytest
 
 from analysis.audit import vb6
+from analysis.audit.papers.gr1 import listing as gl
 from analysis.papers import gr1_thesis as g
 
 pytestmark = pytest.mark.slow  # seconds per test: run first (tests/conftest.py)
@@ -225,13 +226,13 @@ PRINTED_CELLS = {  # Table 5-4 as assigned in gr1_thesis.TABLE5_4, by output Tex
 
 @pytest.fixture(scope="module")
 def as_printed():
-    return vb6.run_command1(INPUTS)
+    return gl.run_command1(INPUTS)
 
 
 def test_the_printed_listing_does_not_compile():
     with pytest.raises(vb6.VB6SyntaxError, match=r"line 46: expected \) \(near 'Cos'\)"):
-        vb6.VB6Form(vb6.listing(repaired=False))
-    assert len(vb6.LISTING_REPAIRS) == 1
+        vb6.VB6Form(gl.listing(repaired=False))
+    assert len(gl.LISTING_REPAIRS) == 1
 
 
 @pytest.mark.parametrize("box", sorted(PRINTED_CELLS, key=lambda s: int(s[4:])))
@@ -273,7 +274,7 @@ def test_table5_4_depends_on_the_exact_vb_types_and_pi():
         text = vb6.run(source, "Command1_Click", INPUTS, **options)["text"]
         return sum(text[b] == vb6.vb_format(v, "####.###") for b, v in PRINTED_CELLS.items())
 
-    src = vb6.listing()
+    src = gl.listing()
     assert matches(src) == 10
     assert matches(src, dim_types_all=True) == 7
     assert matches(src.replace("As Single", "As Double")) == 8
@@ -283,7 +284,7 @@ def test_table5_4_depends_on_the_exact_vb_types_and_pi():
 
 def test_end_pose_ignores_its_own_orientation(as_printed):
     other = dict(INPUTS, Text10="-70", Text11="10", Text12="5")
-    out = vb6.run_command1(other)
+    out = gl.run_command1(other)
     ends = ("Text18", "Text19", "Text20", "Text21", "Text22")
     assert [out["text"][b] for b in ends] == [as_printed["text"][b] for b in ends]
     assert "α1" in out["locals"] and out["locals"]["α1"].value == -70.0
@@ -292,19 +293,19 @@ def test_end_pose_ignores_its_own_orientation(as_printed):
 def test_gui_check_uses_the_default_property(as_printed):
     assert as_printed["controls"]["Command3"]["props"]["Enabled"].value is True
     far = dict(INPUTS, Text7="1100", Text8="0")  # 1006 mm from the start, horizontally
-    out = vb6.run_command1(far)
+    out = gl.run_command1(far)
     props = out["controls"]["Command3"]["props"]
     assert props["Enabled"].value is True  # not greyed: 'Command3 = False' sets Value
     assert ("Command3", "Value", False) in out["writes"]
     high = dict(INPUTS, Text9="900")  # |dz| = 650 > 600
-    assert vb6.run_command1(high)["controls"]["Command3"]["props"]["Enabled"].value is False
+    assert gl.run_command1(high)["controls"]["Command3"]["props"]["Enabled"].value is False
 
 
 def test_unreachable_target_passes_the_check_and_still_gives_numbers():
     """(600, 10, 0) mm is 600.1 mm from the shoulder, beyond 228 + 228 + 73 = 529 mm; the
     check compares start with end only, and degrees in Sin/Cos keep c3 inside [-1, 1]."""
     far = dict(INPUTS, Text1="600", Text2="10", Text3="0", Text7="600", Text8="10", Text9="0")
-    out = vb6.run_command1(far)
+    out = gl.run_command1(far)
     assert out["controls"]["Command3"]["props"]["Enabled"].value is True
     assert out["locals"]["c3"].value == pytest.approx(0.7116641922908243, abs=1e-12)
     assert [out["text"][f"Text{i}"] for i in range(13, 18)] == [
@@ -315,26 +316,26 @@ def test_unreachable_target_passes_the_check_and_still_gives_numbers():
         "13.485",
     ]
     # and where |c3| > 1, Sqr(Abs(1 - c3 * c3)) hides it: a pose 2 m away is "solved"
-    out = vb6.run_command1(dict(INPUTS, Text7="2000", Text8="0", Text9="0"))
+    out = gl.run_command1(dict(INPUTS, Text7="2000", Text8="0", Text9="0"))
     assert out["locals"]["cf3"].value == pytest.approx(39.34130266121716, abs=1e-9)
     assert out["text"]["Text20"] == "44.991"
 
 
 def test_zero_angle_prints_a_dot_and_breaks_the_trajectory_button():
     """Format(0, "####.###") is "." ; Command3_Click then computes b - a with b = "."."""
-    out = vb6.run_command1(dict(INPUTS, Text7="2000", Text8="0", Text9="0"))
+    out = gl.run_command1(dict(INPUTS, Text7="2000", Text8="0", Text9="0"))
     assert out["text"]["Text18"] == "."  # θf1 = Atn(0 / 2000) = 0
     with pytest.raises(vb6.VB6Error) as err:
-        vb6.run(vb6.listing(), "Command3_Click", form=out["form"])
+        vb6.run(gl.listing(), "Command3_Click", form=out["form"])
     assert err.value.number == 13
 
 
 def test_px_zero_raises_division_by_zero():
     with pytest.raises(vb6.VB6Error) as err:
-        vb6.run_command1(dict(INPUTS, Text1="0"))
+        gl.run_command1(dict(INPUTS, Text1="0"))
     assert err.value.number == 11
     with pytest.raises(vb6.VB6Error) as err:  # empty form: Val("") / Val("") = 0 / 0
-        vb6.run_command1({})
+        gl.run_command1({})
     assert err.value.number == 6
 
 
@@ -357,7 +358,7 @@ def test_printed_joint_values_miss_the_table5_3_positions():
 
 
 def test_command3_trajectory_after_command1(as_printed):
-    out = vb6.run(vb6.listing(), "Command3_Click", form=as_printed["form"])
+    out = vb6.run(gl.listing(), "Command3_Click", form=as_printed["form"])
     loc = out["locals"]
     # d = a + 3(b - a) - 2(b - a) should equal b; 3 / (c * c) is a Single, so it misses
     assert out["module"]["d"].value == pytest.approx(-24.68299747055955, abs=1e-12)
@@ -372,5 +373,5 @@ def test_command3_trajectory_after_command1(as_printed):
 
 
 def test_command4_clears_every_textbox(as_printed):
-    out = vb6.run(vb6.listing(), "Command4_Click", form=as_printed["form"])
+    out = vb6.run(gl.listing(), "Command4_Click", form=as_printed["form"])
     assert set(out["text"].values()) == {""} and len(out["text"]) == 22

@@ -333,7 +333,7 @@ def s7200_program(arm: str) -> tuple[str, dict]:
     """The arm's generated S7-200 program (a file kept for the session) and its MAP.json."""
     from analysis.plc.generate import generate
 
-    text, mjson = generate("s7-200", params=arm_of(arm).params)
+    text, mjson = generate(arm_of(arm), "s7-200")
     path = Path(tempfile.mkdtemp(prefix="hostile-stl-run-")) / f"{arm}.awl"
     path.write_text(text, encoding="utf-8")
     return str(path), json.loads(mjson)

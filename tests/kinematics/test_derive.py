@@ -167,7 +167,7 @@ def test_random_arms_backends_agree(user_arms, rng):
         ref = arm.solve(p, arm.branches[:1], margin_mm=1e-3, margin_rad=2e-5)
         from analysis.kinematics.ops import Float32Ops
 
-        model = predict(arm.params, p, ops=Float32Ops())
+        model = predict(arm, p, ops=Float32Ops())
         ok = ref.ok[:, 0] & model.reachable
         assert (ok == ref.ok[:, 0]).mean() > 0.99
         c = angles_to_pulses(ref.theta[ok, 0], np.asarray(arm.params.pulses_per_rev))

@@ -24,13 +24,13 @@ import math
 import numpy as np
 import pytest
 
+from analysis.audit.papers.gr1.thesis import gr1_arm, pose_of, thesis_poses
 from analysis.kinematics import compiled, rpy
 from analysis.kinematics.arm import BaseAxisError, OrientationError, Status, UnreachableError
 from analysis.kinematics.arms import gr1 as cf
 from analysis.kinematics.ops import numpy_ops
 from analysis.kinematics.pinocchio_model import PinocchioArm
 from analysis.papers import gr1_thesis as paper
-from analysis.studies.gr1 import gr1_arm, pose_of, thesis_poses
 from helpers import angle_diff, assert_allclose, assert_points_close, reference_link, rot_x, rot_z
 
 MM = 1e-9

@@ -15,7 +15,7 @@ import sympy as sp
 from hypothesis import given
 from hypothesis import strategies as st
 
-from analysis.audit.poe_checks import dh_arm_names
+from analysis.audit.papers.picker.poe_checks import dh_arm_names
 from analysis.kinematics import poe
 from analysis.kinematics.arm import load_arm
 from analysis.kinematics.dh import DHTable

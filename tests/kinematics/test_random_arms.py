@@ -153,7 +153,7 @@ def _check_arm(path: Path, family: str) -> None:
     assert prog.read_text("utf-8").count("\n") > 100
     assert list(json.loads(mp.read_text("utf-8"))["inputs"]) == list(arm.inputs)
     ref, ok_ref, status, _ = reference_pulses(arm, pts)
-    model = predict(arm.params, pts, ops=Float32Ops())
+    model = predict(arm, pts, ops=Float32Ops())
     agree = model.status == status
     assert agree.mean() > 0.97  # the rest: a REAL distance within float32 of a boundary
     both = ok_ref & model.reachable
@@ -217,7 +217,7 @@ def test_random_arms_on_awlsim(family, tmp_path):
     bad[0, 0], bad[1, 1] = np.nan, np.inf
     t = np.concatenate([p, box, bad])
     branch = arm.branches[int(np.argmax(arm.solve(p).ok.sum(axis=0)))]  # within the limits
-    text, mjson = generate("s7-300", branch, params=arm.params)
+    text, mjson = generate(arm, "s7-300", branch)
     res = sweep(text, MemoryMap.from_dict(json.loads(mjson)), t, sentinel=-999_999).result
     frame = pd.DataFrame(t, columns=input_columns(arm)).assign(kind="random")
     cmp = compare(res, frame, arm, branch, "s7-300", -999_999)
@@ -233,7 +233,7 @@ def test_random_arms_on_awlsim(family, tmp_path):
         engine = st_engine.engine_path()
     except st_engine.EngineMissing:
         return  # make st-engine builds it (g++); test_st_engine.py says so where it skips
-    prog = build_program(arm.params, branch, "function")
+    prog = build_program(arm, branch, "function")
     text = emit_st(prog, units=arm.input_units, default_branch=arm.branches[0])
     res_st, run = st_engine.sweep(text, block_name(prog, arm.branches[0]), prog.inputs,
                                   len(prog.outputs), t, -999_999, engine)  # fmt: skip

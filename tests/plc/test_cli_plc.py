@@ -10,6 +10,7 @@ from pathlib import Path
 import pytest
 
 from analysis.app.cli import main
+from analysis.kinematics.arm import paper_arm
 from analysis.plc.generate import generate
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -21,7 +22,7 @@ def programs(tmp_path_factory):
     d = tmp_path_factory.mktemp("stl-run")
     out = {}
     for dialect in ("s7-200", "s7-300"):
-        text, _ = generate(dialect)
+        text, _ = generate(paper_arm(), dialect)
         p = d / f"ik-{dialect}.awl"
         p.write_bytes(text.encode("utf-8"))
         out[dialect] = p

@@ -37,7 +37,7 @@ OFFSETS = [0.0, 1e-9, -1e-9, 5e-7, -5e-7, 1e-6, -1e-6, 2e-6, -2e-6, 1e-4, -1e-4,
 def _model_run(targets, branch, dialect, trig, theta1_on_axis=None) -> RunResult:
     """What the PLC returns according to the float32 model (outputs unchanged if refused)."""
     m = predict(
-        ARM.params,
+        ARM,
         targets,
         branch,
         ops=PlcFloat32Ops(dialect, trig),

@@ -17,6 +17,7 @@ import json
 import numpy as np
 import pytest
 
+from analysis.audit.papers.gr1.thesis import gr1_arm, project_orientation, thesis_poses
 from analysis.kinematics.status import Status
 from analysis.plc.generate import generate
 from analysis.plc.memmap import MemoryMap, default_map
@@ -25,7 +26,6 @@ from analysis.plc.runner import AwlRunner, sweep
 from analysis.plc.sweep import SweepSizes, sweep_targets
 from analysis.plc.translate import translate_s7200
 from analysis.plc.verify import compare
-from analysis.studies.gr1 import gr1_arm, project_orientation, thesis_poses
 
 pytestmark = pytest.mark.slow  # seconds per test: run first (tests/conftest.py)
 
@@ -40,7 +40,7 @@ def _source(variant: str, branch: str):
     ``stl`` command's path); the S7-200 text translated to AWL for awlsim."""
     dialect = "s7-300" if variant.startswith("s7-300") else "s7-200"
     trig = "native" if variant == "s7-300-native" else "subroutine"
-    text, map_json = generate(dialect, branch, trig, params=ARM.params)
+    text, map_json = generate(ARM, dialect, branch, trig)
     mmap = MemoryMap.from_dict(json.loads(map_json))
     src = text if dialect == "s7-300" else translate_s7200(text).awl
     assert mmap == default_map(dialect, COLS, 5)
@@ -121,7 +121,7 @@ def test_generate_for_a_pose_arm():
     """generate() names six REAL inputs and five DINT counts; no example pose on startup
     (the closed form's STARTUP_TARGET is None), so the first scan sees zeros: base axis."""
     for dialect in ("s7-300", "s7-200"):
-        text, map_json = generate(dialect, params=ARM.params)
+        text, map_json = generate(ARM, dialect)
         m = json.loads(map_json)
         assert list(m["inputs"]) == COLS and [f"c{k}" for k in range(1, 6)] == [
             k for k in m["outputs"] if k.startswith("c")
@@ -139,6 +139,6 @@ def test_model_predicts_awlsim_on_the_s7200_subroutines(targets):
     pts = _branch_targets("front-down", targets)[COLS].to_numpy()
     src, mmap, _ = _source("s7-200-translated", "front-down")
     res = sweep(src, mmap, pts, sentinel=SENTINEL).result
-    model = predict(ARM.params, pts, "front-down")
+    model = predict(ARM, pts, "front-down")
     np.testing.assert_array_equal(model.status, res.status)
     np.testing.assert_array_equal(model.pulses[model.reachable], res.pulses[res.reachable])

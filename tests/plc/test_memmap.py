@@ -9,22 +9,24 @@ import json
 
 import pytest
 
-from analysis.kinematics.arm import load_arm
+from analysis.audit.papers.gr1.thesis import gr1_arm
+from analysis.kinematics.arm import load_arm, paper_arm
 from analysis.kinematics.status import Status
 from analysis.plc.generate import generate
 from analysis.plc.memmap import CPUS, SCHEMA, MemoryMap, default_map, map_document
-from analysis.studies.gr1 import gr1_arm
+
+PAPER = paper_arm()
 
 
 def _doc(dialect="s7-200", **kw) -> dict:
-    return json.loads(generate(dialect, **kw)[1])
+    return json.loads(generate(kw.pop("arm", PAPER), dialect, **kw).map)
 
 
 @pytest.mark.parametrize("dialect", ["s7-200", "s7-300"])
 def test_the_gr1_map_gives_its_angles_in_radians_and_every_status(dialect):
     """The GR-1's alpha/beta/gamma are radians (the map said "inputs: mm"); its program
     writes statuses 5 and 7 too (the list omitted them; 7 in 385 of 4,079 scans)."""
-    d = _doc(dialect, params=gr1_arm().params)
+    d = _doc(dialect, arm=gr1_arm())
     units = {k: v["unit"] for k, v in d["signals"].items() if v["direction"] == "input"}
     assert units == {
         "px": "mm",
@@ -84,10 +86,10 @@ def test_the_startup_is_stated():
 def test_the_target_cpu_limits_are_checked_at_generation():
     """The GR-1 program uses M bytes up to MB351: an S7-300 CPU 314 has 256 (refused,
     naming the CPU and the limit); the CPU 315-2 DP (2048, awlsim's) takes it."""
-    gr1 = gr1_arm().params
-    assert _doc("s7-300", params=gr1)["memory"][-1]["last"] == 351
+    gr1 = gr1_arm()
+    assert _doc("s7-300", arm=gr1)["memory"][-1]["last"] == 351
     with pytest.raises(ValueError, match=r"MB351, beyond the CPU 314's M memory \(MB0-MB255\)"):
-        generate("s7-300", params=gr1, cpu="CPU 314")
+        generate(gr1, "s7-300", cpu="CPU 314")
     with pytest.raises(ValueError, match="CPU 221"):
         MemoryMap(
             "s7-200", {"px": 2048, "py": 4, "pz": 8}, default_map("s7-200").outputs, 3000, "CPU 221"
@@ -102,7 +104,7 @@ def test_the_target_cpu_limits_are_checked_at_generation():
         {"c1": 6100, "c2": 6104, "c3": 6108, "reachable": (6112, 0), "status": 6116},
         6200,
     )
-    text, mjson = generate("s7-200", mmap=big, motion=False)  # a CPU 224 has VB0-VB8191
+    text, mjson = generate(PAPER, "s7-200", mmap=big, motion=False)  # a CPU 224 has VB0-VB8191
     assert "VD6000" in text and json.loads(mjson)["inputs"]["px"] == "VD6000"
     assert MemoryMap.from_dict(json.loads(mjson)) == big
 
@@ -110,7 +112,7 @@ def test_the_target_cpu_limits_are_checked_at_generation():
 def test_maps_round_trip_and_old_maps_still_read():
     for arm in ("grabber", "palletizer"):
         for dialect in ("s7-200", "s7-300"):
-            d = _doc(dialect, params=load_arm(arm).params)
+            d = _doc(dialect, arm=load_arm(arm))
             assert MemoryMap.from_dict(d) == default_map(
                 dialect, d["inputs"], 3 + (arm != "grabber")
             )

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import pytest
 
+from analysis.kinematics.arm import paper_arm
 from analysis.plc.generate import generate
 from analysis.plc.memmap import default_map
 
@@ -108,7 +109,7 @@ def _move(plc, target) -> None:
 
 @pytest.mark.parametrize("engine", [_Awlsim, _Evaluator])
 def test_target_changed_mid_move_changes_nothing_until_the_move_ends(engine):
-    plc = engine(generate("s7-200")[0])
+    plc = engine(generate(paper_arm(), "s7-200").program)
     _move(plc, ROW1)
     # the position reached is the latched target, not the IK's current output (row 6)
     assert [plc.dint(b) for b in (124, 128, 132)] == list(C_ROW1)

@@ -130,19 +130,19 @@ def test_random_straight_line_code_leaves_the_same_memory(body):
 def test_a_generated_program_leaves_the_same_memory_after_every_scan(dialect):
     """The GR-1 program (its S7-200 text translated), with and without the pass: the whole
     M area equal after each of 60 scans over the seeded pose sweep."""
+    from analysis.audit.papers.gr1.thesis import gr1_arm
     from analysis.plc.generate import generate
     from analysis.plc.sweep import sweep_targets
     from analysis.plc.translate import translate_s7200
-    from analysis.studies.gr1 import gr1_arm
 
     arm = gr1_arm()
-    text, map_json = generate(dialect, "front-up", "subroutine", params=arm.params)
+    text, map_json = generate(arm, dialect, "front-up", "subroutine")
     mmap = MemoryMap.from_dict(json.loads(map_json))
     if dialect == "s7-200":
         plain, optimized = (translate_s7200(text, optimize=o).awl for o in (False, True))
     else:
-        plain, optimized = generate(dialect, "front-up", "subroutine", params=arm.params,
-                                    optimize=False)[0], text  # fmt: skip
+        plain, optimized = generate(arm, dialect, "front-up", "subroutine",
+                                    optimize=False).program, text  # fmt: skip
     assert len(optimized.splitlines()) < len(plain.splitlines())
     targets = sweep_targets(arm)[list(arm.inputs)].to_numpy()[::19][:60]
     runs = [AwlRunner(src, mmap) for src in (plain, optimized)]

@@ -46,7 +46,7 @@ def targets():
 
 
 def _source(dialect: str, trig: str):
-    text, map_json = generate(dialect, "front", trig, params=ARM.params)
+    text, map_json = generate(ARM, dialect, "front", trig)
     mmap = MemoryMap.from_dict(json.loads(map_json))
     assert mmap == default_map(dialect, COLS, 6)
     return (text if dialect == "s7-300" else translate_s7200(text).awl), mmap
@@ -89,7 +89,7 @@ def test_float32_model_against_python_on_a_wider_sweep():
     or a revolution apart at the wrap cut."""
     t = sweep_targets(ARM, seed=7, sizes=SweepSizes(config=1500))
     xyz = t[COLS].to_numpy()
-    model = predict(ARM.params, xyz, "front", ops=PlcFloat32Ops("s7-300", "native"))
+    model = predict(ARM, xyz, "front", ops=PlcFloat32Ops("s7-300", "native"))
     ok = model.status == 0
     res = RunResult(np.where(ok[:, None], model.pulses, SENTINEL), ok, status=model.status)
     c = compare(res, t, ARM, "front", "s7-300", SENTINEL, "native")

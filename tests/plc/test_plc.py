@@ -11,7 +11,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from analysis.kinematics.arm import BRANCHES
+from analysis.kinematics.arm import BRANCHES, Arm, paper_arm
 from analysis.kinematics.params import paper_params
 from analysis.plc.approx import acos_f32, atan2_f32, atan_coefficients, measure_errors
 from analysis.plc.emit import emit_s7200, fmt_real
@@ -21,13 +21,14 @@ from analysis.plc.memmap import MemoryMap, default_map, parse_address
 from analysis.plc.translate import translate_s7200
 
 GOLDEN = Path(__file__).parent / "golden"
+PAPER = paper_arm()
 ROOT = Path(__file__).resolve().parents[2]
 
 
 @pytest.mark.parametrize("dialect", ["s7-200", "s7-300"])
 def test_emitted_text_matches_golden(dialect):
     # golden files reviewed by eye once, then frozen; regenerate deliberately if the IR changes
-    text, mjson = generate(dialect)
+    text, mjson = generate(PAPER, dialect)
     assert text == (GOLDEN / f"plc_{dialect}_front-up.awl").read_text(
         encoding="utf-8", errors="strict"
     ).replace("\r\n", "\n").replace("\n", "\r\n" if dialect == "s7-200" else "\n")
@@ -41,7 +42,7 @@ def test_golden_s7200_has_paper_structure():
     assert "VD0" in text and not any(
         ln.split()[-1] in ("VD0", "VD4", "VD8") for ln in text.splitlines() if ln.startswith("MOV")
     )
-    paper = generate("s7-200", startup_target="paper")[0]
+    paper = generate(PAPER, "s7-200", startup_target="paper").program
     assert "LD     SM0.1\r\nMOVR   100.0, VD0\r\nMOVR   100.0, VD4\r\nMOVR   600.0, VD8" in paper
     for needle in (
         "ORGANIZATION_BLOCK MAIN:OB1",
@@ -57,7 +58,7 @@ def test_golden_s7200_has_paper_structure():
 
 
 def test_no_link_length_typed_into_emitters():
-    p = paper_params().with_(L2=321.0, L3=123.0)
+    p = Arm(paper_params().with_(L2=321.0, L3=123.0))
     text = emit_s7200(build_program(p))
     # the lengths come from the parameters: L2, L2 + L3 (the reach) and L2^2 + L3^2 (eq. 10)
     assert "321.0" in text and "444.0" in text and str(321.0**2 + 123.0**2) in text
@@ -65,7 +66,7 @@ def test_no_link_length_typed_into_emitters():
 
 
 def test_map_json_names_every_address():
-    _, mjson = generate("s7-200")
+    _, mjson = generate(PAPER, "s7-200")
     d = json.loads(mjson)
     assert d["inputs"] == {"px": "VD0", "py": "VD4", "pz": "VD8"}  # Figure 3
     assert d["outputs"] == {
@@ -88,7 +89,7 @@ def test_map_json_names_every_address():
     ],
 )
 def test_bad_maps_raise(bad):
-    d = json.loads(generate(bad["dialect"])[1])
+    d = json.loads(generate(PAPER, bad["dialect"]).map)
     d["inputs"] = bad["inputs"]
     with pytest.raises(ValueError, match=r"M|V|overlap|multiple"):
         MemoryMap.from_dict(d)
@@ -127,9 +128,9 @@ def test_atan2_f32_quadrants_and_origin():
 
 def test_build_program_rejects_bad_options():
     with pytest.raises(ValueError, match="branch"):
-        build_program(paper_params(), "left")
+        build_program(paper_arm(), "left")
     with pytest.raises(ValueError, match="ATAN"):
-        emit_s7200(build_program(paper_params(), trig="native"))
+        emit_s7200(build_program(paper_arm(), trig="native"))
 
 
 @pytest.mark.parametrize(
@@ -149,7 +150,7 @@ def test_translator_rejects_unknown_operand():
 
 @pytest.mark.parametrize("branch", BRANCHES)
 def test_all_branches_emit(branch):
-    text, _ = generate("s7-300", branch)
+    text, _ = generate(PAPER, "s7-300", branch)
     assert f"branch {branch}" in text
 
 
@@ -169,7 +170,7 @@ def test_cli_stl(tmp_path):
     ]
     r = subprocess.run(cmd, capture_output=True, text=True, cwd=ROOT)
     assert r.returncode == 0, r.stderr
-    assert out.read_bytes() == generate("s7-200")[0].encode()
+    assert out.read_bytes() == generate(PAPER, "s7-200").program.encode()
     assert json.loads(mp.read_text())["outputs"]["c1"] == "VD100"
     r = subprocess.run(
         [*cmd[:5], "s7-200", "--trig", "native", "-o", str(out), "--map", str(mp)],
@@ -202,13 +203,13 @@ def test_custom_layout_round_trip_and_execution(tmp_path):
     # a user map with the outputs moved above the default work area (CLI --layout)
     from analysis.plc.runner import AwlRunner
 
-    d = json.loads(generate("s7-300")[1])
+    d = json.loads(generate(PAPER, "s7-300").map)
     d["inputs"] = {"px": "MD20", "py": "MD24", "pz": "MD28"}
     d["outputs"] = {"c1": "MD400", "c2": "MD404", "c3": "MD408", "reachable": "M412.3"}
     (tmp_path / "layout.json").write_text(json.dumps(d))
     mm = MemoryMap.from_json(tmp_path / "layout.json")
     assert mm.work_base == 416
-    text, mjson = generate("s7-300", mmap=mm)
+    text, mjson = generate(PAPER, "s7-300", mmap=mm)
     assert json.loads(mjson)["outputs"]["reachable"] == "M412.3"
     r = AwlRunner(text, mm)
     res = r.solve([[100.0, 100.0, 600.0], [200.0, 500.0, 600.0]], sentinel=7)
@@ -225,7 +226,7 @@ def test_generated_listings_have_no_overlapping_operands(arm_name, dialect):
     from analysis.papers import grabber as paper
     from analysis.plc import stl_eval
 
-    text, _ = generate(dialect, params=load_arm(arm_name).params)
+    text, _ = generate(load_arm(arm_name), dialect)
     area = "V" if dialect == "s7-200" else "M"
     v_text = text.replace(f"{area}D", "VD") if area == "M" else text
     instrs = stl_eval.parse_stl(v_text)

@@ -35,7 +35,7 @@ ARM = Arm(paper_params())
 
 
 def _source(variant: str, branch: str = "front-up", with_program: bool = False):
-    P = ARM.params
+    P = ARM
     if variant.startswith("s7-300"):
         prog = build_program(P, branch, "native" if variant == "s7-300-native" else "subroutine")
         out = emit_s7300(prog), default_map("s7-300"), "s7-300"
@@ -147,7 +147,7 @@ def test_first_scan_keeps_the_hmi_inputs(dialect):
     """The generated start-up writes nothing into the inputs (issue 22: the example target
     overwrote the HMI's at every power-up); Figure 3's example only when asked for, as REALs
     (S7-200 SM0.1 network, S7-300 OB100)."""
-    text, mjson = generate(dialect)
+    text, mjson = generate(ARM, dialect)
     assert "not written" in json.loads(mjson)["startup"]["inputs"]
     src = translate_s7200(text).awl if dialect == "s7-200" else text
     r = AwlRunner(src, default_map(dialect), first_scan=False)
@@ -160,7 +160,7 @@ def test_first_scan_keeps_the_hmi_inputs(dialect):
         264,
         -1013,
     ]  # Table 4 row 6 (python -m analysis ik 200 300 600)
-    text, mjson = generate(dialect, startup_target="paper")
+    text, mjson = generate(ARM, dialect, startup_target="paper")
     assert "overwritten" in json.loads(mjson)["startup"]["inputs"]
     src = translate_s7200(text).awl if dialect == "s7-200" else text
     r = AwlRunner(src, default_map(dialect))  # runs the first scan
@@ -169,7 +169,7 @@ def test_first_scan_keeps_the_hmi_inputs(dialect):
 
 
 def test_motion_sequence_on_two_pto_channels():
-    text, _ = generate("s7-200")
+    text, _ = generate(ARM, "s7-200")
     r = AwlRunner(translate_s7200(text).awl, default_map("s7-200"))
     r.solve([[100.0, 100.0, 600.0]])  # the HMI's target (Table 4 row 1)
     for ch in (0, 1):
@@ -198,7 +198,7 @@ def test_motion_sequence_on_two_pto_channels():
 
 
 def test_unreachable_target_blocks_motion():
-    text, _ = generate("s7-200")
+    text, _ = generate(ARM, "s7-200")
     r = AwlRunner(translate_s7200(text).awl, default_map("s7-200"))
     r.solve([[200.0, 500.0, 600.0]])
     r.write_bit(I_BASE, 0, True)
@@ -337,7 +337,7 @@ def test_translated_call_passes_parameters_by_value():
 def test_program_with_a_waist_angle_for_the_base_axis(variant):
     """Generated with theta1_on_axis: the axis targets solved at that waist, as in Python."""
     waist = 0.5
-    P = ARM.params
+    P = ARM
     if variant.startswith("s7-300"):
         src = emit_s7300(build_program(P, "front-up", "native", theta1_on_axis=waist))
         mmap, dialect, trig = default_map("s7-300"), "s7-300", "native"
@@ -362,5 +362,5 @@ def test_the_scan_watchdog_allows_a_loaded_machine():
     the machine, not of the program). The runner sets it to CYCLE_TIME_LIMIT_US."""
     from analysis.plc.runner import CYCLE_TIME_LIMIT_US
 
-    r = AwlRunner(generate("s7-300")[0], default_map("s7-300"))
+    r = AwlRunner(generate(ARM, "s7-300").program, default_map("s7-300"))
     assert r.sim.getCPU().cycleTimeLimit == CYCLE_TIME_LIMIT_US / 1e6 >= 30

@@ -1,4 +1,4 @@
-"""ST, SCL and PLCopen XML printers (analysis.plc.st, analysis.plc.st_generate): golden
+"""ST, SCL and PLCopen XML printers (analysis.plc.st, analysis.plc.plcopen): golden
 files, SCL as a dialect of the ST text, PLCopen XML against the TC6 schema model, the CLI."""
 
 from __future__ import annotations
@@ -9,9 +9,10 @@ from pathlib import Path
 import pytest
 
 from analysis.app.cli import main
-from analysis.kinematics.arm import load_arm
+from analysis.kinematics.arm import load_arm, paper_arm
+from analysis.plc.generate import generate
+from analysis.plc.plcopen import validate_plcopen
 from analysis.plc.st import scl_to_st
-from analysis.plc.st_generate import generate_st, validate_plcopen
 
 GOLDEN = Path(__file__).parent / "golden"
 SUFFIX = {"st": "st", "scl": "scl", "plcopen-xml": "xml"}
@@ -20,7 +21,7 @@ SUFFIX = {"st": "st", "scl": "scl", "plcopen-xml": "xml"}
 @pytest.mark.parametrize("dialect", ["st", "scl", "plcopen-xml"])
 def test_emitted_text_matches_golden(dialect):
     # reviewed by eye once, then frozen; regenerate deliberately if the IR or a printer changes
-    text, mjson = generate_st(dialect)
+    text, mjson = generate(paper_arm(), dialect, motion=False)  # the IK block alone
     assert text == (GOLDEN / f"plc_{dialect}_front-up.{SUFFIX[dialect]}").read_text("utf-8")
     m = json.loads(mjson)
     assert m["block"] == "IK_GRABBER" and list(m["inputs"]) == ["px", "py", "pz"]
@@ -33,9 +34,9 @@ def test_emitted_text_matches_golden(dialect):
 @pytest.mark.parametrize("arm", ["grabber", "palletizer", "gr1"])
 def test_scl_is_the_st_text_in_scl_dialect(arm):
     """Undoing SCL's dialect words gives back the ST block but for the header comment."""
-    params = load_arm(arm).params
-    st, _ = generate_st("st", params=params)
-    scl, _ = generate_st("scl", params=params)
+    a = load_arm(arm)
+    st, _ = generate(a, "st", motion=False)
+    scl, _ = generate(a, "scl", motion=False)
     body = st[st.index("(*", 3) :]  # after the header comment
     assert scl_to_st(scl) == body.replace("VAR_TEMP", "VAR")
     assert 'DATA_BLOCK "IK_' in scl and "S7_Optimized_Access := 'TRUE'" in scl
@@ -47,7 +48,7 @@ def test_st_structure():
 
     from analysis.plc.st_engine import blank_comments
 
-    text, _ = generate_st("st")
+    text, _ = generate(paper_arm(), "st", motion=False)
     code = blank_comments(text)
     assert "FUNCTION_BLOCK IK_GRABBER" in code and "FUNCTION IK_ATAN2 : REAL" in code
     assert "ATAN2(" not in code.replace("IK_ATAN2(", "")  # its own ATAN2 only
@@ -59,10 +60,10 @@ def test_st_structure():
 
 @pytest.mark.parametrize("arm", ["grabber", "palletizer", "gr1"])
 def test_plcopen_xml_validates(arm):
-    text, _ = generate_st("plcopen-xml", params=load_arm(arm).params)
+    text, _ = generate(load_arm(arm), "plcopen-xml")
     project = validate_plcopen(text)
     pous = project.types.pous.pou
-    assert [p.name for p in pous][-1] == f"IK_{arm.upper()}"
+    assert [p.name for p in pous][-2:] == [f"IK_{arm.upper()}", f"MACHINE_{arm.upper()}"]
 
 
 @pytest.mark.parametrize(
@@ -75,7 +76,7 @@ def test_plcopen_xml_validates(arm):
     ],
 )
 def test_plcopen_validation_rejects_broken_files(change, message):
-    text, _ = generate_st("plcopen-xml")
+    text, _ = generate(paper_arm(), "plcopen-xml")
     with pytest.raises(ValueError, match=message):
         validate_plcopen(change(text))
 
@@ -84,9 +85,10 @@ def test_plcopen_validation_rejects_broken_files(change, message):
 @pytest.mark.parametrize("arm", ["grabber", "palletizer", "gr1"])
 def test_cli_stl_dialects(tmp_path, arm, dialect):
     out, mp = tmp_path / "p", tmp_path / "m.json"
-    rc = main(["stl", "--arm", arm, "--dialect", dialect, "-o", str(out), "--map", str(mp)])
+    rc = main(["stl", "--arm", arm, "--dialect", dialect, "-o", str(out), "--map", str(mp),
+               "--no-motion"])  # the IK block on its own (the machine: tests/plc/machine)
     assert rc == 0
-    assert out.read_text("utf-8") == generate_st(dialect, params=load_arm(arm).params)[0]
+    assert out.read_text("utf-8") == generate(load_arm(arm), dialect, motion=False).program
     assert json.loads(mp.read_text())["dialect"] == dialect
 
 

@@ -49,7 +49,7 @@ def case(request):
 
 
 def _st_run(arm, targets, trig, engine, branch=None):
-    prog = build_program(arm.params, branch, trig)
+    prog = build_program(arm, branch, trig)
     text = emit_st(prog, units=arm.input_units, default_branch=arm.branches[0])
     xyz = targets[input_columns(arm)].to_numpy(dtype=float)
     fb = block_name(prog, arm.branches[0])
@@ -83,12 +83,12 @@ def _s7_programs(arm):
     from analysis.plc.translate import translate_s7200
 
     if arm.name == "grabber":
-        P = arm.params
+        P = arm
         yield "s7-200", translate_s7200(emit_s7200(build_program(P))).awl, default_map("s7-200")
         yield "s7-300", emit_s7300(build_program(P, None, "native")), default_map("s7-300")
         return
     for dialect in ("s7-200", "s7-300"):
-        text, map_text = generate(dialect, params=arm.params)
+        text, map_text = generate(arm, dialect)
         awl = translate_s7200(text).awl if dialect == "s7-200" else text
         yield dialect, awl, MemoryMap.from_dict(json.loads(map_text))
 
@@ -116,7 +116,7 @@ def test_st_pulses_against_awlsim(case, engine):
             from analysis.plc.approx import PlcFloat32Ops
             from analysis.plc.model import predict
 
-            m = predict(arm.params, xyz, ops=PlcFloat32Ops("st", "function"))
+            m = predict(arm, xyz, ops=PlcFloat32Ops("st", "function"))
             with np.errstate(invalid="ignore"):  # a refused target's count may be inf
                 frac = np.abs(m.counts - np.trunc(m.counts))
             assert (frac[differ] == 0.5).all()
@@ -126,7 +126,7 @@ def test_st_pulses_against_awlsim(case, engine):
 def test_engine_refuses_a_broken_program(engine):
     """The engine is a real compiler: a program with a type error is refused, naming it."""
     arm = load_arm("grabber")
-    prog = build_program(arm.params, None, "function")
+    prog = build_program(arm, None, "function")
     text = emit_st(prog, units=arm.input_units, default_branch=arm.branches[0])
     broken = text.replace("REAL_TO_DINT(count)", "count", 1)  # REAL into a DINT
     with pytest.raises(ValueError, match="ST engine refused"):

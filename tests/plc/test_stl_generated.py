@@ -57,15 +57,15 @@ def _case(name, folder):
     the arm's awlsim test generates them."""
     if name == "grabber":
         arm = Arm(paper_params())
-        text = emit_s7200(build_program(arm.params, "front-up"))  # as test_plc_awlsim.py
-        s7300 = emit_s7300(build_program(arm.params, "front-up", "subroutine"))
+        text = emit_s7200(build_program(arm, "front-up"))  # as test_plc_awlsim.py
+        s7300 = emit_s7300(build_program(arm, "front-up", "subroutine"))
         return arm, "front-up", text, default_map("s7-200"), (s7300, default_map("s7-300"))
     arm, branch = derived_arm(folder) if name == "derived-3R" else (load_arm(name), None)
     branch = branch or arm.branches[0]
-    text, mjson = generate("s7-200", branch, "subroutine", params=arm.params)
+    text, mjson = generate(arm, "s7-200", branch, "subroutine")
     s7300 = None
     if name == "gr1":  # test_gr1_plc.py runs the S7-300 subroutine variant too
-        t3, m3 = generate("s7-300", branch, "subroutine", params=arm.params)
+        t3, m3 = generate(arm, "s7-300", branch, "subroutine")
         s7300 = t3, MemoryMap.from_dict(json.loads(m3))
     return arm, branch, text, MemoryMap.from_dict(json.loads(mjson)), s7300
 
@@ -82,7 +82,7 @@ def test_generated_programs_on_the_evaluator(name, tmp_path):
         targets, rows = targets[rows], np.arange(len(rows))
     theirs = sweep(translate_s7200(text).awl, mmap, targets, sentinel=SENTINEL)
     runner = S7200Runner(text, mmap)
-    doc = json.loads(generate("s7-200", branch, params=arm.params, motion=False)[1])
+    doc = json.loads(generate(arm, "s7-200", branch, motion=False).map)
     counts = [int(doc["work"][k][2:]) for k in sorted(doc["work"]) if k.startswith("count")]
     ours = runner.solve(targets[rows], sentinel=SENTINEL, reals=tuple(sorted(counts)))
     assert len(frame) > 1000 and len(rows) > 300

@@ -20,9 +20,9 @@ TARGETS = np.array([[100.0, 100.0, 600.0], [0.0, 0.0, 2000.0], [np.nan, 0.0, 0.0
 
 @pytest.fixture(scope="module")
 def program():
-    from analysis.kinematics.params import paper_params
+    from analysis.kinematics.arm import paper_arm
 
-    return emit_s7300(build_program(paper_params(), "front-up", "native")), default_map("s7-300")
+    return emit_s7300(build_program(paper_arm(), "front-up", "native")), default_map("s7-300")
 
 
 def _equal(a, b) -> bool:

@@ -288,7 +288,7 @@ def _nearest_pose_hint(arm, target) -> str:
     """The nearest orientation the arm can take at the target's position, as a command."""
     import numpy as np
 
-    from analysis.studies.gr1 import project_orientation
+    from analysis.audit.papers.gr1.thesis import project_orientation
 
     pose, turned = project_orientation(arm, np.asarray(target, dtype=float))
     words = [f"{v:g}" for v in pose[:3]] + [f"{math.degrees(v):.3f}" for v in pose[3:]]
@@ -409,10 +409,12 @@ def _missing_branches(arm, target, names, sols, args) -> list[dict]:
 # --- stl ------------------------------------------------------------------------------------------
 def _cmd_stl(args: argparse.Namespace) -> int:
     from analysis.app.safe_io import check_paths, write_many_atomic
+    from analysis.plc.dialects import DIALECTS
     from analysis.plc.generate import generate
     from analysis.plc.memmap import MemoryMap
 
-    outputs = [args.output, *([args.map] if args.map else [])]
+    extra = [p for p in (args.tags, args.gvl) if p]  # the machine's tag table and GVL
+    outputs = [args.output, *([args.map] if args.map else []), *extra]
     if str(args.output) == "-" and (args.json or str(args.map) == "-"):
         raise UsageError("-o - writes the program to stdout: --json and --map - cannot share it")
     check_paths(
@@ -426,23 +428,27 @@ def _cmd_stl(args: argparse.Namespace) -> int:
     if args.cpu is not None:
         from analysis.plc.memmap import cpu_name
 
-        if args.dialect not in ("s7-200", "s7-300"):
+        if not DIALECTS[args.dialect].addresses:
             raise UsageError(
                 f"--cpu applies to --dialect s7-200 and s7-300 (a {args.dialect} program "
                 "names no addresses)"
             )
         cpu = cpu_name(args.cpu, args.dialect)  # checked at generation: the map's areas
     text, mjson = generate(
+        arm,
         args.dialect,
         args.branch,
         args.trig,
         mmap,
-        params=arm.params,
         motion=not args.no_motion,
         theta1_on_axis=_axis(args),
         cpu=cpu,
     )
     files = {p: c for p, c in ((args.output, text), (args.map, mjson)) if p and str(p) != "-"}
+    if extra:
+        from analysis.plc.machine.tags import machine_files
+
+        files.update(machine_files(arm, args.dialect, args.no_motion, args.tags, args.gvl))
     if files:
         write_many_atomic(files, newline="", make_parents=args.mkdir)
     for p, c in ((args.output, text), (args.map, mjson)):
@@ -457,7 +463,7 @@ def _cmd_stl(args: argparse.Namespace) -> int:
         "branch": args.branch or arm.branches[0],
         "lines": text.count("\n"),
     }
-    if args.dialect in ("s7-200", "s7-300"):
+    if DIALECTS[args.dialect].addresses:
         doc["cpu"] = json.loads(mjson)["target_cpu"]["name"]
     if args.json:
         print(_json(doc))
@@ -497,7 +503,7 @@ def _cmd_errata(args: argparse.Namespace) -> int:
     from analysis.audit import register as reg
 
     papers = [args.paper] if args.paper else None
-    if args.paper and args.paper not in reg.PAPERS:
+    if args.paper and args.paper not in reg.available():
         reg.register(args.paper)  # raises, naming the papers
     progress = _Progress("errata")
     # --check is answered from the cache of the generated files' digests when no input changed
@@ -644,7 +650,9 @@ def _add_ik(sub) -> None:
 
 
 def _add_stl(sub) -> None:
-    """``stl``: the PLC program and its memory map."""
+    """``stl``: the PLC program and its memory map (the dialects: the registry's)."""
+    from analysis.plc.dialects import DIALECTS
+
     p = sub.add_parser(
         "stl",
         help="generate the PLC program (S7-200 STL, S7-300 AWL, ST, SCL, PLCopen XML) and its map",
@@ -660,9 +668,8 @@ def _add_stl(sub) -> None:
     p.add_argument(
         "--dialect",
         required=True,
-        choices=("s7-200", "s7-300", "st", "scl", "plcopen-xml"),
-        help="S7-200 STL, S7-300 AWL, IEC 61131-3 ST (CODESYS, TwinCAT, OpenPLC), Siemens SCL "
-        "(TIA Portal, S7-1200/1500), or PLCopen XML of the ST block",
+        choices=tuple(DIALECTS),
+        help="; ".join(f"{name}: {cls.title}" for name, cls in DIALECTS.items()),
     )
     p.add_argument("--branch", help="IK branch (default: the arm's first, the paper's)")
     p.add_argument(
@@ -680,7 +687,13 @@ def _add_stl(sub) -> None:
         "against (S7-200: CPU 221, 222, 224, 224XP, 226, default CPU 224; S7-300: CPU 312, "
         "314, 315-2 DP, 317-2 DP, default CPU 315-2 DP; e.g. --cpu 224XP)",
     )
-    p.add_argument("--no-motion", action="store_true", help="S7-200: omit the PTO motion networks")
+    p.add_argument("--tags", type=Path, metavar="TAGS.xlsx", help="st, scl, plcopen-xml: "
+                   "the machine's signals as a TIA Portal PLC tag table (Excel, import in the "
+                   "PLC tag editor)")
+    p.add_argument("--gvl", type=Path, metavar="GVL.st", help="st, scl, plcopen-xml: the "
+                   "machine's signals as a CODESYS global variable list")
+    p.add_argument("--no-motion", action="store_true", help="omit the motion: the S7-200's PTO "
+                   "networks; st, scl, plcopen-xml: the machine program (the IK block alone)")
     p.add_argument(
         "--theta1-on-axis", type=_finite, metavar="DEG", help="waist angle on the base axis"
     )

@@ -36,6 +36,7 @@ import sys
 from pathlib import Path
 
 from analysis import validate
+from analysis.plc.dialects import DIALECTS, printer_class
 
 __all__ = ["add_stl_run", "parse_read", "parse_set", "run"]
 
@@ -184,29 +185,6 @@ class _Refused(ValueError):
         self.values = values
 
 
-def _read_as_real(loaded, addr: str) -> bool:
-    """Whether the S7-200 program reads the double word ``addr`` as a REAL anywhere (an
-    integer written there is then most likely a mistake: its bits are not its value)."""
-    m = re.fullmatch(rf"({_S7200_AREAS})D(\d+)", addr)
-    if not m:
-        return False
-    area, off = m.group(1), int(m.group(2))
-    for pou in loaded.pous.values():
-        for _, classes, opnds, builder in pou.code:
-            if builder == "call":
-                _, _, params, ops = opnds
-                pairs = [
-                    ("r" if p[2] == "REAL" else "d", o) for p, o in zip(params, ops, strict=True)
-                ]
-            else:
-                pairs = list(zip(classes, opnds, strict=False))
-            for cls, o in pairs:
-                if getattr(o, "kind", None) == "mem" and o.area == area and o.off == off:
-                    if cls[0] == "r" and not cls.endswith(">"):
-                        return True
-    return False
-
-
 def run(
     program: str,
     dialect: str,
@@ -225,70 +203,48 @@ def run(
         raise ValueError(f"--scans {scans}: at least one scan")
     if scans > 1_000_000:
         raise ValueError(f"--scans {scans}: at most 1,000,000 scans")
-    if cpu is not None and dialect != "s7-200":
-        raise ValueError("--cpu applies to --dialect s7-200 (awlsim's M area is 2048 bytes)")
+    cls = printer_class(dialect)
     if cpu is not None:
-        from analysis.plc.memmap import cpu_name
-
-        cpu = cpu_name(cpu, "s7-200")  # --cpu 224 means the CPU 224
+        cpu = cls.session_cpu(cpu)  # --cpu 224 means the CPU 224
     writes = [parse_set(s, dialect) for s in sets]
     wanted = [parse_read(r, dialect) for r in reads]
     if not wanted:
         raise ValueError("nothing to read: give at least one --read ADDRESS:TYPE")
-    if dialect == "s7-200":
-        from analysis.plc.stl_eval import S7200, load_program
-        from analysis.plc.stl_eval.legacy import PAPER_SYMBOLS
-
-        loaded = load_program(program, symbols=PAPER_SYMBOLS, cpu=cpu, source=source)
-        plc = S7200(loaded)
-        for addr, typ, v, explicit in writes:
-            if typ == "DINT" and not explicit and _read_as_real(loaded, addr):
-                raise ValueError(
-                    f"--set {addr}={v}: the program reads {addr} as a REAL; write {v}.0 (an "
-                    f"integer would store its bit pattern, {v} -> a REAL of about "
-                    f"{_bits_as_real(v):.3g}), or {addr}={v}:DINT to store those bits"
-                )
-            plc.write(typ, addr, v)
-        plc.scan(scans)
-        values = {a: plc.read(t, a) for a, t in wanted}
-        if plc.fault is not None:
-            raise _Refused(f"the CPU went to STOP: {plc.fault}", values)
-        if plc.stopped_by:
-            raise _Refused(f"the CPU went to STOP: {plc.stopped_by}", values)
-        return {"values": values}
-    from analysis.plc.memmap import default_map
-    from analysis.plc.runner import AwlRunner
-
-    r = AwlRunner(program, default_map("s7-300"), name=source, first_scan=False)
-    for addr, typ, v, _ in writes:
-        r.write(typ, addr, v)
-    for _ in range(scans):
-        r.cycle()
-    return {"values": {a: r.read(t, a) for a, t in wanted}}
+    session = cls.session(program, cpu=cpu, source=source)
+    for addr, typ, v, explicit in writes:
+        session.write(typ, addr, v, explicit)
+    session.scan(scans)
+    values = {a: session.read(t, a) for a, t in wanted}
+    if session.fault is not None:
+        raise _Refused(f"the CPU went to STOP: {session.fault}", values)
+    return {"values": values}
 
 
-def _bits_as_real(v: int) -> float:
-    import struct
-
-    return struct.unpack(">f", struct.pack(">I", v & 0xFFFFFFFF))[0]
+def _read_program(args: argparse.Namespace) -> tuple[str, str]:
+    if str(args.program) == "-":
+        return sys.stdin.read(), "<stdin>"
+    path = Path(args.program)
+    try:
+        raw = path.read_bytes()
+    except OSError as exc:
+        raise ValueError(f"cannot read {path}: {exc.strerror}") from None
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError:
+        text = raw.decode("cp1252", errors="strict") if _cp1252(raw) else None
+        if text is None:
+            raise ValueError(f"{path}: neither UTF-8 nor ANSI (cp1252) text") from None
+    return text, path.name
 
 
 def _cmd_stl_run(args: argparse.Namespace) -> int:
-    if str(args.program) == "-":
-        text, source = sys.stdin.read(), "<stdin>"
-    else:
-        path = Path(args.program)
-        try:
-            raw = path.read_bytes()
-        except OSError as exc:
-            raise ValueError(f"cannot read {path}: {exc.strerror}") from None
-        try:
-            text = raw.decode("utf-8")
-        except UnicodeDecodeError:
-            text = raw.decode("cp1252", errors="strict") if _cp1252(raw) else None
-            if text is None:
-                raise ValueError(f"{path}: neither UTF-8 nor ANSI (cp1252) text") from None
-        source = path.name
+    if args.dialect in ("st", "plcopen-xml"):
+        return _cmd_stl_run_st(args)
+    for opt in ("scenario", "trace", "map", "program_name"):
+        if getattr(args, opt) is not None:
+            raise ValueError(f"--{opt.replace('_name', '')} applies to --dialect st and "
+                             "plcopen-xml")  # fmt: skip
+    text, source = _read_program(args)
     try:
         out = run(text, args.dialect, args.set or [], args.read or [], args.scans, args.cpu, source)
     except _Refused as exc:
@@ -313,6 +269,66 @@ def _cmd_stl_run(args: argparse.Namespace) -> int:
         for a, t in (parse_read(r, args.dialect) for r in args.read):
             print(f"{a} = {_show(out['values'][a])} ({t})")
     return 0
+
+
+def _cmd_stl_run_st(args: argparse.Namespace) -> int:
+    """``--dialect st|plcopen-xml`` (:mod:`analysis.plc.machine.offline`)."""
+    from analysis.app.safe_io import check_paths, read_table, write_text_atomic
+    from analysis.plc.machine import offline
+
+    if args.cpu is not None:
+        raise ValueError(f"--cpu applies to --dialect s7-200 (a {args.dialect} program names "
+                         "no CPU)")  # fmt: skip
+    if (args.scenario is None) != (args.trace is None):
+        raise ValueError("--scenario and --trace go together (a scenario writes a trace)")
+    if args.scenario is not None and (args.set or args.read or args.scans != 1):
+        raise ValueError("--set, --read and --scans are for one scan; a scenario sets its "
+                         "variables itself")  # fmt: skip
+    inputs = [p for p in (args.program, args.scenario, args.map) if p and str(p) != "-"]
+    if args.trace is not None:
+        check_paths(inputs=inputs, outputs=[args.trace], make_parents=args.mkdir)
+    text, _ = _read_program(args)
+    mapdoc = _map(args.map) if args.map else None
+    source = offline.load_source(text, args.dialect)
+    if args.scenario is None:
+        out = offline.one_scan(source, args.set or [], args.read or [], mapdoc=mapdoc,
+                               program=args.program_name)  # fmt: skip
+        if args.json:
+            print(json.dumps({"values": {k: _json_value(v) for k, v in out["values"].items()}}))
+        else:
+            for k, v in out["values"].items():
+                print(f"{k} = {_show(v)} ({out['types'][k]})")
+        return 0
+    table = read_table(args.scenario, required=("t_s", "name", "value"))
+    outs, axes, run, types = offline.run_trace(
+        source, table, cycle_s=args.cycle_ms / 1000.0, settle_s=args.settle_s, mapdoc=mapdoc,
+        program=args.program_name)  # fmt: skip
+    write_text_atomic(args.trace, offline.trace_csv(outs, axes, run, types), newline="",
+                      make_parents=args.mkdir)  # fmt: skip
+    summary = {"trace": str(args.trace), "cycles": len(run.t), "cycle_ms": args.cycle_ms,
+               "axes": [a.name for a in axes], "outputs": outs}  # fmt: skip
+    if args.json:
+        print(json.dumps(summary))
+    else:
+        print(f"wrote {args.trace} ({len(run.t)} cycles of {args.cycle_ms:g} ms, "
+              f"{len(axes)} axes, {len(outs)} outputs)")
+    return 0
+
+
+def _map(path) -> dict:
+    try:
+        raw = Path(path).read_bytes()
+    except OSError as exc:
+        raise ValueError(f"cannot read {path}: {exc.strerror}") from None
+    if len(raw) > 16 * 1024 * 1024:
+        raise ValueError(f"{path}: {len(raw)} bytes; a MAP.json is at most 16 MiB")
+    try:
+        doc = json.loads(raw.decode("utf-8"))
+    except (UnicodeDecodeError, json.JSONDecodeError) as exc:
+        raise ValueError(f"{path}: not JSON ({exc})") from None
+    if not isinstance(doc, dict):
+        raise ValueError(f"{path}: not a MAP.json (an object is expected)")
+    return doc
 
 
 def _cp1252(raw: bytes) -> bool:
@@ -340,7 +356,13 @@ def add_stl_run(sub, parser_class=None, formatter_class=None) -> None:
         **({"formatter_class": formatter_class} if formatter_class else {}),
     )
     p.add_argument("program", help="program file (- reads standard input)")
-    p.add_argument("--dialect", required=True, choices=("s7-200", "s7-300"))
+    engines = {name: cls for name, cls in DIALECTS.items() if cls.engine}
+    p.add_argument(
+        "--dialect",
+        required=True,
+        choices=tuple(engines),
+        help="; ".join(f"{name}: {cls.title} on {cls.engine}" for name, cls in engines.items()),
+    )
     p.add_argument(
         "--set",
         action="append",
@@ -358,4 +380,18 @@ def add_stl_run(sub, parser_class=None, formatter_class=None) -> None:
     p.add_argument("--scans", type=int, default=1, help="scans to run (default 1)")
     p.add_argument("--cpu", help="S7-200 CPU (CPU 221, 222, 224, 224XP, 226; default CPU 224)")
     p.add_argument("--json", action="store_true", help='print {"values": {...}}')
+    g = p.add_argument_group("ST and PLCopen XML on the ST engine (--dialect st|plcopen-xml)")
+    g.add_argument("--scenario", metavar="SCENARIO.csv",
+                   help="t_s,name,value rows: set a program variable at that time; the program "
+                   "runs cycle by cycle with one simulated axis per joint")  # fmt: skip
+    g.add_argument("--trace", metavar="TRACE.csv", help="one row per cycle: t_s, q1..qN, "
+                   "v1..vN, then every output (written atomically)")  # fmt: skip
+    g.add_argument("--cycle-ms", type=float, default=4.0, help="cycle time (default 4 ms)")
+    g.add_argument("--settle-s", type=float, default=2.0,
+                   help="run on after the last row (default 2 s)")  # fmt: skip
+    g.add_argument("--map", metavar="MAP.json", help="the program's map (stl --map): its "
+                   "axes' limits and home positions, its outputs")  # fmt: skip
+    g.add_argument("--program", dest="program_name", metavar="NAME",
+                   help="the PROGRAM to run (default: the only one)")  # fmt: skip
+    g.add_argument("--mkdir", action="store_true", help="create the trace's directory")
     p.set_defaults(func=_cmd_stl_run)

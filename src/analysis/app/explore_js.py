@@ -36,8 +36,7 @@ import math
 from typing import ClassVar
 
 from analysis.kinematics.dh import chain_frames
-from analysis.kinematics.ops import OPS
-from analysis.kinematics.printing import Printer
+from analysis.kinematics.printing import INFIX, ExpressionPrinter
 from analysis.kinematics.pulses import pulse_count
 from analysis.kinematics.solution import DEFAULT_TOL_MM, solve_body
 from analysis.kinematics.status import STATUS_TEXT
@@ -46,7 +45,7 @@ from analysis.kinematics.trace import Graph, Node, TraceOps
 __all__ = ["JsPrinter", "arm_module_js", "frames_graph", "graph_js", "solve_graph"]
 
 
-class JsPrinter(Printer):
+class JsPrinter(ExpressionPrinter):
     """JavaScript expressions, one per operation of :data:`~analysis.kinematics.ops.OPS`
     (the recorder expands the derived ``round`` into ``trunc``/``sign``/``select``)."""
 
@@ -63,21 +62,7 @@ class JsPrinter(Printer):
         "sign": "Math.sign",
         "isfinite": "Number.isFinite",
     }
-    infix: ClassVar[dict[str, str]] = {
-        **{op: OPS[op].symbol for op in ("add", "sub", "mul", "div", "lt", "le", "gt", "ge")},
-        "eq": "===",
-        "and": "&&",
-        "or": "||",
-    }
-
-    def _print_function(self, op, *args):
-        return f"{self.known_functions[op]}({', '.join(args)})"
-
-    def _print_infix(self, op, a, b):
-        return f"({a} {self.symbol(op)} {b})"
-
-    def _print_neg(self, a):
-        return f"(-{a})"
+    infix: ClassVar[dict[str, str]] = {**INFIX, "eq": "===", "and": "&&", "or": "||"}
 
     def _print_not(self, a):
         return f"(!{a})"

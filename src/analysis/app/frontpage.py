@@ -77,6 +77,19 @@ class PaperVerdict:
     """True when ``findings`` is ranked by the register's severities."""
     artefacts: tuple[tuple[str, str], ...] = ()
     """The corrected artefacts to take: (page, label) links."""
+    headline: str | None = None
+    """The verdict at a glance (the register's ``[summary] headline``, at most 15 words)."""
+    worst: str | None = None
+    """The single worst consequence, in numbers (``[summary] worst``, filled from the checks)."""
+    severities: tuple[tuple[str, int], ...] = ()
+    """Counted causes per severity, worst first (every severity, zeros included)."""
+    system: str = ""
+    """The system the paper describes, short (the register's title after the seed)."""
+
+    @property
+    def anchor(self) -> str:
+        """The id of the paper's section on the front page (and in the printed report)."""
+        return f"paper-{self.paper}"
 
 
 _LABEL = {  # status -> (singular, plural) for the count cards
@@ -129,7 +142,7 @@ def _audit_verdict() -> Verdict:
 
 def _table4_verdict() -> Verdict:
     """Table 4 recomputed row by row."""
-    from analysis.audit import table4
+    from analysis.audit.papers.grabber import table4
 
     # --- Table 4 -------------------------------------------------------------------------
     t4 = table4.report_table()
@@ -191,7 +204,7 @@ def _plc_verdict(arm) -> Verdict:
     targets = pd.DataFrame(xyz, columns=["x_mm", "y_mm", "z_mm"])
     rows = []
     for dialect, lang in (("s7-200", "STL"), ("s7-300", "AWL")):
-        text, _ = generate(dialect)
+        text, _ = generate(arm, dialect)
         src = translate_s7200(text).awl if dialect == "s7-200" else text
         res = sweep(src, default_map(dialect), xyz, sentinel=-999_999).result
         c = compare(res, targets, arm, "front-up", dialect=dialect, sentinel=-999_999)
@@ -355,18 +368,16 @@ def paper_verdicts() -> list[PaperVerdict]:
     """Per paper: the register's verdict and take-away, and its causes ranked by consequence.
 
     Read through :func:`analysis.audit.register.register` (interfaces item 2): a cause's
-    ``severity`` and ``consequence``, the register's ``summary`` (``verdict``,
-    ``take_away``). Where the register has no severities yet, the causes keep the register's
-    order and ``ranked`` is False."""
+    ``severity`` and ``consequence``, the register's ``summary`` (``headline``, ``worst``,
+    ``verdict``, ``take_away``). Where the register has no severities yet, the causes keep the
+    register's order and ``ranked`` is False."""
     from analysis.audit import register
     from analysis.audit.schema import COUNTED
 
     out = []
     for name, (seed, nb, artefacts) in PAPERS.items():
         reg = register.register(name)
-        summary = getattr(reg, "summary", None) or {}
-        if not isinstance(summary, dict):
-            summary = {k: getattr(summary, k, None) for k in ("verdict", "take_away")}
+        summary = dict(reg.summary)
         counted = [c for c in reg.causes if c.status in COUNTED]
         rows = []
         for c in counted:
@@ -386,6 +397,7 @@ def paper_verdicts() -> list[PaperVerdict]:
         ranked = bool(len(df)) and bool((df["severity"] != "").all())
         if ranked:
             df = df.sort_values(["rank", "places"], ascending=[True, False], kind="stable")
+        sev = tuple((s, int((df["severity"] == s).sum())) for s in SEVERITIES)
         out.append(
             PaperVerdict(
                 paper=name,
@@ -397,6 +409,10 @@ def paper_verdicts() -> list[PaperVerdict]:
                 findings=df.drop(columns="rank").reset_index(drop=True),
                 ranked=ranked,
                 artefacts=artefacts,
+                headline=summary.get("headline"),
+                worst=summary.get("worst"),
+                severities=sev,
+                system=reg.title.split("): ", 1)[-1],
             )
         )
     return out

@@ -43,6 +43,7 @@ __all__ = [
     "figure_captions",
     "figures_md",
     "front_page_md",
+    "glance_html",
     "prepare_notebook",
     "register_md",
     "saved_stems",
@@ -365,9 +366,48 @@ NOT_RANKED = (
 )
 
 
+SEVERITY_WORDS = {"breaks": "breaks", "wrong-result": "wrong result", "misleading": "misleads",
+                  "cosmetic": "cosmetic"}  # fmt: skip
+"""How the glance table heads each severity (the register's words, shortened to fit)."""
+
+
+def glance_html(papers: list[PaperVerdict]) -> str:
+    """The four verdicts at a glance, first on the front page and on page 1 of the PDF: one
+    row per paper with its headline, its counted causes per severity, the worst consequence
+    in numbers and a link to its section below (one line of HTML: a raw block for MyST)."""
+    import html
+
+    e = html.escape
+    sev = [s for s, _ in papers[0].severities] if papers else []
+    head = (
+        "<thead><tr><th>paper</th><th>verdict</th>"
+        + "".join(f'<th class="glance-n">{e(SEVERITY_WORDS.get(s, s))}</th>' for s in sev)
+        + "<th>worst consequence</th></tr></thead>"
+    )
+    rows = []
+    for v in papers:
+        counts = "".join(
+            f'<td class="glance-n glance-{e(s)}{" glance-zero" if n == 0 else ""}">{n}</td>'
+            for s, n in v.severities
+        )
+        rows.append(
+            f'<tr id="glance-{e(v.paper)}"><th><a class="reference internal" '
+            f'href="#{e(v.anchor)}">Seed&nbsp;{e(v.seed)}</a>'
+            f'<span class="glance-system">{e(v.system)}</span></th>'
+            f'<td class="glance-verdict">{e(v.headline or "(no headline in the register)")}</td>'
+            f"{counts}<td class=\"glance-worst\">{e(v.worst or '')}</td></tr>"
+        )
+    return (
+        '<div class="table-wrapper glance-wrap"><table class="glance">'
+        '<caption>The four papers at a glance: counted causes by severity (each cause once, '
+        'however many places it shows in); the details follow below.</caption>'
+        f"{head}<tbody>{''.join(rows)}</tbody></table></div>\n"
+    )
+
+
 def _paper_md(v: PaperVerdict, titles: dict[str, str]) -> list[str]:
     c = citations().get(v.paper)
-    out = [f"### Seed {v.seed}: {_inline(v.title.split(' (seed')[0])}", ""]
+    out = [f"({v.anchor})=", f"### Seed {v.seed}: {_inline(v.system)}", ""]
     if c:
         out += [f"{cite(v.paper)}", ""]
     if v.verdict:
@@ -409,7 +449,11 @@ def front_page_md(
     ``titles`` a notebook stem to its title, ``toc`` a toctree caption to its documents,
     ``problems`` what failed in this build (shown first, in an error box).
     """
-    out = ["# Audit of four robot-kinematics papers", "", intro, ""]
+    papers = [s for s in sections if isinstance(s, PaperVerdict)]
+    out = ["# Audit of four robot-kinematics papers", ""]
+    if papers:
+        out += [glance_html(papers), ""]
+    out += [intro, ""]
     if problems:
         out += [":::{error}", "**This build is incomplete.**", ""]
         for what, why in problems.items():
@@ -421,7 +465,6 @@ def front_page_md(
     heads = [h for s in sections if isinstance(s, Verdict) for h in s.headline]
     if heads:
         out += ["## The strongest findings", "", *(f"- {h}" for h in heads), ""]
-    papers = [s for s in sections if isinstance(s, PaperVerdict)]
     if papers:
         out += ["## What is wrong, how bad, what to take away", ""]
         for v in papers:
@@ -526,13 +569,18 @@ class Download:
     group: str
     what: str
     how: str = ""
+    at_root: bool = False
+    """Served at the site's root under its own name (``build/report/report.pdf``, a path that
+    does not change between builds) instead of under ``_downloads/<hash>/``."""
 
 
 def write_downloads(src: Path) -> list[Download]:
     """Write the PLC programs, memory maps and audit CSVs under ``src/downloads``."""
     import shutil
 
-    from analysis.audit import register, table4
+    from analysis.audit import register
+    from analysis.audit.papers.grabber import table4
+    from analysis.kinematics.arm import paper_arm
     from analysis.paths import data_dir
     from analysis.plc.generate import generate
 
@@ -542,7 +590,7 @@ def write_downloads(src: Path) -> list[Download]:
     items = []
     for dialect, kind in (("s7-200", "S7-200 STL (Micro/WIN text)"), ("s7-300", "S7-300 AWL")):
         prog, mmap = f"plc/ik_{dialect}.awl", f"plc/ik_{dialect}_map.json"
-        text, mjson = generate(dialect)
+        text, mjson = generate(paper_arm(), dialect)
         (dl / prog).write_text(text, encoding="utf-8", newline="")
         (dl / mmap).write_text(mjson, encoding="utf-8")
         how = (
@@ -584,7 +632,7 @@ def write_downloads(src: Path) -> list[Download]:
             "data/table4_audit.csv",
             "Audit tables",
             "Table 4 row by row: printed and corrected angles, FK error, verdict and cause",
-            "analysis.audit.table4.report_table()",
+            "analysis.audit.papers.grabber.table4.report_table()",
         )
     )
     return items
@@ -612,8 +660,15 @@ def downloads_md(src: Path, items: list[Download]) -> str:
         for it in rows:
             f = src / "downloads" / it.path
             data = f.read_bytes()
+            name = Path(it.path).name
+            link = (
+                f'<a class="reference download" href="{_html(name)}" download="{_html(name)}">'
+                f'<code class="docutils literal notranslate">{_html(name)}</code></a>'
+                if it.at_root
+                else f"{{download}}`{name} </downloads/{it.path}>`"
+            )
             out.append(
-                f"| {{download}}`{Path(it.path).name} </downloads/{it.path}>` | {_inline(it.what)} "
+                f"| {link} | {_inline(it.what)} "
                 f"| {len(data):,} | `{hashlib.sha256(data).hexdigest()}` "
                 f"| {'`' + it.how + '`' if it.how else ''} |"
             )

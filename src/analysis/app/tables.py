@@ -1,4 +1,5 @@
-"""Tables with the paper's wrong cells marked, for the notebooks and the report site.
+"""Tables with the paper's wrong cells marked, for the notebooks and the report site; and the
+one rule for a table cell of one word on the site (:func:`keep_words_whole`).
 
 :func:`marked` wraps a DataFrame and a boolean mask of the same shape (True: the cell is wrong,
 as the audit decided it, e.g. Table 4's printed angles against the corrected closed form). It
@@ -11,6 +12,8 @@ differ in every run, so the text form is written here.
 
 from __future__ import annotations
 
+import html
+import re
 from dataclasses import dataclass
 
 import numpy as np
@@ -93,3 +96,40 @@ def marked(frame: pd.DataFrame, wrong, *, name: str, precision: int | None = Non
             raise ValueError(f"marked: mask shape {arr.shape} is not the table's {frame.shape}")
         mask = pd.DataFrame(arr, index=frame.index, columns=frame.columns)
     return MarkedTable(frame, mask.astype(bool), name, precision)
+
+
+NOWRAP = "nowrap"
+"""The class of a cell that holds one word (``docs/site/_static/report.css``: on one line)."""
+_CELL = re.compile(r"<(td|th)(\s[^<>]*)?>(.*?)</\1\s*>", re.S | re.I)
+_CLASS = re.compile(r"""(\sclass\s*=\s*)(["'])(.*?)\2""", re.S | re.I)
+_TAG = re.compile(r"<[^<>]*>")
+
+
+def keep_words_whole(page: str) -> str:
+    """``page`` (HTML) with every table cell that holds one word (text without white space: an
+    id such as ``grabber-stl-degrees``, a severity, a count, a header like ``severity``) given
+    the class :data:`NOWRAP`, so that it is never broken across lines, not even at a hyphen.
+    Cells with a nested table, MathJax or no text are left as they are.
+
+    Applied to every page of the report site and of its printed form (``docs/site/conf.py``):
+    the notebooks' pandas tables, the generated pages' tables, the register.
+
+    >>> keep_words_whole('<tr><th>severity</th><td class="x">wrong-result</td><td>a b</td></tr>')
+    '<tr><th class="nowrap">severity</th><td class="x nowrap">wrong-result</td><td>a b</td></tr>'
+    """
+
+    def mark(m: re.Match) -> str:
+        tag, attrs, inner = m[1], m[2] or "", m[3]
+        if "<table" in inner.lower() or "\\(" in inner or "$" in inner:
+            return m[0]
+        text = html.unescape(_TAG.sub("", inner)).strip()
+        if not text or re.search(r"\s", text):
+            return m[0]
+        c = _CLASS.search(attrs)
+        if c is None:
+            attrs = f'{attrs} class="{NOWRAP}"'
+        elif NOWRAP not in c[3].split():
+            attrs = attrs[: c.start()] + f"{c[1]}{c[2]}{c[3]} {NOWRAP}{c[2]}" + attrs[c.end() :]
+        return f"<{tag}{attrs}>{inner}</{tag}>"
+
+    return _CELL.sub(mark, page)

@@ -1,17 +1,17 @@
 """What a paper's checks compute against: its printed records, its arm and the few things a
 paper defines for itself (:class:`Bespoke`: named domains, matrices, substitutions, values,
-predicates and facts, in ``analysis.audit.bespoke.<paper>``, at most 250 lines each).
+predicates and facts, in ``analysis.audit.papers.<paper>.checks``, at most 250 lines each).
 
 :func:`context` builds one :class:`Context` per paper and caches what it computes (a domain is
 sampled once per process). Valid configurations come from the arm hook
-:func:`sample_q` (``Arm.sample_q(rng, n)`` where the arm has it, interfaces item 1; until then
-the same contract here: seeded, within the joint limits, solved back to themselves by the arm's
-closed form on the named branch).
+``Arm.sample_q(rng, n)`` (:func:`sample_q`: seeded, within the joint limits, solved back to
+themselves by the arm's closed form on the named branch).
 """
 
 from __future__ import annotations
 
 import importlib
+import importlib.util
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from functools import cache, reduce
@@ -138,28 +138,22 @@ class Product:
 
 @cache
 def context(paper: str) -> Context:
-    """The context of ``paper`` (cached for the process)."""
-    mod = importlib.import_module(f"analysis.audit.bespoke.{paper}")
-    return Context(papers.load(paper), mod.B)
+    """The context of ``paper`` (cached for the process): its printed records and what its home
+    ``analysis.audit.papers.<paper>.checks`` defines (``B``); a paper without a home is checked
+    by the shared kinds alone."""
+    return Context(papers.load(paper), bespoke(paper))
+
+
+def bespoke(paper: str) -> Bespoke:
+    """What ``analysis.audit.papers.<paper>.checks`` registers (``B``), or nothing."""
+    home = f"analysis.audit.papers.{paper}"
+    if importlib.util.find_spec(home) is None:
+        return Bespoke(paper)
+    return importlib.import_module(f"{home}.checks").B
 
 
 def sample_q(arm, rng: np.random.Generator, n: int, branch: str | None = None) -> np.ndarray:
     """``n`` seeded configurations (n, n_joints) [rad] of ``arm`` that its closed form solves
     back to themselves on ``branch`` (default: the arm's first, the paper's): the arm hook
-    ``Arm.sample_q`` where it exists, else uniform in the joint limits (+-pi where none),
-    kept where ``arm.solve(arm.fk(q), branch)`` returns q."""
-    hook = getattr(arm, "sample_q", None)
-    branch = branch or arm.branches[0]
-    if hook is not None:  # interfaces item 1: Arm.sample_q(rng, n, *, branch=None)
-        return np.asarray(hook(rng, n, branch=branch), dtype=float)
-    lim = [(-np.pi, np.pi) if not lh else lh for lh in arm.limits]
-    out = np.empty((0, len(lim)))
-    for _ in range(50):
-        q = np.column_stack([rng.uniform(lo, hi, 4 * n) for lo, hi in lim])
-        sol = arm.solve(arm.fk(q), branch)
-        back = sol.theta[:, 0]
-        d = np.abs(np.mod(back - q + np.pi, 2 * np.pi) - np.pi)
-        out = np.vstack([out, q[sol.ok[:, 0] & (d.max(axis=-1) < 1e-9)]])
-        if len(out) >= n:
-            return out[:n]
-    raise RuntimeError(f"{arm.name}: fewer than {n} configurations solve back on {branch}")
+    :meth:`analysis.kinematics.arm.Arm.sample_q`."""
+    return np.asarray(arm.sample_q(rng, n, branch=branch or arm.branches[0]), dtype=float)

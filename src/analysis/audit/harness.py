@@ -100,10 +100,10 @@ def equivalent(candidate: str, manifestation, ctx) -> bool:
         return True
     kind = manifestation.spec.get("kind")
     if kind == "stl":  # the same instructions, however punctuated
-        from analysis.audit.kinds.listing import _instructions
+        from analysis.audit.kinds.listing import instructions
 
         try:
-            a, b = (_instructions(t) for t in (candidate, corrected))
+            a, b = (instructions(t) for t in (candidate, corrected))
         except Exception:  # not a listing
             return False
         return [(i.op, i.args) for i in a] == [(i.op, i.args) for i in b]

@@ -22,28 +22,44 @@ import tomllib
 from functools import cache
 from pathlib import Path
 
-from analysis.audit.schema import COUNTED, COUNTING_RULE, STATUSES, Cause, Manifestation, Register
+from analysis.audit.schema import (
+    COUNTED,
+    COUNTING_RULE,
+    STATUSES,
+    Cause,
+    Manifestation,
+    Register,
+    check_summary,
+)
 from analysis.paths import PROJECT, build_dir, data_dir
 
 __all__ = [
-    "BEGIN", "END", "PAPERS", "available", "check", "check_is_cached", "compare", "coverage", "headline", "items_table",  # noqa: E501
-    "load", "register", "register_path", "render_markdown", "write_all",
+    "BEGIN", "END", "available", "check", "check_is_cached", "compare", "coverage",
+    "each_cells", "generated", "headline", "items_table", "load", "register", "register_path",
+    "render_markdown", "source_path", "write_all",
 ]  # fmt: skip
 
-PAPERS: dict[str, str] = {p: f"registers/{p}.toml" for p in ("grabber", "palletizer", "picker", "gr1")}  # noqa: E501
-"""Paper name -> its register file under ``data/``."""
 BEGIN, END = "<!-- errata:begin -->", "<!-- errata:end -->"
 ITEM_COLUMNS = ("id", "location", "verdict", "kind", "printed", "derived", "evidence", "check")
 VERDICT = {"error": "wrong", "omission": "wrong", "unsupported": "wrong", "holds": "holds"}
 
 
 def available() -> tuple[str, ...]:
-    """Papers whose register file exists in this checkout."""
-    return tuple(p for p, f in PAPERS.items() if (data_dir() / f).is_file())
+    """Papers (:func:`analysis.papers.names`) whose register ``data/registers/<paper>.toml``
+    exists in this checkout, in the papers' order."""
+    from analysis.papers import names
+
+    return tuple(p for p in names() if source_path(p).is_file())
 
 
 def register_path(paper: str) -> Path:
+    """The generated CSV of ``paper``'s register."""
     return data_dir() / "errata" / f"{paper}.csv"
+
+
+def source_path(paper: str) -> Path:
+    """The register's data file, ``data/registers/<paper>.toml``."""
+    return data_dir() / "registers" / f"{paper}.toml"
 
 
 class _Namespace:
@@ -54,6 +70,21 @@ class _Namespace:
 
     def __getattr__(self, name):
         return self._get(name)
+
+
+class _Checked:
+    """``{m[<manifestation id>].printed.value}`` in a summary template: what a manifestation's
+    check computed on the printed text (``printed``) and on the correction (``corrected``)."""
+
+    def __init__(self, causes) -> None:
+        self._ms = {m.id: m for c in causes for m in c.manifestations}
+
+    def __getitem__(self, mid: str):
+        if mid not in self._ms:
+            raise KeyError(f"no manifestation {mid!r}")
+        m = self._ms[mid]
+        return _Namespace({"printed": m.result(m.checked), "corrected": m.result(m.corrected)}
+                          .__getitem__)  # fmt: skip
 
 
 def _printed(spec, paper) -> str:
@@ -140,7 +171,7 @@ def _with(m: Manifestation, **changes) -> Manifestation:
     return replace(m, **changes)
 
 
-def _cells(e: dict, paper):
+def each_cells(e: dict, paper):
     """(slug, reference, location, cell spec) of every cell a ``[[cause.each]]`` names: the
     cells of a printed matrix, or the given columns of every row of a printed table."""
     if "matrix" in e:
@@ -161,7 +192,7 @@ def _each(cause: dict, e: dict, ctx, check) -> list[Manifestation]:
     """The printed cells that hold (a ``holds`` cause's ``[[cause.each]]``): one manifestation
     per cell; the cells that fail are other causes' manifestations (a test checks it)."""
     out = []
-    for slug, ref, where, cell in _cells(e, ctx.paper):
+    for slug, ref, where, cell in each_cells(e, ctx.paper):
         m = {"id": slug, "printed": ref, "check": {**e["check"], **cell}, "location": where}
         mm = _manifestation(cause, m, ctx, check)
         if mm.verify(mm.printed):
@@ -182,12 +213,12 @@ def _also(cause: dict, ctx, check):
 @cache
 def register(paper: str) -> Register:
     """The register of ``paper``, built from its data file (cached; takes seconds)."""
-    if paper not in PAPERS:
-        raise ValueError(f"no paper {paper!r}; expected one of {', '.join(PAPERS)}")
+    if paper not in available():
+        raise ValueError(f"no paper {paper!r}; expected one of {', '.join(available())}")
     from analysis.audit.context import context
     from analysis.audit.kinds import check
 
-    raw = tomllib.loads((data_dir() / PAPERS[paper]).read_text(encoding="utf-8"))
+    raw = tomllib.loads(source_path(paper).read_text(encoding="utf-8"))
     ctx = context(paper)
     causes = []
     for c in raw["cause"]:
@@ -208,8 +239,12 @@ def register(paper: str) -> Register:
                 rests_on=tuple(c.get("rests_on", ())), extra=_also(c, ctx, check),
             )
         )
-    ns = {"facts": _Namespace(ctx.fact)}
-    summary = {k: v.format_map(ns) for k, v in raw.get("summary", {}).items()}
+    check_summary(paper, raw.get("summary", {}))
+    ns = {"facts": _Namespace(ctx.fact), "m": _Checked(causes)}
+    try:
+        summary = {k: v.format_map(ns) for k, v in raw["summary"].items()}
+    except (AttributeError, KeyError, IndexError, TypeError, ValueError) as exc:
+        raise ValueError(f"register {paper}: [summary] template needs {exc!r}") from None
     head = raw["register"]
     return Register(paper, head["title"], tuple(causes), summary, tuple(raw.get("change", ())))
 
@@ -300,7 +335,7 @@ def _outside_block(text: str) -> str:
     return head + rest.partition(END)[2]
 
 
-def _generated(papers=None) -> dict[Path, str]:
+def generated(papers=None) -> dict[Path, str]:
     """Every file the registers of ``papers`` generate (default: all): path -> content. The
     README block lists every paper, so it is generated only when all are selected."""
     papers = list(papers or available())
@@ -330,7 +365,7 @@ def write_all(papers=None) -> list[str]:
     from analysis.app.safe_io import write_many_atomic
 
     papers = list(papers or available())
-    files = _generated(papers)
+    files = generated(papers)
     changed = {p: t for p, t in files.items() if not p.exists() or p.read_text("utf-8") != t}
     if changed:
         write_many_atomic(changed, make_parents=True)
@@ -349,7 +384,7 @@ def check(papers=None) -> list[str]:
     papers = list(papers or available())
     digests = _cached_digests(papers)
     if digests is None:
-        files = _generated(papers)
+        files = generated(papers)
         _store_digests(papers, files)
         digests = {str(p): hashlib.sha256(t.encode()).hexdigest() for p, t in files.items()}
     stale = []

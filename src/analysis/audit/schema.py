@@ -28,8 +28,9 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 
 __all__ = [
-    "COLUMNS", "COUNTED", "COUNTING_RULE", "KINDS", "SEVERITIES", "STATUSES", "Cause",
-    "Manifestation", "Register", "read_rows", "validate_rows",
+    "COLUMNS", "COUNTED", "COUNTING_RULE", "HEADLINE_WORDS", "KINDS", "SEVERITIES", "STATUSES",
+    "SUMMARY_KEYS", "Cause", "Manifestation", "Register", "check_summary", "read_rows",
+    "validate_rows",
 ]  # fmt: skip
 
 STATUSES = ("error", "omission", "unsupported", "uncertain", "notation", "extraction", "holds")
@@ -52,6 +53,48 @@ COUNTING_RULE = (
     "manifestations and the checks that hold) and never disagree.",
 )
 """The one counting rule for every paper (shown in the README block and on the site)."""
+SUMMARY_KEYS = ("headline", "worst", "verdict", "take_away")
+"""A register's ``[summary]``: ``headline`` the verdict at a glance (at most
+:data:`HEADLINE_WORDS` words, no numbers typed in), ``worst`` the single worst consequence in
+numbers (a template: the numbers come from the checks, ``{facts.*}`` or
+``{m[<manifestation id>].printed.*}``), ``verdict`` what breaks, what gives wrong numbers, what
+misleads and what is cosmetic, ``take_away`` the corrected artefacts."""
+HEADLINE_WORDS = 15
+
+
+def check_summary(paper: str, raw: Mapping) -> None:
+    """ValueError naming the key unless the raw ``[summary]`` of ``paper`` has exactly
+    :data:`SUMMARY_KEYS`, each a non-empty string; the headline at most
+    :data:`HEADLINE_WORDS` words with no digit; the worst consequence with a ``{...}`` field."""
+    keys = set(raw)
+    if keys != set(SUMMARY_KEYS):
+        extra, missing = sorted(keys - set(SUMMARY_KEYS)), sorted(set(SUMMARY_KEYS) - keys)
+        raise ValueError(
+            f"register {paper}: [summary] " + "; ".join(
+                [f"unknown key {k!r}" for k in extra] + [f"missing key {k!r}" for k in missing]
+            ) + f" (expected {', '.join(SUMMARY_KEYS)})"
+        )  # fmt: skip
+    for k in SUMMARY_KEYS:
+        if not isinstance(raw[k], str) or not raw[k].strip():
+            raise ValueError(f"register {paper}: [summary] {k} must be a non-empty string")
+    words = raw["headline"].split()
+    if len(words) > HEADLINE_WORDS:
+        raise ValueError(
+            f"register {paper}: [summary] headline has {len(words)} words, at most "
+            f"{HEADLINE_WORDS}"
+        )
+    if re.search(r"\d", raw["headline"]):
+        raise ValueError(
+            f"register {paper}: [summary] headline {raw['headline']!r} types a number; numbers "
+            "go in 'worst', filled from the checks"
+        )
+    if not re.search(r"\{[^{}]+\}", raw["worst"]):
+        raise ValueError(
+            f"register {paper}: [summary] worst names no computed number ({{facts.*}} or "
+            "{m[<manifestation>].printed.*})"
+        )
+
+
 COLUMNS = (
     "id", "cause", "status", "kind", "severity", "location", "printed", "reading", "corrected",
     "alternatives", "rests_on", "evidence", "check",

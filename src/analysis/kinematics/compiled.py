@@ -41,8 +41,7 @@ import numpy.typing as npt
 
 from analysis.kinematics import pool
 from analysis.kinematics.arms import closed_form as load_cf
-from analysis.kinematics.ops import OPS
-from analysis.kinematics.printing import Printer
+from analysis.kinematics.printing import INFIX, ExpressionPrinter
 from analysis.kinematics.solution import IKSolutions, as_points, solve_body
 from analysis.kinematics.trace import Graph, Node, TraceOps
 
@@ -128,7 +127,7 @@ def _trunc(x):
 """
 
 
-class KernelPrinter(Printer):
+class KernelPrinter(ExpressionPrinter):
     """The kernel's Python expressions, one per operation of
     :data:`~analysis.kinematics.ops.OPS` (Numba compiles them)."""
 
@@ -144,21 +143,7 @@ class KernelPrinter(Printer):
         "sign": "_sign",
         "isfinite": "math.isfinite",
     }
-    infix: ClassVar[dict[str, str]] = {
-        **{op: OPS[op].symbol for op in ("add", "sub", "mul", "div", "lt", "le", "gt", "ge")},
-        "eq": "==",
-        "and": "&",
-        "or": "|",
-    }
-
-    def _print_function(self, op, *args):
-        return f"{self.known_functions[op]}({', '.join(args)})"
-
-    def _print_infix(self, op, a, b):
-        return f"({a} {self.symbol(op)} {b})"
-
-    def _print_neg(self, a):
-        return f"(-{a})"
+    infix: ClassVar[dict[str, str]] = {**INFIX, "eq": "==", "and": "&", "or": "|"}
 
     def _print_not(self, a):
         return f"({a} ^ True)"

@@ -18,7 +18,7 @@ Base operations: the one table :data:`OPS` (one :class:`OpSpec` per operation: i
 arity, kind, the namespace method, the numpy and SymPy equivalents, the constant fold). The
 namespaces here and in :mod:`analysis.kinematics.symbolic`, the recorder
 (:mod:`analysis.kinematics.trace`), the compiled kernel's printer
-(:mod:`analysis.kinematics.compiled`) and the PLC printers (:mod:`analysis.plc.emit`,
+(:mod:`analysis.kinematics.compiled`) and the PLC printers (:mod:`analysis.plc.dialects`,
 :mod:`analysis.plc.st`) all take the vocabulary from it: a new operation is one row here plus
 one method in each printer that can express it (the others refuse it by name, see
 :class:`analysis.kinematics.printing.Printer`). In short: ``+ - * /`` and unary minus on

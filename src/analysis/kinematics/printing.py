@@ -3,7 +3,8 @@
 Every generated backend prints the operations of the one table
 :data:`analysis.kinematics.ops.OPS`: the compiled kernel
 (:class:`analysis.kinematics.compiled.KernelPrinter`), the S7-200 and S7-300 listings
-(:mod:`analysis.plc.emit`), IEC 61131-3 ST and Siemens SCL (:mod:`analysis.plc.st`).
+(:mod:`analysis.plc.s7200`, :mod:`analysis.plc.awl`), IEC 61131-3 ST and Siemens SCL
+(:mod:`analysis.plc.st`), PLCopen XML (:mod:`analysis.plc.plcopen`).
 :meth:`Printer.doprint` dispatches an operation to the printer's ``_print_<op>`` method;
 without one, an operation the class names in ``known_functions`` goes to
 ``_print_function``, and an infix operation of the table (``arith`` and ``compare`` rows)
@@ -23,7 +24,10 @@ from typing import ClassVar
 
 from analysis.kinematics.ops import OPS
 
-__all__ = ["Printer"]
+__all__ = ["INFIX", "ExpressionPrinter", "Printer"]
+
+INFIX = {op: OPS[op].symbol for op in ("add", "sub", "mul", "div", "lt", "le", "gt", "ge")}
+"""The op table's arithmetic and compares with the symbols every expression language shares."""
 
 
 class Printer:
@@ -69,3 +73,21 @@ class Printer:
         known = op in OPS or op in getattr(self, "control", ())
         what = "has no instruction for" if known else "does not know the operation"
         raise ValueError(f"{self.target} {what} {op!r}")
+
+
+class ExpressionPrinter(Printer):
+    """A printer of one expression per operation of a recording (the compiled kernel's
+    Python, :class:`analysis.kinematics.compiled.KernelPrinter`; JavaScript,
+    :class:`analysis.app.explore_js.JsPrinter`): calls, parenthesised infix operations and
+    negation alike; a subclass names its functions, its ``infix`` symbols (the table's
+    arithmetic and compares, :data:`INFIX`, plus its own ``eq``, ``and``, ``or``), ``not``
+    and ``select``."""
+
+    def _print_function(self, op, *args):
+        return f"{self.known_functions[op]}({', '.join(args)})"
+
+    def _print_infix(self, op, a, b):
+        return f"({a} {self.symbol(op)} {b})"
+
+    def _print_neg(self, a):
+        return f"(-{a})"

@@ -36,10 +36,11 @@ from pathlib import Path
 
 import sympy as sp
 
-__all__ = ["FUNCTIONS", "PAPERS", "REQUIRED", "TYPES", "Paper", "Record", "load", "paper_path"]
+__all__ = [
+    "FUNCTIONS", "PAPERS", "REQUIRED", "TYPES", "Paper", "Record", "load", "load_file", "names",
+    "paper_path",
+]  # fmt: skip
 
-PAPERS: tuple[str, ...] = ("grabber", "palletizer", "picker", "gr1")
-"""Every paper, by the name its data and register files carry."""
 TYPES: tuple[str, ...] = (
     "equation", "expression", "function", "matrix", "table", "listing", "claim", "statement",
     "display", "cross-reference", "reference", "section", "extracted", "lost", "uncertain",
@@ -71,6 +72,30 @@ def paper_path(name: str) -> Path:
     from analysis.paths import data_dir  # the one place the data folder is found
 
     return data_dir() / "papers" / f"{name}.toml"
+
+
+@cache
+def _raw(path: Path) -> dict:
+    return tomllib.loads(path.read_text(encoding="utf-8"))
+
+
+@cache
+def names() -> tuple[str, ...]:
+    """Every paper of ``data/papers/`` (a file ``<name>.toml`` whose ``[paper] id`` is its
+    name), in the order of the seed texts they transcribe (``[paper] source``): a new paper
+    is a new data file, no Python tuple to edit."""
+    found = []
+    for path in sorted(paper_path("x").parent.glob("*.toml")):
+        meta = _raw(path).get("paper", {})
+        if meta.get("id") == path.stem:
+            found.append((str(meta.get("source", "")), path.stem))
+    return tuple(name for _, name in sorted(found))
+
+
+def __getattr__(attr: str):
+    if attr == "PAPERS":  # every paper, by the name its data and register files carry
+        return names()
+    raise AttributeError(f"module {__name__!r} has no attribute {attr!r}")
 
 
 @dataclass(frozen=True)
@@ -278,16 +303,23 @@ def _symbols(spec: Mapping) -> dict[str, object]:
 
 @cache
 def load(name: str) -> Paper:
-    """The paper ``name`` (one of :data:`PAPERS`), validated, cached."""
-    if name not in PAPERS:
-        raise ValueError(f"no paper {name!r}; expected one of {', '.join(PAPERS)}")
-    raw = tomllib.loads(paper_path(name).read_text(encoding="utf-8"))
+    """The paper ``name`` (one of :func:`names`), validated, cached."""
+    if name not in names():
+        raise ValueError(f"no paper {name!r}; expected one of {', '.join(names())}")
+    return load_file(paper_path(name))
+
+
+@cache
+def load_file(path: Path) -> Paper:
+    """The paper in the data file ``path`` (anywhere: a paper being added, a test's example),
+    validated, cached."""
+    raw = _raw(Path(path))
     meta = raw["paper"]
     recs = {}
     for r in raw.get("record", ()):
-        rec = Record(name, r["id"], r["type"], r.get("location", ""), r)
+        rec = Record(meta["id"], r["id"], r["type"], r.get("location", ""), r)
         if rec.id in recs:
-            raise ValueError(f"{paper_path(name)}: duplicate record id {rec.id!r}")
+            raise ValueError(f"{path}: duplicate record id {rec.id!r}")
         recs[rec.id] = rec
     paper = Paper(meta["id"], meta["title"], meta["source"], recs, meta)
     validate(paper)

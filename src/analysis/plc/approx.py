@@ -133,9 +133,10 @@ def atan2_from_atan(m, y, x):
 class PlcFloat32Ops(Float32Ops):
     """The REAL arithmetic of a generated program, instruction for instruction.
 
-    ``dialect="s7-200"``: ROUND halves away from zero; ``"s7-300"``: RND halves to even;
-    ``"st"``/``"scl"`` (IEC 61131-3 ST, Siemens SCL: :mod:`analysis.plc.st`): halves away
-    from zero, the tie fixed after ``REAL_TO_DINT``.
+    ``dialect`` names a printer of :data:`analysis.plc.dialects.DIALECTS`, whose
+    ``rounding`` is the tie rule: ``"s7-200"``, ROUND halves away from zero; ``"s7-300"``,
+    RND halves to even; ``"st"``/``"scl"``/``"plcopen-xml"`` (IEC 61131-3 ST, Siemens SCL:
+    :mod:`analysis.plc.st`): halves away from zero, the tie fixed after ``REAL_TO_DINT``.
     ``trig="subroutine"`` (the default on the S7-200, the only choice there): ATAN2 and ACOS
     are the generated subroutines (:func:`atan2_poly`, ``acos_via_atan2``); ``"native"``
     (the S7-300 default): ATAN with quadrant selects (:func:`atan2_from_atan`) and ACOS, which
@@ -146,17 +147,14 @@ class PlcFloat32Ops(Float32Ops):
     def __init__(
         self, dialect: str = "s7-200", trig: str | None = None, degree: int = ATAN_DEGREE
     ) -> None:
-        if dialect not in ("s7-200", "s7-300", "st", "scl"):
-            raise ValueError(f"dialect {dialect!r}: expected 's7-200', 's7-300', 'st' or 'scl'")
-        default = {"s7-200": "subroutine", "s7-300": "native"}.get(dialect, "function")
-        trig = trig or default
-        if trig not in ("subroutine", "native", "function") or (dialect, trig) in (
-            ("s7-200", "native"),
-            ("s7-200", "function"),
-            ("s7-300", "function"),
-        ):
-            raise ValueError(f"trig {trig!r} is not available on the {dialect}")
-        super().__init__("half-even" if dialect == "s7-300" else "half-away")
+        # the dialect's tie rule and trigonometry, as its printer class says (the registry
+        # sits above this module: the printers print what the lowering, which imports this
+        # module, writes)
+        from analysis.plc.dialects import printer_class
+
+        cls = printer_class(dialect)
+        trig = cls.check_trig(trig)
+        super().__init__(cls.rounding)
         self.dialect, self.trig, self.degree = dialect, trig, degree
 
     def atan2(self, y, x):

@@ -1,13 +1,14 @@
 """A PLC program and its memory map, as text files for a dialect (the ``stl`` command).
 
 :func:`generate` builds the program of an arm's closed form (:func:`analysis.plc.ir.
-build_program`), allocates its variables (:mod:`.memmap`) and prints it (:mod:`.emit`). For
-the paper's arm on the S7-200 it adds the motion networks that turn the counts into stepper
-moves on the CPU 224's two PTO channels (:mod:`.motion`, Table 2's I/O). The MAP.json it
-returns (:meth:`~.memmap.MemoryMap.document`) names every signal with its unit, every status
-code the program writes, every memory range the program text uses and what the first scan
-does; every address is checked against the target CPU's memory (ValueError naming the CPU
-and the limit).
+build_program`) and hands it to the dialect's printer class (:data:`analysis.plc.dialects.
+DIALECTS`), which prints it and writes its MAP.json: for the S7 dialects the variables are
+allocated once in the target CPU's memory (:mod:`.memmap`; every address checked against the
+CPU, a ValueError naming the CPU and the limit), and for the paper's arm on the S7-200 the
+motion networks turn the counts into stepper moves on the CPU 224's two PTO channels
+(:mod:`.motion`, Table 2's I/O); for ST, SCL and PLCopen XML the map names the block's
+interface. MAP.json names every signal with its unit, every status code the program writes,
+every memory range the program text uses and what the first scan does.
 
 Start-up. By default the program writes nothing into its inputs: an HMI's target survives a
 power cycle (if the CPU retains that memory) and is never replaced by an example. The
@@ -18,169 +19,76 @@ or three numbers to generate that network, and MAP.json says so.
 
 from __future__ import annotations
 
-import json
+from analysis.plc.dialects import printer_class
+from analysis.plc.ir import build_program
+from analysis.plc.printer import Generated, Options
 
-from analysis.kinematics.arm import Params
-from analysis.kinematics.arms import closed_form
-from analysis.plc.emit import allocate, emit_s7200, emit_s7300
-from analysis.plc.ir import Program, build_program
-from analysis.plc.memmap import DIALECTS, MemoryMap, default_map
-from analysis.plc.motion import MOTION_STARTUP, motion_networks, motion_uses
+__all__ = ["MACHINE_DIALECTS", "Generated", "generate"]
 
-__all__ = ["generate", "input_units", "status_codes"]
-
-
-
-def input_units(params: Params) -> dict[str, str]:
-    """Input name -> unit (:attr:`analysis.kinematics.arm.Arm.input_units`)."""
-    from analysis.kinematics.arm import Arm
-
-    arm = Arm(params)
-    return dict(zip(arm.inputs, arm.input_units, strict=True))
-
-
-def status_codes(program: Program) -> list[int]:
-    """The status codes ``program`` writes: 0, and every refusal's (``accept``'s list in the
-    structured IR, ``seti status k`` once flattened)."""
-    codes = {0}
-    for i in program.body:
-        if i.op == "accept":
-            codes |= {int(k) for k in i.args[0]}
-        elif i.op in ("refuse", "notfinite"):
-            codes.add(int(i.args[1]))
-        elif i.op == "seti" and i.dst == "status":
-            codes.add(int(i.args[0]))
-    return sorted(codes)
-
-
-def _startup_values(params: Params, startup_target):
-    if startup_target is None:
-        return None
-    if isinstance(startup_target, str):
-        if startup_target != "paper":
-            raise ValueError(f"startup_target {startup_target!r}: expected 'paper' or numbers")
-        start = closed_form(params.description.closed_form).startup_target(params)
-        if start is None:
-            raise ValueError(f"arm {params.arm} names no example target (STARTUP_TARGET)")
-        return start
-    return tuple(float(v) for v in startup_target)
-
-
-def _startup_doc(dialect, prog, start, units, with_motion) -> dict[str, str]:
-    doc = {}
-    if start is None:
-        doc["inputs"] = (
-            "not written: the program computes from whatever the inputs hold (an HMI's value "
-            "survives a restart only where the CPU retains that memory)"
-        )
-    else:
-        where = "the first scan (SM0.1)" if dialect == "s7-200" else "OB100 (start-up)"
-        vals = ", ".join(f"{k} = {v:g} {units[k]}" for k, v in zip(prog.inputs, start, strict=True))
-        doc["inputs"] = (
-            f"written on {where} with the example target {vals} (the paper's Figure 3): a "
-            "value the HMI wrote before the restart is overwritten"
-        )
-    doc["outputs"] = (
-        "c1..cn keep their value until the first scan that solves a target; status and the "
-        "reach flag are written on every scan"
-    )
-    if with_motion:
-        doc["motion"] = MOTION_STARTUP
-    return doc
+MACHINE_DIALECTS = ("st", "scl", "plcopen-xml")
+"""The dialects whose output carries the machine program (issue 29) unless ``motion=False``."""
 
 
 def generate(
-    dialect: str = "s7-300",
+    arm,
+    dialect: str,
     branch: str | None = None,
     trig: str | None = None,
-    mmap: MemoryMap | None = None,
-    params: Params | None = None,
+    mmap=None,
+    *,
     motion: bool = True,
     theta1_on_axis: float | None = None,
     optimize: bool = True,
     startup_target=None,
     cpu: str | None = None,
-) -> tuple[str, str]:
-    """Program text and MAP.json text for one dialect.
+) -> Generated:
+    """Program text, MAP.json text (and any further files) of ``arm`` for one dialect.
 
     Parameters
     ----------
-    dialect : {"s7-200", "s7-300", "st", "scl", "plcopen-xml"}
-        The last three: :func:`analysis.plc.st_generate.generate_st`.
+    arm : Arm
+        The arm (:class:`analysis.kinematics.arm.Arm`: its closed form and numbers).
+    dialect : str
+        A key of :data:`analysis.plc.dialects.DIALECTS` ("s7-200", "s7-300", "st", "scl",
+        "plcopen-xml").
     branch : str, optional
         Default: the arm's first (the paper's) branch.
-    trig : {"native", "subroutine"}, optional
-        Default: native on the S7-300, subroutine on the S7-200 (its only choice).
+    trig : {"native", "subroutine", "function"}, optional
+        Default: the dialect's (subroutine on the S7-200, its only choice; native on the
+        S7-300; function in the ST family).
     mmap : MemoryMap, optional
-        Addresses (default: :func:`~.memmap.default_map` for the program's I/O).
-    params : Params, optional
-        The arm and its numbers (default: the paper's arm, Table 3).
+        Addresses (default: :func:`~.memmap.default_map` for the program's I/O; only for a
+        dialect with addresses).
     motion : bool
-        S7-200 and the paper's arm only: append the PTO motion networks.
+        S7-200 and the paper's arm: append the PTO motion networks; st, scl, plcopen-xml:
+        the machine program beside the IK block (:func:`analysis.plc.machine.generate.
+        with_machine`; False: the IK block on its own).
     theta1_on_axis : float, optional
         Waist angle [rad] on the base axis (default: refuse such targets, status 3).
     optimize : bool
         S7-300: the AWL after :func:`~.peephole.optimize_awl` (fewer loads and stores, the
         same results). The S7-200 text is never rewritten.
     startup_target : None, "paper" or numbers
-        What the first scan writes into the inputs: nothing (default), the closed form's
-        example (``"paper"``: Figure 3's (100, 100, 600) mm for the grabber), or these
-        values (in the inputs' units).
+        S7 dialects: what the first scan writes into the inputs: nothing (default), the
+        closed form's example (``"paper"``: Figure 3's (100, 100, 600) mm for the grabber),
+        or these values (in the inputs' units).
     cpu : str, optional
-        Target CPU (:data:`~.memmap.CPUS`; default the map's, else CPU 224 / CPU 315-2 DP).
+        Target CPU (:data:`~.cpus.CPUS`; default the map's, else CPU 224 / CPU 315-2 DP).
+
+    Returns
+    -------
+    Generated
+        ``.program``, ``.map`` and ``.files``; unpacks as ``text, mjson``.
     """
-    from analysis.plc.st_generate import ST_FAMILY, generate_st
+    cls = printer_class(dialect)
+    options = Options(mmap, cpu, motion, optimize, startup_target)
+    cls.check_options(options)
+    trig = cls.check_trig(trig)
+    program = build_program(arm, branch, trig, theta1_on_axis=theta1_on_axis)
+    out = cls.generate(arm, program, options)
+    if motion and dialect in MACHINE_DIALECTS:  # the machine program beside the IK block
+        from analysis.plc.machine.generate import with_machine
+        from analysis.plc.st import block_name
 
-    if dialect in ST_FAMILY:  # IEC 61131-3 ST, SCL, PLCopen XML: no addresses, no motion
-        if mmap is not None:
-            raise ValueError(f"a memory layout names addresses; {dialect} has none")
-        return generate_st(dialect, branch, trig, params, theta1_on_axis)
-    if dialect not in DIALECTS:
-        raise ValueError(f"dialect {dialect!r} is not one of {', '.join((*DIALECTS, *ST_FAMILY))}")
-    if params is None:
-        from analysis.kinematics.params import paper_params
-
-        params = paper_params()
-    trig = trig or ("native" if dialect == "s7-300" else "subroutine")
-    if dialect == "s7-200" and trig == "native":
-        raise ValueError("--trig native is not possible on the S7-200 (no ATAN/ACOS instruction)")
-    prog = build_program(params, branch, trig, theta1_on_axis=theta1_on_axis)
-    mmap = (mmap or default_map(dialect, prog.inputs, len(prog.outputs))).with_dialect(dialect)
-    if cpu is not None:
-        mmap = mmap.with_cpu(cpu)
-    start = _startup_values(params, startup_target)
-    units = input_units(params)
-    if start is not None and len(start) != len(prog.inputs):
-        raise ValueError(
-            f"startup_target has {len(start)} values; the program has {len(prog.inputs)} "
-            f"inputs ({', '.join(prog.inputs)})"
-        )
-    work = allocate(prog, mmap)
-    mmap.check_end(max(work.values(), default=mmap.work_base) + 3, "the work area")
-    with_motion = dialect == "s7-200" and motion and params.arm == "grabber"
-    if dialect == "s7-300":
-        text = emit_s7300(prog, mmap, startup_target=start, optimize=optimize)
-    else:
-        text = emit_s7200(
-            prog, mmap, startup_target=start, motion=motion_networks(mmap) if with_motion else None
-        )
-    uses = {"AC0": "finiteness test of the inputs (exponent bits, no REAL compare)"}
-    if with_motion:
-        uses.update(motion_uses())
-    joints = params.description.joints
-    outputs = {
-        f"c{j + 1}": {"joint": joints[j].name, "pulses_per_rev": params.pulses_per_rev[j]}
-        for j in range(len(prog.outputs))
-    }
-    doc = mmap.document(
-        text,
-        units=units,
-        outputs=outputs,
-        status_codes=status_codes(prog),
-        work=work,
-        uses=uses,
-        startup=_startup_doc(dialect, prog, start, units, with_motion),
-        arm=params.arm,
-        branch=prog.branch,
-    )
-    return text, json.dumps(doc, indent=2, ensure_ascii=False) + "\n"
+        return with_machine(arm, dialect, out, block_name(program, arm.branches[0]))
+    return out

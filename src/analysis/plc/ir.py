@@ -7,7 +7,8 @@ with :class:`~analysis.kinematics.trace.TraceOps`, and lowers the recording to a
 selects, the refusals and ``abs``, calls of the ATAN2/ACOS subroutines (themselves recorded
 from :func:`analysis.plc.approx.atan2_poly`, the S7-200 has no inverse trigonometry) or the
 S7-300's native ATAN (quadrants by :func:`analysis.plc.approx.atan2_from_atan`) and ACOS.
-Both emitters (:mod:`.emit`) print this IR. No formula of an arm is written here.
+The printers of :data:`analysis.plc.dialects.DIALECTS` print this IR (its types:
+:mod:`.instr`). No formula of an arm is written here.
 
 Instructions (``Instr.op``), two levels
 --------------------------------------
@@ -41,13 +42,12 @@ slots once dead (a subroutine's locals must fit the S7-200's 64 bytes of L memor
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
 
-from analysis.kinematics.arms import closed_form
 from analysis.kinematics.ops import CONDITIONS, OPS
 from analysis.kinematics.status import Status
 from analysis.kinematics.trace import Graph, Node, TraceOps
 from analysis.plc.approx import ATAN_DEGREE, atan2_from_atan, atan2_poly
+from analysis.plc.instr import CMP, CMP_OF, Cond, Instr, Program, Subroutine, flatten, names
 from analysis.plc.model import PLC_MARGIN_MM, PLC_MARGIN_RAD, program_body
 
 __all__ = [
@@ -66,9 +66,6 @@ __all__ = [
     "flatten",
 ]
 
-CMP = ("<", "<=", ">", ">=", "==", "<>")
-_CMP_OF = {op: OPS[op].symbol for op in OPS if OPS[op].kind == "compare"}
-_NOT = {"<": ">=", "<=": ">", ">": "<=", ">=": "<", "==": "<>", "<>": "=="}
 TRIG = ("subroutine", "native", "function")
 """How a program gets ATAN2 and ACOS: ``subroutine``, both generated from ``+ - * /`` and
 compares (:func:`analysis.plc.approx.atan2_poly`; the S7-200 has no inverse trigonometry);
@@ -76,85 +73,6 @@ compares (:func:`analysis.plc.approx.atan2_poly`; the S7-200 has no inverse trig
 (:func:`analysis.plc.approx.atan2_from_atan`; S7-300); ``function``, ACOS native and ATAN2 a
 generated function of the same quadrant logic on ATAN (IEC 61131-3 ST and SCL: the standard
 library has ATAN but no ATAN2). ``native`` and ``function`` compute the same REAL values."""
-
-
-@dataclass(frozen=True)
-class Cond:
-    """A condition: a compare (``op`` in lt le gt ge eq, ``args`` two operands) or a logic
-    operation (``and``, ``or``: two conditions; ``not``: one)."""
-
-    op: str
-    args: tuple
-
-    def operands(self):
-        """Variable names and constants the condition reads, in order."""
-        for a in self.args:
-            if isinstance(a, Cond):
-                yield from a.operands()
-            else:
-                yield a
-
-
-@dataclass(frozen=True)
-class Instr:
-    op: str
-    dst: str | None = None
-    args: tuple = ()
-    comment: str = ""
-
-
-@dataclass(frozen=True)
-class Subroutine:
-    """A generated subroutine: S7-200 ``SUBROUTINE_BLOCK name:SBRn``, S7-300 ``FC n``."""
-
-    name: str
-    number: int
-    inputs: tuple[str, ...]
-    outputs: tuple[str, ...]
-    temps: tuple[str, ...]
-    body: tuple[Instr, ...]
-    title: str
-
-
-@dataclass(frozen=True)
-class Program:
-    """The IK program: OB1 body, subroutines, I/O and work variable names."""
-
-    body: tuple[Instr, ...]
-    subroutines: tuple[Subroutine, ...]
-    work: tuple[str, ...]
-    arm: str
-    branch: str
-    trig: str
-    title: str
-    inputs: tuple[str, ...] = ("px", "py", "pz")
-    outputs: tuple[str, ...] = ("c1", "c2", "c3")
-    notes: tuple[str, ...] = field(default=())
-    graph: Graph | None = field(default=None, compare=False, repr=False)
-
-    def variables(self) -> set[str]:
-        return {a for i in self.body for a in _names(i)}
-
-
-def _names(i: Instr):
-    """Variable names an instruction (structured or flat) reads or writes."""
-    if i.dst is not None:
-        yield i.dst
-    if i.op == "call":
-        yield from i.args[1]
-        yield from i.args[2]
-    elif i.op == "jcmp":
-        yield from (a for a in i.args[1:3] if isinstance(a, str))
-    elif i.op in ("jnotfinite", "notfinite"):
-        yield i.args[0]
-    elif i.op in ("select", "refuse"):
-        for a in i.args:
-            if isinstance(a, Cond):
-                yield from (b for b in a.operands() if isinstance(b, str))
-            elif isinstance(a, str):
-                yield a
-    elif i.op == "mov" or i.op in OPS:
-        yield from (a for a in i.args if isinstance(a, str))
 
 
 class Lowering:
@@ -248,7 +166,7 @@ class Lowering:
     # --- conditions ---------------------------------------------------------------------------
     def cond(self, c: Node) -> Cond:
         """The :class:`Cond` tree of a recorded condition."""
-        if c.op in _CMP_OF:
+        if c.op in CMP_OF:
             return Cond(c.op, (self.opnd(c.args[0]), self.opnd(c.args[1])))
         if OPS.get(c.op) is None or OPS[c.op].kind != "logic":
             raise ValueError(f"{c!r} is not a condition")
@@ -388,96 +306,23 @@ def _lower(g: Graph, fixed: dict[int, str], trig: str, inputs, refusals) -> tupl
     return tuple(low.code)
 
 
-def flatten(code) -> tuple[Instr, ...]:
-    """Structured code with jumps only (module docstring), for the S7 listings.
-
-    ``select d c a b``: ``mov d b``, jump past ``mov d a`` unless c; ``abs d a``: ``mov d a``
-    and ``d := 0 - a`` unless a >= 0; ``refuse c k``: jump to k's refusal if c;
-    ``notfinite a k``: ``jnotfinite a``; ``accept``: status 0, reach flag on, jump to the
-    end, then one refusal block per code (status k, reach flag off)."""
-    out: list[Instr] = []
-    count = 0
-
-    def label() -> str:
-        nonlocal count
-        count += 1
-        return f"@{count}"
-
-    def jump_if(c: Cond, target: str, value: bool) -> None:
-        """Jump to ``target`` if ``c`` is ``value`` (short-circuit and/or/not)."""
-        if c.op in _CMP_OF:
-            cmp = _CMP_OF[c.op] if value else _NOT[_CMP_OF[c.op]]
-            out.append(Instr("jcmp", None, (cmp, c.args[0], c.args[1], target)))
-        elif c.op == "not":
-            jump_if(c.args[0], target, not value)
-        elif (c.op == "or") == value:  # or -> true, and -> false: either operand decides
-            jump_if(c.args[0], target, value)
-            jump_if(c.args[1], target, value)
-        else:  # or -> false, and -> true: both operands must agree
-            skip = label()
-            jump_if(c.args[0], skip, not value)
-            jump_if(c.args[1], target, value)
-            out.append(Instr("label", None, (skip,)))
-
-    for i in code:
-        if i.op == "select":
-            cond, a, b = i.args
-            skip = label()
-            out.append(Instr("mov", i.dst, (b,)))
-            jump_if(cond, skip, False)
-            out.append(Instr("mov", i.dst, (a,)))
-            out.append(Instr("label", None, (skip,)))
-        elif i.op == "abs":
-            skip = label()
-            out.append(Instr("mov", i.dst, i.args))
-            out.append(Instr("jcmp", None, (">=", i.args[0], 0.0, skip)))
-            out.append(Instr("sub", i.dst, (0.0, i.args[0])))
-            out.append(Instr("label", None, (skip,)))
-        elif i.op == "neg":
-            out.append(Instr("sub", i.dst, (0.0, i.args[0]), i.comment))
-        elif i.op == "refuse":
-            jump_if(i.args[0], f"@refuse{int(i.args[1])}", True)
-        elif i.op == "notfinite":
-            out.append(Instr("jnotfinite", None, (i.args[0], f"@refuse{int(i.args[1])}")))
-        elif i.op == "accept":
-            end = label()
-            out.append(Instr("seti", "status", (0,)))
-            out.append(Instr("set", "reachable"))
-            out.append(Instr("jmp", None, (end,)))
-            out.append(
-                Instr(
-                    "network",
-                    None,
-                    ("refused: status code, reach flag off, c1..cn unchanged, no motion",),
-                )
-            )
-            for k in i.args[0]:
-                out.append(Instr("label", None, (f"@refuse{k}",)))
-                out.append(Instr("seti", "status", (k,), Status(k).text))
-                out.append(Instr("reset", "reachable"))
-                out.append(Instr("jmp", None, (end,)))
-            out.append(Instr("label", None, (end,)))
-        else:
-            out.append(i)
-    return tuple(out)
-
-
 def _work_names(code: tuple[Instr, ...], io: set[str]) -> list[str]:
     """The scratch variables of ``code`` (every name but the inputs and outputs ``io``), in
     order of first use."""
     work: list[str] = []
     for ins in code:
-        for n in _names(ins):
+        for n in names(ins):
             if n not in io and n not in work:
                 work.append(n)
     return work
 
 
-def _notes(params, branch: str, trig: str, labels: dict) -> tuple[str, ...]:
+def _notes(arm, branch: str, trig: str, labels: dict) -> tuple[str, ...]:
     """The program header's notes: the arm, its lengths (assumed ones marked), pulses per
     revolution, the trigonometry, the status codes and the band it refuses."""
+    params = arm.params
     ppr = params.pulses_per_rev
-    desc = params.description
+    desc = arm.description
     assumed = set(desc.assumed)
     vals = ", ".join(
         f"{k} = {v:g} mm" + (" (assumed)" if k in assumed else "") for k, v in params.items()
@@ -490,7 +335,7 @@ def _notes(params, branch: str, trig: str, labels: dict) -> tuple[str, ...]:
         if j.kind == "prismatic"
     )
     return (
-        f"arm {params.arm}, branch {branch}; {vals}; "
+        f"arm {arm.name}, branch {branch}; {vals}; "
         + "/".join(f"{v:g}" for v in ppr)
         + " pulses/rev"
         + (" (assumed)" if ppr_assumed else "")
@@ -517,7 +362,7 @@ def _notes(params, branch: str, trig: str, labels: dict) -> tuple[str, ...]:
 
 
 def build_program(
-    params,
+    arm,
     branch: str | None = None,
     trig: str = "subroutine",
     *,
@@ -527,8 +372,9 @@ def build_program(
 
     Parameters
     ----------
-    params : Params
-        The arm's parameters (:class:`analysis.kinematics.arm.Params`, e.g. Table 3).
+    arm : Arm
+        The arm (:class:`analysis.kinematics.arm.Arm`: its closed form, its parameters, e.g.
+        Table 3, and its description's joints).
     branch : str, optional
         Default: the arm's first (the paper's) branch.
     trig : {"subroutine", "native"}
@@ -543,31 +389,32 @@ def build_program(
     joint limits) -> its status, reach flag off, c1..cn unchanged; else c1..cn = the
     pulses (eqs. 20-22), status 0, reach flag on.
     """
-    cf = closed_form(params.description.closed_form)
-    branch = branch or cf.BRANCHES[0]
+    cf = arm.closed_form
+    inputs = tuple(arm.inputs)
+    branch = branch or arm.branches[0]
     if trig not in TRIG:
         raise ValueError(f"trig = {trig!r}: expected one of {', '.join(TRIG)}")
     if theta1_on_axis is not None and not math.isfinite(theta1_on_axis):
         raise ValueError(f"theta1_on_axis = {theta1_on_axis!r} rad is not finite")
     g = Graph()
     m = _PlcTrace(g, trig)
-    p = [g.input(k) for k in cf.INPUTS]
-    body = program_body(m, params, p, branch, theta1_on_axis=theta1_on_axis)
+    p = [g.input(k) for k in inputs]
+    body = program_body(m, arm, p, branch, theta1_on_axis=theta1_on_axis)
     refusals = body["refusals"]
     outs = {f"c{j + 1}": c for j, c in enumerate(body["c"])}
     conds = [c for _, c in refusals if isinstance(c, Node)]
     order = [c.index for c in conds]
     if order != sorted(order):
-        raise ValueError(f"{cf.__name__}: refusals must be computed in priority order")
+        raise ValueError(f"{cf.name}: refusals must be computed in priority order")
     g.outputs = {**outs, **{f"refuse{k}": c for k, c in enumerate(conds)}}
     labels = {code for code, _ in refusals}
-    fixed = {n.index: name for name, n in zip(cf.INPUTS, p, strict=True)}
+    fixed = {n.index: name for name, n in zip(inputs, p, strict=True)}
     for name, v in outs.items():
         if not isinstance(v, Node) or v.op != "round":
             raise ValueError(f"{name}: pulse counts must end in the ROUND instruction")
         fixed[v.index] = name
-    code = _lower(g, fixed, trig, cf.INPUTS, refusals)
-    io = {*cf.INPUTS, *outs, "reachable", "status"}
+    code = _lower(g, fixed, trig, inputs, refusals)
+    io = {*inputs, *outs, "reachable", "status"}
     work = _work_names(flatten(code), io)
     if trig == "subroutine":
         subs = (atan2_subroutine(1), acos_subroutine(2))
@@ -575,16 +422,16 @@ def build_program(
         subs = (atan2_function(1),)
     else:
         subs = ()
-    notes = _notes(params, branch, trig, labels)
+    notes = _notes(arm, branch, trig, labels)
     return Program(
         code,
         subs,
         tuple(work),
-        params.arm,
+        arm.name,
         branch,
         trig,
-        f"IK {branch}: target ({', '.join(cf.INPUTS)}) -> pulses",
-        tuple(cf.INPUTS),
+        f"IK {branch}: target ({', '.join(inputs)}) -> pulses",
+        inputs,
         tuple(outs),
         notes,
         g,

@@ -19,7 +19,6 @@ from typing import NamedTuple
 import numpy as np
 import numpy.typing as npt
 
-from analysis.kinematics.arms import closed_form
 from analysis.kinematics.ops import Ops, numpy_ops
 from analysis.kinematics.pulses import pulse_count, pulse_value
 from analysis.kinematics.solution import DEFAULT_TOL_MM, refusal_options, status_of
@@ -43,8 +42,9 @@ decides with its float32 angle, within rounding of the exact one
 (:func:`analysis.plc.verify.compare` explains each such case)."""
 
 
-def program_body(m: Ops, params, p, branch: str, *, theta1_on_axis=None):
-    """The generated program, in namespace ``m``: the arm's closed form solved with the
+def program_body(m: Ops, arm, p, branch: str, *, theta1_on_axis=None):
+    """The generated program of ``arm`` (:class:`analysis.kinematics.arm.Arm`), in namespace
+    ``m``: its closed form solved with the
     refusal band (:data:`PLC_MARGIN_MM`, :data:`PLC_MARGIN_RAD`;
     :func:`~analysis.kinematics.solution.refusal_options`), as
     ``Arm.solve(..., margin_mm=PLC_MARGIN_MM, margin_rad=PLC_MARGIN_RAD)`` does in float64.
@@ -54,16 +54,16 @@ def program_body(m: Ops, params, p, branch: str, *, theta1_on_axis=None):
     (the closed form's, then its ``branch_refusals`` for this branch, then the joint
     limits).
     """
-    cf = closed_form(params.description.closed_form)
-    if branch not in cf.BRANCHES:
-        raise ValueError(f"unknown branch {branch!r}; expected one of {', '.join(cf.BRANCHES)}")
+    cf, params = arm.closed_form, arm.params
+    if branch not in arm.branches:
+        raise ValueError(f"unknown branch {branch!r}; expected one of {', '.join(arm.branches)}")
     opts = refusal_options(DEFAULT_TOL_MM, PLC_MARGIN_MM, PLC_MARGIN_RAD)
     if theta1_on_axis is not None:
         opts["theta1_on_axis"] = float(theta1_on_axis)
     sol = cf.solve(m, p, dict(params), **opts)
     q = sol.branches[branch]
     refusals = [*sol.refusals, *sol.branch_refusals[branch]]
-    joints = params.description.joints
+    joints = arm.description.joints
     bounds = [None if j.unlimited else (j.lower, j.upper) for j in joints]
     limited = [(qj, lim) for qj, lim in zip(q, bounds, strict=True) if lim is not None]
     if limited:
@@ -97,29 +97,28 @@ class Prediction(NamedTuple):
 
 
 def predict(
-    params,
+    arm,
     targets: npt.ArrayLike,
     branch: str | None = None,
     *,
     ops: Ops | None = None,
     theta1_on_axis: float | None = None,
 ) -> Prediction:
-    """Evaluate :func:`program_body` for targets (N, k) in single precision.
+    """Evaluate :func:`program_body` of ``arm`` for targets (N, k) in single precision.
 
     ``ops`` defaults to the S7-200 program (``PlcFloat32Ops("s7-200")``); pass
     ``PlcFloat32Ops("s7-300")`` for the S7-300 program with native trigonometry, or
     ``Float32Ops()`` for ideal REAL arithmetic. Targets are rounded to float32 first,
     as writing them into REAL double words does.
     """
-    cf = closed_form(params.description.closed_form)
-    branch = branch or cf.BRANCHES[0]
+    branch = branch or arm.branches[0]
     m = ops if ops is not None else PlcFloat32Ops("s7-200")
-    t = np.asarray(targets, dtype=np.float32).reshape(-1, len(cf.INPUTS))
+    t = np.asarray(targets, dtype=np.float32).reshape(-1, len(arm.inputs))
     finite = np.isfinite(t).all(axis=1)
     t = np.where(finite[:, None], t, np.float32(0.0))
     with np.errstate(all="ignore"):
         r = program_body(
-            m, params, tuple(t[:, k] for k in range(t.shape[1])), branch,
+            m, arm, tuple(t[:, k] for k in range(t.shape[1])), branch,
             theta1_on_axis=theta1_on_axis,
         )  # fmt: skip
     status = np.broadcast_to(status_of(numpy_ops, r["refusals"]), len(t)).astype(np.int64)

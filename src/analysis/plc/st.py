@@ -1,10 +1,13 @@
 """IEC 61131-3 Structured Text and Siemens SCL printers of the PLC IR (:mod:`.ir`).
 
-The same program as the S7 listings (:mod:`.emit`), printed from the *structured* IR (ST has
-no jumps): one ``FUNCTION_BLOCK`` per arm whose interface is the program's: ``VAR_INPUT``
-the closed form's inputs (REAL, mm or rad), ``VAR_OUTPUT`` the pulse counts ``c1..cn``
-(DINT), ``reachable`` (BOOL) and ``status`` (DINT, :class:`~analysis.kinematics.status.
-Status` codes); the work values are its static ``VAR``.
+The same program as the S7 listings (:mod:`.s7200`, :mod:`.awl`), printed from the
+*structured* IR (ST has no jumps): one ``FUNCTION_BLOCK`` per arm whose interface is the
+program's: ``VAR_INPUT`` the closed form's inputs (REAL, mm or rad), ``VAR_OUTPUT`` the pulse
+counts ``c1..cn`` (DINT), ``reachable`` (BOOL) and ``status`` (DINT,
+:class:`~analysis.kinematics.status.Status` codes); the work values are its static ``VAR``.
+Each printer makes the program's blocks (:class:`Pou`: the functions, then the function
+block; :meth:`StPrinter.pous`) and prints each (:meth:`StPrinter.print_pou`); the PLCopen XML
+printer (:mod:`.plcopen`) prints the same blocks as XML.
 
 :class:`StPrinter` (``--dialect st``; CODESYS 3.5, TwinCAT 3, OpenPLC)
     IEC 61131-3 (3rd edition) text: typed literals (``REAL#...``: an untyped real literal
@@ -47,16 +50,19 @@ back to the ST text (:func:`scl_to_st`), which the engine compiles.
 
 from __future__ import annotations
 
+import json
 import re
+from dataclasses import dataclass
 from typing import ClassVar
 
-from analysis.kinematics.printing import Printer
 from analysis.kinematics.status import Status
-from analysis.plc.emit import fmt_real
-from analysis.plc.ir import Cond, Instr, Program, Subroutine
+from analysis.plc.instr import CMP_OF, Cond, Instr, Program, Subroutine
+from analysis.plc.mapdoc import interface_document
+from analysis.plc.printer import Generated, Options, PlcPrinter, fmt_real
 
 __all__ = [
-    "ST_DIALECTS",
+    "Decl",
+    "Pou",
     "SclPrinter",
     "StPrinter",
     "block_name",
@@ -64,8 +70,6 @@ __all__ = [
     "emit_st",
     "scl_to_st",
 ]
-
-ST_DIALECTS = ("st", "scl")
 
 REAL_MAX = "3.40282347E+38"
 """The largest finite REAL (binary32), printed."""
@@ -91,12 +95,42 @@ def block_name(program: Program, default_branch: str | None = None) -> str:
     return name
 
 
-class StPrinter(Printer):
-    """IEC 61131-3 ST of a :class:`~.ir.Program` (module docstring): one method per IR
-    instruction of the structured form, each returning statement lines."""
+@dataclass(frozen=True)
+class Decl:
+    """A declared variable: the program's ``name``, its ``ident`` in the dialect (reserved
+    words renamed), its IEC ``type`` (REAL, DINT, BOOL) and a ``note`` (unit, meaning)."""
 
+    name: str
+    ident: str
+    type: str
+    note: str = ""
+
+
+@dataclass(frozen=True)
+class Pou:
+    """A program organisation unit as the ST-family printers print it: a ``function`` or a
+    ``functionBlock`` (PLCopen's ``pouType``), its title, its variable sections in order
+    (``input``, ``output``, ``temp``, ``static``: each a tuple of :class:`Decl`) and its
+    statement lines (not indented)."""
+
+    name: str
+    kind: str
+    title: str
+    sections: tuple[tuple[str, tuple[Decl, ...]], ...]
+    body: tuple[str, ...]
+
+
+class StPrinter(PlcPrinter):
+    """IEC 61131-3 ST of a :class:`~.instr.Program` (module docstring): one method per IR
+    instruction of the structured form, each returning statement lines; one per block
+    (:meth:`pous`, :meth:`print_pou`)."""
+
+    name = "st"
+    engine = "pyplcopen's ST engine (cycle by cycle, simulated axes: analysis.plc.machine.offline)"
+    title = "IEC 61131-3 ST (CODESYS, TwinCAT, OpenPLC)"
+    trigs = ("function", "native", "subroutine")
+    runtime = "IEC 61131-3 runtime (CODESYS, TwinCAT, OpenPLC)"
     target = "IEC 61131-3 ST"
-    dialect = "st"
     control = ("select", "refuse", "notfinite", "accept", "call", "network", "mov")
     known_functions: ClassVar[dict[str, str]] = {
         "sqrt": "SQRT",
@@ -107,12 +141,16 @@ class StPrinter(Printer):
         "abs": "ABS",
     }
     infix: ClassVar[dict[str, str]] = {"add": "+", "sub": "-", "mul": "*", "div": "/"}
-    compares: ClassVar[dict[str, str]] = {"lt": "<", "le": "<=", "gt": ">", "ge": ">=", "eq": "="}
     indent = "    "
+    types: ClassVar[dict[str, str]] = {"REAL": "REAL", "DINT": "DINT", "BOOL": "BOOL"}
+    """IEC type -> the dialect's spelling."""
+    count_note = "pulses (eqs. 20-22)"
+    reachable_note = "TRUE: solved, c1..cn are its pulses"
 
     def __init__(self, function_names: dict[str, str] | None = None) -> None:
         self.function_names = dict(function_names or {})
         self.names: dict[str, str] = {}
+        self.subs: dict[str, Subroutine] = {}
 
     # --- names and operands -------------------------------------------------------------------
     def ident(self, name: str) -> str:
@@ -141,10 +179,14 @@ class StPrinter(Printer):
     def o(self, a) -> str:
         return self.lit(a) if isinstance(a, float) else self.var(a)
 
+    def compare(self, op: str, a: str, b: str) -> str:
+        """``(a op b)``, ``=`` for equality (parenthesised: ST's NOT binds tighter)."""
+        return f"({a} {'=' if op == '==' else op} {b})"
+
     def cond(self, c: Cond) -> str:
-        """A condition: compares parenthesised (ST's NOT binds tighter than a compare)."""
-        if c.op in self.compares:
-            return f"({self.o(c.args[0])} {self.compares[c.op]} {self.o(c.args[1])})"
+        """A condition: compares, ``NOT``, ``AND``, ``OR``."""
+        if c.op in CMP_OF:
+            return self.compare(CMP_OF[c.op], self.o(c.args[0]), self.o(c.args[1]))
         if c.op == "not":
             return f"NOT {self.cond(c.args[0])}"
         word = {"and": "AND", "or": "OR"}[c.op]
@@ -247,58 +289,75 @@ class StPrinter(Printer):
             out += self.doprint(i.op, i)
         return out
 
+    def decls(self, names, type_: str, note: str = "") -> tuple[Decl, ...]:
+        return tuple(Decl(n, self.ident(n), type_, note) for n in names)
+
+    def function_pou(self, sub: Subroutine) -> Pou:
+        """A generated subroutine as a FUNCTION returning its one output (REAL)."""
+        fname = self.function_names[sub.name]
+        self.declare([*sub.inputs, *sub.outputs, *sub.temps])
+        sections = (
+            ("input", self.decls(sub.inputs, "REAL")),
+            ("temp", self.decls((*sub.outputs, *sub.temps), "REAL")),
+        )
+        body = (*self.body(sub.body), self.return_value(fname, sub.outputs[0]))
+        return Pou(fname, "function", sub.title, sections, body)
+
+    def status_note(self, codes) -> str:
+        return ", ".join(f"{k} {Status(k).text}" for k in codes)
+
+    def block_pou(self, program: Program, fb: str, units) -> Pou:
+        """The IK function block: the program's I/O as its interface, the work values its
+        static variables."""
+        codes = sorted({int(i.args[1]) for i in program.body if i.op in ("refuse", "notfinite")})
+        self.declare([*program.inputs, *program.outputs, "reachable", "status", *program.work])
+        ins = tuple(
+            Decl(n, self.ident(n), "REAL", u) for n, u in zip(program.inputs, units, strict=True)
+        )
+        outs = self.decls(program.outputs, "DINT", self.count_note)
+        outs += self.decls(["reachable"], "BOOL", self.reachable_note)
+        outs += self.decls(["status"], "DINT", self.status_note([0, *codes]))
+        sections = (("input", ins), ("output", outs), ("static", self.decls(program.work, "REAL")))
+        return Pou(fb, "functionBlock", program.title, sections, tuple(self.body(program.body)))
+
+    def pous(self, program: Program, fb: str, units) -> list[Pou]:
+        """The program's blocks in order: its functions, then the IK function block."""
+        self.subs = {s.name: s for s in program.subroutines}
+        self.function_names = {s.name: f"IK_{s.name}" for s in program.subroutines}
+        return [*(self.function_pou(s) for s in program.subroutines),
+                self.block_pou(program, fb, units)]  # fmt: skip
+
     def var_section(self, kind: str, decls) -> list[str]:
         """``kind`` ... ``END_VAR`` with one declaration per line; the comments of the
         declarations go in one comment line before the section, never between two
         declarations: the ST engine (pyplcopen 0.21.0) fails to resolve an interface
         variable that a comment precedes (``sema_unknown_identifier`` at line 0)."""
-        notes = "; ".join(f"{self.ident(n)}: {c}" for n, _, c in decls if c)
-        lines = [f"{self.indent}{self.ident(n)} : {t};" for n, t, _ in decls]
+        notes = "; ".join(f"{d.ident}: {d.note}" for d in decls if d.note)
+        lines = [f"{self.indent}{d.ident} : {self.types[d.type]};" for d in decls]
         return [*([self.comment(notes)] if notes else []), kind, *lines, "END_VAR"] if lines else []
 
-    def function(self, sub: Subroutine) -> list[str]:
-        """A generated subroutine as a FUNCTION returning its one output (REAL)."""
-        fname = self.function_names[sub.name]
-        self.declare([*sub.inputs, *sub.outputs, *sub.temps])
-        out = self.function_header(fname, sub.title)
-        out += self.var_section(self.kw_input, [(n, self.real, "") for n in sub.inputs])
-        temps = [(n, self.real, "") for n in (*sub.outputs, *sub.temps)]
-        out += self.var_section(self.kw_temp, temps)
+    def print_pou(self, pou: Pou) -> list[str]:
+        """A POU as source lines (its header, sections, body and end)."""
+        function = pou.kind == "function"
+        out = (self.function_header if function else self.fb_header)(pou.name, pou.title)
+        for kind, decls in pou.sections:
+            out += self.var_section(self.keywords[kind], decls)
         out += self.begin()
-        out += [self.indent + line if line else "" for line in self.body(sub.body)]
-        out.append(self.indent + self.return_value(fname, sub.outputs[0]))
-        out += [self.end_function, ""]
-        return out
-
-    def function_block(self, program: Program, fb: str, units) -> list[str]:
-        codes = sorted({int(i.args[1]) for i in program.body if i.op in ("refuse", "notfinite")})
-        status = ", ".join(f"{k} {Status(k).text}" for k in [0, *codes])
-        io_in = [(n, self.real, u) for n, u in zip(program.inputs, units, strict=True)]
-        io_out = [(c, self.dint, "pulses (eqs. 20-22)") for c in program.outputs]
-        io_out += [
-            ("reachable", self.bool_, "TRUE: solved, c1..cn are its pulses"),
-            ("status", self.dint, status),
-        ]
-        self.declare([*program.inputs, *program.outputs, "reachable", "status", *program.work])
-        out = self.fb_header(fb, program.title)
-        out += self.var_section("VAR_INPUT", io_in)
-        out += self.var_section("VAR_OUTPUT", io_out)
-        out += self.var_section(self.kw_static, [(n, self.real, "") for n in program.work])
-        out += self.begin()
-        out += [self.indent + line if line else "" for line in self.body(program.body)]
-        out += [self.end_fb, ""]
+        out += [self.indent + line if line else "" for line in pou.body]
+        out += [self.end_function if function else self.end_fb, ""]
         return out
 
     # dialect words (SCL overrides)
-    real, dint, bool_ = "REAL", "DINT", "BOOL"
-    kw_input, kw_temp, kw_static = "VAR_INPUT", "VAR", "VAR"
+    keywords: ClassVar[dict[str, str]] = {
+        "input": "VAR_INPUT", "output": "VAR_OUTPUT", "temp": "VAR", "static": "VAR",
+    }  # fmt: skip
     end_function, end_fb = "END_FUNCTION", "END_FUNCTION_BLOCK"
 
     def function_header(self, name: str, title: str) -> list[str]:
-        return [f"(* {title} *)", f"FUNCTION {name} : {self.real}"]
+        return [self.comment(title), f"FUNCTION {name} : {self.types['REAL']}"]
 
     def fb_header(self, name: str, title: str) -> list[str]:
-        return [f"(* {title} *)", f"FUNCTION_BLOCK {name}"]
+        return [self.comment(title), f"FUNCTION_BLOCK {name}"]
 
     def begin(self) -> list[str]:
         return []
@@ -307,37 +366,62 @@ class StPrinter(Printer):
         return f"{fname} := {self.var(result)};"
 
     def header(self, program: Program, fb: str, note: str) -> list[str]:
-        lines = [program.title, *program.notes, note]
-        return ["(*", *(f"   {n}" for n in lines), "*)", ""]
+        return [*self.comment_block([program.title, *program.notes, note]), ""]
+
+    def comment_block(self, lines) -> list[str]:
+        """A comment of several lines (ST: one ``(* ... *)`` around them)."""
+        return ["(*", *(f"   {n.replace('*)', '* )')}" for n in lines), "*)"]
 
     def doprint_program(self, program: Program, *, units, default_branch=None) -> str:
         """The whole source: the header comment, the functions, the function block."""
         fb = block_name(program, default_branch)
-        self.subs = {s.name: s for s in program.subroutines}
-        self.function_names = {s.name: f"IK_{s.name}" for s in program.subroutines}
+        pous = self.pous(program, fb, units)
         note = (
-            f"generated by analysis.plc (python -m analysis stl --dialect {self.dialect}); "
+            f"generated by analysis.plc (python -m analysis stl --dialect {self.name}); "
             "REAL = IEEE binary32 throughout"
         )
         out = self.header(program, fb, note)
-        for s in program.subroutines:
-            out += self.function(s)
-        out += self.function_block(program, fb, units)
+        for pou in pous:
+            out += self.print_pou(pou)
         out += self.trailer(fb)
         return "\n".join(out).rstrip("\n") + "\n"
 
     def trailer(self, fb: str) -> list[str]:
         return []
 
+    # --- the dialect's output ---------------------------------------------------------------------
+    @classmethod
+    def instance_db(cls, fb: str) -> str | None:
+        return None
+
+    @classmethod
+    def generate(cls, arm, program, options: Options) -> Generated:
+        """The source and its interface map (:func:`~.mapdoc.interface_document`)."""
+        units, first = arm.input_units, arm.branches[0]
+        fb = block_name(program, first)
+        text = cls().doprint_program(program, units=units, default_branch=first)
+        cls.check_text(text)
+        doc = interface_document(program, fb, cls.name, units, program.trig, cls.runtime,
+                                 cls.instance_db(fb))  # fmt: skip
+        return Generated(text, json.dumps(doc, indent=2) + "\n")
+
+    @classmethod
+    def check_text(cls, text: str) -> None:
+        """Refuse a text the dialect's own checker rejects (none for ST: executed in the
+        tests on the ST engine)."""
+
 
 class SclPrinter(StPrinter):
     """Siemens SCL for TIA Portal (S7-1200/1500): the ST text in SCL's dialect (module
     docstring)."""
 
+    name = "scl"
+    engine = None  # TIA Portal's SCL: no engine here (held by golden files and scl_to_st)
+    title = "Siemens SCL (TIA Portal, S7-1200/1500)"
+    runtime = "S7-1200/S7-1500 (TIA Portal, SCL source)"
     target = "Siemens SCL"
-    dialect = "scl"
-    real, dint, bool_ = "Real", "DInt", "Bool"
-    kw_temp, kw_static = "VAR_TEMP", "VAR"
+    types: ClassVar[dict[str, str]] = {"REAL": "Real", "DINT": "DInt", "BOOL": "Bool"}
+    keywords: ClassVar[dict[str, str]] = {**StPrinter.keywords, "temp": "VAR_TEMP"}
 
     def var(self, name: str) -> str:
         return f"#{self.ident(name)}"
@@ -347,7 +431,7 @@ class SclPrinter(StPrinter):
 
     def function_header(self, name: str, title: str) -> list[str]:
         return [
-            f'FUNCTION "{name}" : {self.real}',
+            f'FUNCTION "{name}" : {self.types["REAL"]}',
             f"TITLE = {title}",
             "{ S7_Optimized_Access := 'TRUE' }",
             "VERSION : 0.1",
@@ -376,7 +460,10 @@ class SclPrinter(StPrinter):
             f'the instance DB "{fb}_DB" follows the FB. REAL (32 bit) chosen, not LREAL: '
             "the arithmetic proven against awlsim, the float32 model and the ST engine",
         ]
-        return [*(f"// {n}" for n in lines), ""]
+        return [*self.comment_block(lines), ""]
+
+    def comment_block(self, lines) -> list[str]:
+        return [f"// {n}" for n in lines]
 
     def trailer(self, fb: str) -> list[str]:
         return [
@@ -389,6 +476,10 @@ class SclPrinter(StPrinter):
             "END_DATA_BLOCK",
             "",
         ]
+
+    @classmethod
+    def instance_db(cls, fb: str) -> str | None:
+        return f"{fb}_DB"
 
 
 def _units(program: Program, units) -> tuple[str, ...]:

@@ -24,6 +24,7 @@ counts as they were, and the counts themselves where it changed them (which
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import os
 import re
@@ -40,12 +41,18 @@ from analysis.plc.runner import RunResult
 
 __all__ = [
     "ENGINE_ENV",
+    "EngineFault",
     "EngineMissing",
+    "MachineRun",
+    "SimAxis",
     "StRun",
     "blank_comments",
     "build_key",
     "engine_path",
     "harness",
+    "machine_engine_path",
+    "program_variables",
+    "run_machine",
     "run_program",
     "sweep",
 ]
@@ -57,6 +64,7 @@ ENGINE_ENV = "ANALYSIS_ST_ENGINE"
 _REPO = Path(__file__).resolve().parents[3]
 _DRIVER = _REPO / "tools" / "st-engine" / "st_run.cpp"
 _PIN = _REPO / "tools" / "st-engine" / "requirements.txt"
+_MACHINE = _REPO / "tools" / "st-engine" / "st_machine.cpp"
 
 
 class EngineMissing(RuntimeError):
@@ -66,10 +74,10 @@ class EngineMissing(RuntimeError):
 def build_key() -> str | None:
     """The key the binary must report: sha256 of the pinned requirement line (with the
     sdist's hash) and of the driver source; None outside a source checkout."""
-    if not (_DRIVER.exists() and _PIN.exists()):
+    if not (_DRIVER.exists() and _PIN.exists() and _MACHINE.exists()):
         return None
     h = hashlib.sha256()
-    for p in (_PIN, _DRIVER):
+    for p in (_PIN, _DRIVER, _MACHINE):
         h.update(p.read_bytes())
     return h.hexdigest()[:16]
 
@@ -184,3 +192,188 @@ def sweep(
         kept = ~reachable[:, None] & (pulses == before)
         pulses = np.where(kept, sentinel, pulses)
     return RunResult(pulses, reachable, None, status), run
+
+
+# --- a machine, cycle by cycle ------------------------------------------------------------------
+
+MACHINE_ENGINE_ENV = "ANALYSIS_ST_MACHINE"
+"""Environment variable: path of the machine driver (default: the virtual environment's
+``bin/analysis-st-machine``, built by ``make st-engine`` beside ``analysis-st-run``)."""
+
+TIME_UNIT_VARIABLE = "MotionTimeUnit"
+CYCLE_VARIABLE = "TaskCycle"
+"""The task's cycle time [s] in a machine program: :func:`run_machine` writes the cycle there
+before the first scan too (the program plans its profiles in whole cycles of it)."""
+"""Seconds per time unit of a motion block's Velocity/Acceleration/Jerk in a machine program
+(:mod:`analysis.plc.machine.program`). pyplcopen 0.21.0's ``axis::AxisModel`` plans a motion
+block's Velocity, Acceleration, Deceleration and Jerk as they are, per cycle (``FbMoveAbsolute``
+copies them into the ``AxisCommand``; ``AxisModel::start`` plans with them unconverted; only
+the axis' own limits are set in SI, ``configure_si``); CODESYS SoftMotion, TwinCAT NC and TIA
+technology objects take them per second. :func:`run_machine` writes the cycle time [s] here
+before the first scan, which turns every ``value * MotionTimeUnit**k`` into per-cycle units:
+the one place the unit is converted."""
+
+
+@dataclass(frozen=True)
+class SimAxis:
+    """A simulated axis bound to AXIS_REF variable ``name``: limits per second in joint units
+    (deg or mm), software limits (None: none), and where it stands at power-up."""
+
+    name: str
+    max_velocity: float
+    max_acceleration: float
+    max_jerk: float
+    lower: float | None = None
+    upper: float | None = None
+    start: float = 0.0
+
+    def spec(self) -> str:
+        def f(x):
+            return "nan" if x is None else repr(float(x))
+
+        return ",".join([self.name, *(f(x) for x in (self.max_velocity, self.max_acceleration,
+                                                      self.max_jerk, self.lower, self.upper,
+                                                      self.start))])  # fmt: skip
+
+
+class EngineFault(ValueError):
+    """A scan faulted (which fault, at which cycle); the trace up to it is kept."""
+
+    def __init__(self, message: str, run) -> None:
+        super().__init__(message)
+        self.run = run
+
+
+@dataclass(frozen=True)
+class MachineRun:
+    """One row per cycle: ``t`` (s), ``q`` and ``v`` (cycles, axes) in joint units and per
+    second, ``values`` (cycles, outputs), ``faults`` (cycles,), the time spent in scans."""
+
+    t: npt.NDArray[np.float64]
+    q: npt.NDArray[np.float64]
+    v: npt.NDArray[np.float64]
+    names: tuple[str, ...]
+    values: npt.NDArray[np.float64]
+    faults: npt.NDArray[np.int64]
+    scan_ns: int
+    cycle_s: float
+
+    def __getitem__(self, name: str) -> npt.NDArray[np.float64]:
+        return self.values[:, self.names.index(name)]
+
+
+def machine_engine_path(check: bool = True) -> Path:
+    """The machine driver (as :func:`engine_path`; its key checked once per process)."""
+    env = os.environ.get(MACHINE_ENGINE_ENV)
+    path = Path(env) if env else Path(sys.prefix) / "bin" / "analysis-st-machine"
+    if check:
+        if not path.exists():
+            raise EngineMissing(f"the ST machine driver {path} is not built: run `make st-engine`")
+        _check_key(str(path), path.stat().st_mtime_ns)
+    return path
+
+
+@functools.cache
+def _check_key(path: str, mtime_ns: int) -> None:
+    key = build_key()
+    if key is not None:
+        got = subprocess.run([path, "--key"], capture_output=True, text=True)
+        if got.stdout.strip() != key:
+            raise EngineMissing(f"the ST machine driver {path} was built from other sources: "
+                                "run `make st-engine`")  # fmt: skip
+
+
+def _diagnostic(err: str) -> str:
+    lines = [ln for ln in err.splitlines() if ln and not ln.startswith("scan_ns")]
+    first = lines[0] if lines else "no diagnostic"
+    more = f" (and {len(lines) - 1} more)" if len(lines) > 1 else ""
+    return first + more
+
+
+def _with_source(source: str, fn):
+    with tempfile.NamedTemporaryFile("w", suffix=".st", delete=False, encoding="utf-8") as f:
+        f.write(blank_comments(source))
+        path = f.name
+    try:
+        return fn(path)
+    finally:
+        os.unlink(path)
+
+
+def program_variables(source: str, program: str, engine: Path | None = None) -> dict[str, str]:
+    """The variables of PROGRAM ``program`` in ``source`` and their types (as the engine
+    compiled them: BOOL, INT, DINT, REAL, LREAL, TIME, AXIS_REF, ...). ValueError with the
+    first diagnostic (line and column) if it does not compile."""
+    return dict(_program_variables(source, program, str(engine or machine_engine_path())))
+
+
+@functools.lru_cache(maxsize=64)
+def _program_variables(source: str, program: str, engine: str) -> tuple[tuple[str, str], ...]:
+    r = _with_source(source, lambda p: subprocess.run(
+        [engine, "--vars", p, program], capture_output=True, timeout=60))  # fmt: skip
+    if r.returncode != 0:
+        raise ValueError(f"the program does not compile: {_diagnostic(r.stderr.decode())}")
+    return tuple(tuple(ln.partition("\t")[::2]) for ln in r.stdout.decode().splitlines())
+
+
+def run_machine(
+    source: str,
+    program: str,
+    axes,
+    writes,
+    outputs,
+    *,
+    cycle_s: float = 0.004,
+    n_cycles: int,
+    engine: Path | None = None,
+) -> MachineRun:
+    """Run PROGRAM ``program`` for ``n_cycles`` cycles of ``cycle_s`` with one simulated
+    axis per :class:`SimAxis` in ``axes``; ``writes`` are ``(cycle, name, value)`` stored
+    before that cycle's scan (an HMI writing between scans); ``outputs`` the variables traced.
+    If the program declares :data:`TIME_UNIT_VARIABLE` or :data:`CYCLE_VARIABLE`, the cycle
+    time [s] is written there before the first scan. Raises :class:`EngineFault` (with the
+    trace so far) when a scan faults, ValueError when the program does not compile or a name
+    is not its variable."""
+    engine = engine or machine_engine_path()
+    cycle_ns = round(cycle_s * 1e9)
+    names = sorted({n for _, n, _ in writes})
+    rows = [(c, names.index(n), float(v)) for c, n, v in writes]
+    variables = program_variables(source, program, engine)
+    lower = {k.lower(): k for k in variables}
+    for var in (TIME_UNIT_VARIABLE, CYCLE_VARIABLE):
+        if var.lower() in lower:
+            tu = lower[var.lower()]
+            if tu not in names:
+                names.append(tu)
+            rows.insert(0, (0, names.index(tu), cycle_ns * 1e-9))
+    rows.sort(key=lambda r: r[0])
+    data = np.array(rows, dtype=[("c", "<i8"), ("i", "<i8"), ("v", "<f8")]).tobytes()
+    axes = list(axes)
+    cmd = [str(engine), "", program, str(cycle_ns), str(int(n_cycles)),
+           ";".join(a.spec() for a in axes), ",".join(names), ",".join(outputs)]  # fmt: skip
+
+    def go(path):
+        cmd[1] = path
+        return subprocess.run(cmd, input=data, capture_output=True, timeout=600)
+
+    r = _with_source(source, go)
+    err = r.stderr.decode("utf-8", "replace")
+    if r.returncode not in (0, 4):
+        raise ValueError(_diagnostic(err))
+    n, k = len(axes), len(outputs)
+    out = np.frombuffer(r.stdout, dtype="<f8").reshape(-1, 2 * n + k + 1)
+    ns = next((int(w[1]) for w in (ln.split() for ln in err.splitlines())
+               if w[:1] == ["scan_ns"]), 0)  # fmt: skip
+    run = MachineRun(
+        t=np.arange(len(out)) * (cycle_ns * 1e-9),
+        q=out[:, :n].copy(),
+        v=out[:, n : 2 * n].copy(),
+        names=tuple(outputs),
+        values=out[:, 2 * n : 2 * n + k].copy(),
+        faults=out[:, -1].astype(np.int64),
+        scan_ns=ns,
+        cycle_s=cycle_ns * 1e-9,
+    )
+    if r.returncode == 4:
+        raise EngineFault(f"engine {_diagnostic(err)}", run)
+    return run

@@ -62,7 +62,6 @@ loaded machine, sample_q's rejection rounds dominate).
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from dataclasses import dataclass, fields
 
 import numpy as np
@@ -71,6 +70,7 @@ import pandas as pd
 
 from analysis.kinematics.arm import Arm
 from analysis.kinematics.status import STATUS_TEXT, Status
+from analysis.plc.targets import PAPER_TARGETS, input_columns
 
 __all__ = [
     "PAPER_TARGETS",
@@ -106,33 +106,6 @@ class SweepSizes:
         """Every size times ``factor`` (rounded; at least 1 where it was not 0)."""
         sizes = {f.name: getattr(self, f.name) for f in fields(self)}
         return SweepSizes(**{k: max(1, round(v * factor)) if v else 0 for k, v in sizes.items()})
-
-
-def _table4(arm: Arm) -> npt.NDArray[np.float64]:
-    from analysis.plc.verify import table4_targets
-
-    return table4_targets()
-
-
-def _table5_3(arm: Arm) -> npt.NDArray[np.float64]:
-    from analysis.studies.gr1 import thesis_poses  # the thesis's table, as data
-
-    return thesis_poses()
-
-
-def _initial_pose(arm: Arm) -> npt.NDArray[np.float64]:
-    """Seed 001 sec. 3: the initial pose, theta = (0, -90, 90, 90) deg (on the elbow stop)."""
-    return arm.target(np.radians([[0.0, -90.0, 90.0, 90.0]]))
-
-
-PAPER_TARGETS: dict[str, Callable[[Arm], npt.NDArray[np.float64]]] = {
-    "grabber": _table4,
-    "palletizer": _initial_pose,
-    "gr1": _table5_3,
-}
-"""Per closed form, the targets its paper prints (seed 000's Table 4, seed 001's initial
-pose, seed 004's Table 5-3); an arm with that closed form (any lengths) is swept on them
-too."""
 
 
 def _wrap(a):
@@ -316,10 +289,175 @@ def _half_plane_rays(p, rng, position):
     return d
 
 
-def _columns(arm: Arm) -> list[str]:
-    from analysis.plc.verify import input_columns
+@dataclass(frozen=True)
+class _Sweep:
+    """What every kind of :func:`sweep_targets` needs: the arm, the program's branch, the
+    seeded generator (drawn in the kinds' order: one seed gives one sweep), the sizes, the
+    input columns by kind (``position``: px, py, pz; ``angle``: inputs in rad)."""
 
-    return input_columns(arm)
+    arm: Arm
+    branch: str
+    rng: np.random.Generator
+    sz: SweepSizes
+    position: list[int]
+    angle: npt.NDArray[np.intp]
+
+    @property
+    def k(self) -> int:
+        return len(self.arm.inputs)
+
+
+Parts = list[tuple[str, npt.NDArray[np.float64]]]
+
+
+def _paper(s: _Sweep) -> npt.NDArray[np.float64]:
+    """The arm's start-up target and the targets its paper prints."""
+    arm = s.arm
+    paper = [np.asarray(arm.startup_target, dtype=float)[None]] if arm.startup_target else []
+    make = PAPER_TARGETS.get(arm.closed_form.name)
+    if make is not None:
+        paper.append(np.asarray(make(arm), dtype=float).reshape(-1, s.k))
+    return np.concatenate(paper) if paper else np.empty((0, s.k))
+
+
+def _box(s: _Sweep, cfg: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
+    """Positions uniform in a box 1.2 times the extent of the reachable ones ``cfg``."""
+    n = s.sz.box
+    lo, hi = cfg.min(axis=0), cfg.max(axis=0)
+    centre, half = (lo + hi) / 2, 0.6 * (hi - lo) + 1.0
+    box = cfg[s.rng.integers(0, len(cfg), n)].copy() if len(cfg) else np.zeros((n, s.k))
+    for c in s.position:
+        box[:, c] = centre[c] + s.rng.uniform(-2 * half[c], 2 * half[c], n) / 2
+    return box
+
+
+def _boundaries(s: _Sweep) -> Parts:
+    """The boundaries crossed in the vertical half-plane (positions), toward the base axis
+    along the waist's direction, then in the angles; named by the status there."""
+    arm, branch, rng, position, angle = s.arm, s.branch, s.rng, s.position, s.angle
+    n_b, n_x, n_a = s.sz.boundary, s.sz.axis, s.sz.angle
+    q_b = arm.sample_q(rng, n_b + n_x + n_a, branch=branch)
+    start = arm.target(q_b)
+    found: list[tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], str]] = []
+    if len(position) == 3 and n_b:
+        st = start[:n_b]
+        found.append((*boundary_targets(arm, branch, st, _half_plane_rays(st, rng, position),
+                                        rng, angle=False), "1mm"))  # fmt: skip
+    if len(position) == 3 and n_x and arm.joint_units[0] == "rad":
+        st = start[n_b : n_b + n_x]
+        # the point whose azimuth the waist takes lies along +-e(theta1) (a back branch
+        # faces away): every other ray the other way
+        t1 = q_b[n_b : n_b + n_x, 0]
+        sign = np.where(np.arange(len(st)) % 2 == 0, -1.0, 1.0)
+        d = np.zeros_like(st)
+        d[:, position[0]], d[:, position[1]] = sign * np.cos(t1), sign * np.sin(t1)
+        found.append((*boundary_targets(arm, branch, st, d, rng, angle=False, waist=True,
+                                        exact=5, limits=False), "1mm"))  # fmt: skip
+    if len(angle) and n_a:
+        st = start[n_b + n_x :]
+        d = np.zeros_like(st)
+        d[:, angle] = rng.normal(size=(len(st), len(angle)))
+        d /= np.linalg.norm(d, axis=1, keepdims=True)
+        found.append((*boundary_targets(arm, branch, st, d, rng, angle=True, exact=5,
+                                        limits=False), "tol"))  # fmt: skip
+    parts: Parts = []
+    for pts, at, suffix in found:
+        for code in np.unique(at):
+            name = STATUS_TEXT[Status(int(code))] if code else "flip"
+            parts.append((f"{name}-{suffix}", pts[at == code]))
+    return parts
+
+
+def _on_limits(s: _Sweep, limited: list[int], n_exact: int) -> npt.NDArray[np.float64]:
+    """Targets with a limited joint exactly at a limit: candidate configurations with that
+    bound pinned (the closed form's own sampler keeps coupled joints coupled) that the
+    program's branch solves as this configuration (or refuses: a stop on a singular set,
+    the palletizer's folded elbow), not another branch's."""
+    from analysis.kinematics.sampling import candidates
+
+    arm = s.arm
+    on = []
+    for i in range(2 * len(limited)):  # each bound of each limited joint (a few)
+        j, end = limited[i // 2], i % 2
+        b = arm.bounds.copy()
+        b[j] = arm.bounds[j, end]
+        q = candidates(arm, s.rng, 4 * n_exact, b)
+        q = q[(q[:, j] == b[j, 0]) & arm.valid_q(q)]
+        p = arm.target(q)
+        sol = arm.solve(p, [s.branch], limits=False)
+        d = np.abs(sol.theta[:, 0, j] - b[j, 0])
+        d = np.minimum(d, 2 * np.pi - d) if arm.joint_units[j] == "rad" else d
+        on.append(p[~sol.ok[:, 0] | (d <= PIN_TOL)])
+    on_limit = np.concatenate(on)
+    return on_limit[s.rng.permutation(len(on_limit))[:n_exact]]
+
+
+def _joint_limit(s: _Sweep) -> Parts:
+    """A limited joint exactly at its limit (a sixth of the rows), or the program's branch
+    pinned 1e-7 .. 1e-2 inside or outside it."""
+    arm, rng = s.arm, s.rng
+    limited = [j for j, lim in enumerate(arm.limits) if lim is not None]
+    if not (limited and s.sz.joint_limit):
+        return []
+    on_limit = _on_limits(s, limited, max(1, s.sz.joint_limit // 6))
+    n = s.sz.joint_limit - len(on_limit)
+    q0 = arm.sample_q(rng, 2 * n, branch=s.branch)
+    j = np.array(limited)[np.arange(2 * n) % len(limited)]
+    end = rng.integers(0, 2, 2 * n)
+    off = rng.choice([-1.0, 1.0], 2 * n) * 10.0 ** rng.uniform(-7, -2, 2 * n)
+    value = arm.bounds[j, end] + off
+    p, ok = pin_joint(arm, s.branch, q0, j, value)
+    return [("joint-limit", np.concatenate([on_limit, p[ok][:n]]))]
+
+
+def _half_pulse(s: _Sweep) -> Parts:
+    """One joint (cycling) within 1e-7 .. 1e-3 pulse of k + 1/2."""
+    arm, rng, n = s.arm, s.rng, s.sz.half
+    if not n:
+        return []
+    q0 = arm.sample_q(rng, 2 * n, branch=s.branch)
+    j = np.arange(2 * n) % arm.n_joints
+    c = arm.pulse_values(q0)[np.arange(2 * n), j]
+    delta = rng.choice([-1.0, 1.0], 2 * n) * 10.0 ** rng.uniform(-7, -3, 2 * n)
+    half = np.zeros_like(q0)
+    half[np.arange(2 * n), j] = np.floor(c) + 0.5 + delta
+    value = arm.from_pulses(half)[np.arange(2 * n), j]
+    p, ok = pin_joint(arm, s.branch, q0, j, value)
+    ok &= _clear(arm, s.branch, p)
+    return [("half-pulse", p[ok][:n])]
+
+
+def _cut(s: _Sweep) -> Parts:
+    """A revolute joint without limits at the wrap cut +-180 deg, or within 1e-9 .. 1e-4
+    rad of it."""
+    arm, rng = s.arm, s.rng
+    free = [j for j, (u, lim) in enumerate(zip(arm.joint_units, arm.limits, strict=True))
+            if u == "rad" and lim is None]  # fmt: skip
+    if not (free and s.sz.cut):
+        return []
+    n, m = s.sz.cut, 4 * s.sz.cut
+    q0 = arm.sample_q(rng, m, branch=s.branch)
+    j = np.array(free)[np.arange(m) % len(free)]
+    off = rng.choice([-1.0, 0.0, 1.0], m) * 10.0 ** rng.uniform(-9, -4, m)
+    p, ok = pin_joint(arm, s.branch, q0, j, np.pi + off)
+    ok &= _clear(arm, s.branch, p)
+    return [("cut", p[ok][:n])]
+
+
+def _bad_huge(s: _Sweep, base: npt.NDArray[np.float64]) -> Parts:
+    """NaN/inf in each input in turn (around ``base``), and finite values whose squares
+    overflow a REAL."""
+    k, angle = s.k, s.angle
+    bad = np.tile(base, (k, 1))
+    bad[np.arange(k), np.arange(k)] = np.array([np.nan, np.inf, -np.inf])[np.arange(k) % 3]
+    mm = np.flatnonzero(np.array(s.arm.input_units) == "mm")
+    huge = np.zeros((3 + bool(len(angle)), k))
+    for row, vals in enumerate(([1e20, -1e20, 1e3], [3e38, 0.0, 0.0], [-1e30, 1e30, -1e30])):
+        huge[row, mm] = np.resize(vals, len(mm))
+    if len(angle):
+        huge[3, mm] = base[mm]
+        huge[3, angle[0]] = 1e30
+    return [("bad", bad), ("huge", huge)]
 
 
 def sweep_targets(
@@ -335,7 +473,7 @@ def sweep_targets(
     Returns
     -------
     DataFrame
-        Columns ``kind`` and :func:`analysis.plc.verify.input_columns` (``x_mm, y_mm,
+        Columns ``kind`` and :func:`analysis.plc.targets.input_columns` (``x_mm, y_mm,
         z_mm`` for a point, else the inputs' names), in the order of the kinds.
 
     Examples
@@ -345,140 +483,20 @@ def sweep_targets(
     >>> sorted(set(t["kind"]))[:4]
     ['bad', 'base-axis-1mm', 'box', 'config']
     """
-    sz = sizes or SweepSizes()
     branch = branch or arm.branches[0]
     arm.branch_names(branch)  # an unknown branch: the solver's error
-    rng = np.random.default_rng(seed)
-    cols = _columns(arm)
     inputs = list(arm.inputs)
-    units = np.array(arm.input_units)
-    position = [inputs.index(c) for c in ("px", "py", "pz") if c in inputs]
-    angle = np.flatnonzero(units == "rad")
-    k = len(inputs)
-    parts: list[tuple[str, npt.NDArray[np.float64]]] = []
-
-    paper = [np.asarray(arm.startup_target, dtype=float)[None]] if arm.startup_target else []
-    make = PAPER_TARGETS.get(arm.description.closed_form)
-    if make is not None:
-        paper.append(np.asarray(make(arm), dtype=float).reshape(-1, k))
-    parts.append(("paper", np.concatenate(paper) if paper else np.empty((0, k))))
-
+    s = _Sweep(
+        arm, branch, np.random.default_rng(seed), sizes or SweepSizes(),
+        [inputs.index(c) for c in ("px", "py", "pz") if c in inputs],
+        np.flatnonzero(np.array(arm.input_units) == "rad"),
+    )  # fmt: skip
+    parts: Parts = [("paper", _paper(s))]
     # valid configurations of any branch: within the reach and the limits
-    cfg = arm.target(arm.sample_q(rng, sz.config))
-    parts.append(("config", cfg))
-
-    # the box around the reachable positions
-    lo, hi = cfg.min(axis=0), cfg.max(axis=0)
-    centre, half = (lo + hi) / 2, 0.6 * (hi - lo) + 1.0
-    box = cfg[rng.integers(0, len(cfg), sz.box)].copy() if len(cfg) else np.zeros((sz.box, k))
-    for c in position:
-        box[:, c] = centre[c] + rng.uniform(-2 * half[c], 2 * half[c], sz.box) / 2
-    parts.append(("box", box))
-
-    # boundaries crossed in the vertical half-plane (positions), toward the base axis
-    # along the waist's direction, then in the angles
-    n_b, n_x, n_a = sz.boundary, sz.axis, sz.angle
-    q_b = arm.sample_q(rng, n_b + n_x + n_a, branch=branch)
-    start = arm.target(q_b)
-    found: list[tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], str]] = []
-    if len(position) == 3 and n_b:
-        s = start[:n_b]
-        found.append((*boundary_targets(arm, branch, s, _half_plane_rays(s, rng, position),
-                                        rng, angle=False), "1mm"))  # fmt: skip
-    if len(position) == 3 and n_x and arm.joint_units[0] == "rad":
-        s = start[n_b : n_b + n_x]
-        # the point whose azimuth the waist takes lies along +-e(theta1) (a back branch
-        # faces away): every other ray the other way
-        t1 = q_b[n_b : n_b + n_x, 0]
-        sign = np.where(np.arange(len(s)) % 2 == 0, -1.0, 1.0)
-        d = np.zeros_like(s)
-        d[:, position[0]], d[:, position[1]] = sign * np.cos(t1), sign * np.sin(t1)
-        found.append((*boundary_targets(arm, branch, s, d, rng, angle=False, waist=True,
-                                        exact=5, limits=False), "1mm"))  # fmt: skip
-    if len(angle) and n_a:
-        s = start[n_b + n_x :]
-        d = np.zeros_like(s)
-        d[:, angle] = rng.normal(size=(len(s), len(angle)))
-        d /= np.linalg.norm(d, axis=1, keepdims=True)
-        found.append((*boundary_targets(arm, branch, s, d, rng, angle=True, exact=5,
-                                        limits=False), "tol"))  # fmt: skip
-    for pts, at, suffix in found:
-        for code in np.unique(at):
-            name = STATUS_TEXT[Status(int(code))] if code else "flip"
-            parts.append((f"{name}-{suffix}", pts[at == code]))
-
-    # a limited joint exactly at its limit (candidate configurations with that bound
-    # pinned: the closed form's own sampler keeps coupled joints coupled), and pinned
-    # 1e-7 .. 1e-2 inside or outside it
-    limited = [j for j, lim in enumerate(arm.limits) if lim is not None]
-    if limited and sz.joint_limit:
-        from analysis.kinematics.sampling import candidates
-
-        n_exact = max(1, sz.joint_limit // 6)
-        on = []
-        for i in range(2 * len(limited)):  # each bound of each limited joint (a few)
-            j, end = limited[i // 2], i % 2
-            b = arm.bounds.copy()
-            b[j] = arm.bounds[j, end]
-            q = candidates(arm, rng, 4 * n_exact, b)
-            q = q[(q[:, j] == b[j, 0]) & arm.valid_q(q)]
-            p = arm.target(q)
-            # the program's branch must be this configuration (or refuse it: a stop on a
-            # singular set, the palletizer's folded elbow), not another branch's
-            sol = arm.solve(p, [branch], limits=False)
-            d = np.abs(sol.theta[:, 0, j] - b[j, 0])
-            d = np.minimum(d, 2 * np.pi - d) if arm.joint_units[j] == "rad" else d
-            on.append(p[~sol.ok[:, 0] | (d <= PIN_TOL)])
-        on_limit = np.concatenate(on)
-        on_limit = on_limit[rng.permutation(len(on_limit))[:n_exact]]
-        n = sz.joint_limit - len(on_limit)
-        q0 = arm.sample_q(rng, 2 * n, branch=branch)
-        j = np.array(limited)[np.arange(2 * n) % len(limited)]
-        end = rng.integers(0, 2, 2 * n)
-        off = rng.choice([-1.0, 1.0], 2 * n) * 10.0 ** rng.uniform(-7, -2, 2 * n)
-        value = arm.bounds[j, end] + off
-        p, ok = pin_joint(arm, branch, q0, j, value)
-        parts.append(("joint-limit", np.concatenate([on_limit, p[ok][:n]])))
-
-    # one joint within 1e-7 .. 1e-3 pulse of k + 1/2
-    if sz.half:
-        n = sz.half
-        q0 = arm.sample_q(rng, 2 * n, branch=branch)
-        j = np.arange(2 * n) % arm.n_joints
-        c = arm.pulse_values(q0)[np.arange(2 * n), j]
-        delta = rng.choice([-1.0, 1.0], 2 * n) * 10.0 ** rng.uniform(-7, -3, 2 * n)
-        half = np.zeros_like(q0)
-        half[np.arange(2 * n), j] = np.floor(c) + 0.5 + delta
-        value = arm.from_pulses(half)[np.arange(2 * n), j]
-        p, ok = pin_joint(arm, branch, q0, j, value)
-        ok &= _clear(arm, branch, p)
-        parts.append(("half-pulse", p[ok][:n]))
-
-    # a revolute joint without limits at the wrap cut +-180 deg
-    free = [j for j, (u, lim) in enumerate(zip(arm.joint_units, arm.limits, strict=True))
-            if u == "rad" and lim is None]  # fmt: skip
-    if free and sz.cut:
-        n, m = sz.cut, 4 * sz.cut
-        q0 = arm.sample_q(rng, m, branch=branch)
-        j = np.array(free)[np.arange(m) % len(free)]
-        off = rng.choice([-1.0, 0.0, 1.0], m) * 10.0 ** rng.uniform(-9, -4, m)
-        p, ok = pin_joint(arm, branch, q0, j, np.pi + off)
-        ok &= _clear(arm, branch, p)
-        parts.append(("cut", p[ok][:n]))
-
-    # NaN/inf in each input in turn, and finite values whose squares overflow a REAL
-    base = cfg[0] if len(cfg) else np.zeros(k)
-    bad = np.tile(base, (k, 1))
-    bad[np.arange(k), np.arange(k)] = np.array([np.nan, np.inf, -np.inf])[np.arange(k) % 3]
-    parts.append(("bad", bad))
-    mm = np.flatnonzero(units == "mm")
-    huge = np.zeros((3 + bool(len(angle)), k))
-    for row, vals in enumerate(([1e20, -1e20, 1e3], [3e38, 0.0, 0.0], [-1e30, 1e30, -1e30])):
-        huge[row, mm] = np.resize(vals, len(mm))
-    if len(angle):
-        huge[3, mm] = base[mm]
-        huge[3, angle[0]] = 1e30
-    parts.append(("huge", huge))
-
+    cfg = arm.target(arm.sample_q(s.rng, s.sz.config))
+    parts += [("config", cfg), ("box", _box(s, cfg))]
+    parts += _boundaries(s) + _joint_limit(s) + _half_pulse(s) + _cut(s)
+    parts += _bad_huge(s, cfg[0] if len(cfg) else np.zeros(s.k))
+    cols = input_columns(arm)
     frames = [pd.DataFrame(p, columns=cols).assign(kind=kind) for kind, p in parts if len(p)]
     return pd.concat(frames, ignore_index=True)[["kind", *cols]]

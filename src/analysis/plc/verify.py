@@ -29,11 +29,14 @@ import pandas as pd
 
 from analysis.kinematics.arm import Arm
 from analysis.kinematics.status import Status
-from analysis.paths import data_dir
 from analysis.plc.approx import PlcFloat32Ops
+from analysis.plc.dialects import printer_class
+from analysis.plc.generate import generate
 from analysis.plc.memmap import MemoryMap
 from analysis.plc.model import PLC_MARGIN_MM, PLC_MARGIN_RAD, predict
 from analysis.plc.runner import RunResult, sweep
+from analysis.plc.sweep import sweep_targets
+from analysis.plc.targets import input_columns, table4_targets
 
 __all__ = [
     "SENTINEL",
@@ -52,19 +55,6 @@ __all__ = [
 
 SENTINEL = -999_999
 """Written to the outputs before each cycle by :func:`run`: a refused target must leave it."""
-
-
-def input_columns(arm: Arm) -> list[str]:
-    """Target columns of a targets table for ``arm``: ``x_mm, y_mm, z_mm`` for a point
-    (inputs px, py, pz), else the closed form's input names (the GR-1's pose)."""
-    inputs = list(arm.inputs)
-    return ["x_mm", "y_mm", "z_mm"] if inputs == ["px", "py", "pz"] else inputs
-
-
-def table4_targets() -> npt.NDArray[np.float64]:
-    """The ten Table 4 targets (x, y, z) [mm], shape (10, 3)."""
-    t4 = pd.read_csv(data_dir() / "table4.csv")
-    return t4[["x_mm", "y_mm", "z_mm"]].to_numpy(dtype=float)
 
 
 def plc_targets(targets: npt.ArrayLike) -> tuple[npt.NDArray, npt.NDArray]:
@@ -329,12 +319,12 @@ def compare(
     Pulses are compared with Python solving as the program does (band 1).
     """
     branch = branch or arm.branches[0]
-    rounding = "half-even" if dialect == "s7-300" else "half-away"
+    rounding = printer_class(dialect).rounding
     cols = input_columns(arm)
     xyz = targets[cols].to_numpy(dtype=float)
     ref, ok, _, exact = reference_pulses(arm, xyz, branch, rounding, theta1_on_axis=theta1_on_axis)
     model = predict(
-        arm.params, xyz, branch, ops=PlcFloat32Ops(dialect, trig), theta1_on_axis=theta1_on_axis
+        arm, xyz, branch, ops=PlcFloat32Ops(dialect, trig), theta1_on_axis=theta1_on_axis
     )
     model_exact = bool(
         (model.status == result.status).all()
@@ -373,9 +363,7 @@ def compare(
 def program(arm: Arm, dialect: str = "s7-200", branch: str | None = None) -> tuple[str, str]:
     """The program text and its MAP.json, exactly as ``python -m analysis stl --arm <arm>
     --dialect <dialect>`` writes them (default trigonometry of the dialect)."""
-    from analysis.plc.generate import generate
-
-    return generate(dialect, branch=branch, params=arm.params)
+    return tuple(generate(arm, dialect, branch))
 
 
 class PlcRun(NamedTuple):
@@ -407,14 +395,11 @@ def run(
     ``text`` may pass ``(program text, MAP.json text)`` as written by the command line;
     by default :func:`program` generates them.
     """
-    from analysis.plc.sweep import sweep_targets
-    from analysis.plc.translate import translate_s7200
-
     branch = branch or arm.branches[0]
     targets = sweep_targets(arm, branch=branch) if targets is None else targets
     src, map_text = text if text is not None else program(arm, dialect, branch)
     mmap = MemoryMap.from_dict(json.loads(map_text))
-    awl = translate_s7200(src).awl if dialect == "s7-200" else src
+    awl = printer_class(dialect).awlsim_source(src)
     xyz = targets[input_columns(arm)].to_numpy(dtype=float)
     done = sweep(awl, mmap, xyz, sentinel=SENTINEL)
     trig = "subroutine" if "ATAN2/ACOS: generated subroutines" in src else "native"
@@ -428,9 +413,9 @@ def real_errors(arm: Arm, targets: pd.DataFrame, dialect: str = "s7-200") -> pd.
     targets both Python and the program solve (the float32 model of the program,
     :func:`analysis.plc.model.predict`, which reproduces awlsim bit for bit)."""
     xyz = targets[input_columns(arm)].to_numpy(dtype=float)
-    rounding = "half-away" if dialect == "s7-200" else "half-even"
+    rounding = printer_class(dialect).rounding
     _, ok, _, exact = reference_pulses(arm, xyz, arm.branches[0], rounding)
-    model = predict(arm.params, xyz, arm.branches[0], ops=PlcFloat32Ops(dialect))
+    model = predict(arm, xyz, arm.branches[0], ops=PlcFloat32Ops(dialect))
     both = ok & model.reachable
     ppr = np.asarray(arm.params.pulses_per_rev, dtype=float)
     diff = model.counts.astype(float) - exact

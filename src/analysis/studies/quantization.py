@@ -387,11 +387,9 @@ def pulses_float32(
     from analysis.plc.model import predict
 
     p = as_points(p)
-    params = (
-        arm.params
-        if pulses_per_rev is None
-        else arm.params.with_(pulses_per_rev=tuple(int(v) for v in _ppr(arm, pulses_per_rev)))
-    )
-    r = predict(params, p.reshape(-1, 3), ops=Float32Ops())
+    if pulses_per_rev is not None:
+        ppr = tuple(int(v) for v in _ppr(arm, pulses_per_rev))
+        arm = type(arm)(arm.params.with_(pulses_per_rev=ppr))
+    r = predict(arm, p.reshape(-1, 3), ops=Float32Ops())
     shape = p.shape[:-1]
     return r.computed.reshape(*shape, -1), r.theta.reshape(*shape, -1)

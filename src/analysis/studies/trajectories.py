@@ -26,7 +26,7 @@ name ends in ``_deg``.
 
 :func:`sequential_move` is the move the thesis's FX2N program makes (section 2.3.4, Figure
 2-1, the ladder): each motor runs on/off at its speed until its counter is full, M1 first,
-then M2 ... M5; :func:`analysis.studies.gr1.fx2n_vs_cubic` compares it with the cubic.
+then M2 ... M5; :func:`analysis.audit.papers.gr1.thesis.fx2n_vs_cubic` compares it with the cubic.
 """
 
 from __future__ import annotations

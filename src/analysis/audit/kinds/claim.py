@@ -25,7 +25,7 @@ import re
 import numpy as np
 import sympy as sp
 
-from analysis.audit.kinds import Result, kind
+from analysis.audit.kinds.base import Result, kind
 from analysis.audit.kinds.table import decimals
 from analysis.papers import parse
 

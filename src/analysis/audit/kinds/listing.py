@@ -39,13 +39,14 @@ from functools import cache
 
 import numpy as np
 
-from analysis.audit.kinds import Result, kind
+from analysis.audit.kinds.base import Result, kind
 from analysis.papers import FUNCTIONS
+from analysis.validate import reduce_deg
 
-__all__ = ["run_statement", "stl_run"]
+__all__ = ["assigned", "atn_operands", "instructions", "run_statement", "stl_run"]
 
 
-def _instructions(text: str):
+def instructions(text: str):
     from analysis.plc import stl_eval as stl
 
     code = "\n".join(ln.split("//")[0] for ln in text.splitlines())
@@ -59,7 +60,7 @@ def stl_run(text: str, memory, *, ftz: bool = False):
 
     mem = memory
     block: list = []
-    for ins in [*_instructions(text), None]:
+    for ins in [*instructions(text), None]:
         if ins is None or ins.op == "CALL ATAN2":
             mem = stl.evaluate(block, mem, ftz=ftz) if block else mem
             block = []
@@ -120,7 +121,7 @@ def stl(text: str, spec, ctx) -> Result:
     ins = {a: [_expected(e, {k: (v[i] if np.ndim(v) else v) for k, v in values.items()}, None)
                for i in range(n)] for a, e in spec.get("inputs", {}).items()}  # fmt: skip
     prefix = ctx.paper.text(spec["within"]) + "\n" if "within" in spec else ""
-    out = _instructions(text)[-1].args[-1]  # "@out": what the text's last instruction writes
+    out = instructions(text)[-1].args[-1]  # "@out": what the text's last instruction writes
     expect = {(out if a == "@out" else a): e for a, e in spec["expect"].items()}
     read = spec.get("read", {})
     got: dict[str, list] = {a: [] for a in expect}
@@ -173,7 +174,7 @@ def run_statement(text: str, env: dict[str, float], *, trig_degrees: bool = Fals
     return float(vb6.to_number(value).value), form
 
 
-def _atn_parts(statement: str) -> tuple[str, str]:
+def atn_operands(statement: str) -> tuple[str, str]:
     """The y and x of the ``Atn(y / x)`` in a statement (the top-level '/' inside Atn)."""
     start = statement.index("Atn(") + 4
     depth, i = 1, start
@@ -199,7 +200,7 @@ def _want(expect, env, target: str, degrees: bool, ctx) -> float:
     printed = ctx.paper.text(ref[1:]).split("//")[0].strip()
     if "meant" in expect:
         return run_statement(printed, env, trig_degrees=True, target=target)[0]
-    y, x = _atn_parts(printed)
+    y, x = atn_operands(printed)
     yv = run_statement(f"Yv = {y}", env, trig_degrees=degrees)[0]
     xv = run_statement(f"Xv = {x}", env, trig_degrees=degrees)[0]
     if yv == 0 and xv == 0:
@@ -260,7 +261,7 @@ def vb6_statement(text: str, spec, ctx) -> Result:
         if ok and math.isnan(want):
             pass
         elif ok and spec.get("angle", True):
-            ok = abs(math.remainder(got_k - want, 360.0)) <= tol
+            ok = abs(reduce_deg(got_k - want)) <= tol
         elif ok:
             ok = abs(got_k - want) <= tol
         if k == 0:

@@ -20,15 +20,11 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
-from analysis.audit.kinds import Result, kind
+from analysis.audit.kinds.base import Result, kind
 from analysis.audit.kinds.symbolic import equation
+from analysis.validate import wrap_rad
 
-__all__ = ["evaluate", "wrap"]
-
-
-def wrap(d):
-    """Angles into [-pi, pi) (one wrap for every check)."""
-    return np.mod(np.asarray(d, dtype=float) + np.pi, 2 * np.pi) - np.pi
+__all__ = ["evaluate"]
 
 
 def evaluate(expr: sp.Expr, values) -> np.ndarray | None:
@@ -62,7 +58,7 @@ def sampled(text: str, spec, ctx) -> Result:
         a, b = evaluate(lhs, values), evaluate(rhs, values)
         if a is None or b is None:
             return Result(False, {"why": "a symbol without a value in the domain"})
-        err = np.abs(wrap(a - b) if angle else a - b)
+        err = np.abs(wrap_rad(a - b) if angle else a - b)
     err = np.where(np.isfinite(err), err, np.inf)
     bad = np.flatnonzero(err > spec.get("tol", 1e-9))
     out = {"n": len(err), "wrong": len(bad), "max_error": float(err.max())}

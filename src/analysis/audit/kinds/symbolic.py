@@ -17,7 +17,7 @@ import re
 
 import sympy as sp
 
-from analysis.audit.kinds import Result, kind
+from analysis.audit.kinds.base import Result, kind
 
 __all__ = ["equation", "is_zero", "normal_form"]
 

@@ -18,7 +18,7 @@ from decimal import Decimal, InvalidOperation
 
 import numpy as np
 
-from analysis.audit.kinds import Result, kind
+from analysis.audit.kinds.base import Result, kind
 
 __all__ = ["cell_matches", "decimals"]
 
@@ -35,16 +35,22 @@ def decimals(text: str) -> int:
 
 
 def cell_matches(text: str, value: float, mode: str = "round", places: int | None = None) -> bool:
-    """Does ``value`` print as ``text`` at ``places`` decimals (default: the text's own)?"""
-    k = decimals(text) if places is None else places
-    if decimals(text) != k or not np.isfinite(value):
+    """Does ``value`` print as ``text`` at ``places`` decimals (default: the text's own)? A text
+    that is not a number (无解) never matches a number; ``mode`` "round" (to nearest) or
+    "truncate" (toward zero), else ValueError. The one cell matcher of the project."""
+    if mode not in ("round", "truncate"):
+        raise ValueError(f"mode {mode!r}: expected 'round' or 'truncate'")
+    try:
+        own = decimals(text)
+    except ValueError:
+        return False
+    k = own if places is None else places
+    if own != k or not np.isfinite(value):
         return False
     printed, scale = float(text), 10.0**k
     if mode == "round":  # 1e-9: the binary representation of the printed decimal
         return abs(value - printed) <= 0.5 / scale + 1e-9
-    if mode == "truncate":
-        return abs(np.trunc(value * scale) / scale - printed) <= 1e-9
-    raise ValueError(f"mode {mode!r}: expected 'round' or 'truncate'")
+    return abs(np.trunc(value * scale) / scale - printed) <= 1e-9
 
 
 @kind("table")

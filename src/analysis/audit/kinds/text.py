@@ -30,7 +30,7 @@ from __future__ import annotations
 
 import re
 
-from analysis.audit.kinds import Result, kind
+from analysis.audit.kinds.base import Result, kind
 
 __all__ = ["frame_numbers"]
 

@@ -1,6 +1,6 @@
 """Run the GR-1 thesis's Visual Basic 6 listing as printed, with VB6 semantics.
 
-The thesis (``analysis.papers.gr1_thesis``, appendix "程序清单", pp. 36-46) computes Table 5-4
+The thesis (``data/papers/gr1.toml``, appendix "程序清单", pp. 36-46) computes Table 5-4
 with the event procedure ``Command1_Click`` and draws the cubic trajectories of section
 5.4 with ``Command3_Click``. This module executes that listing, not a cleaned-up copy, so
 that every printed number can be traced to the statement that produced it.
@@ -54,14 +54,8 @@ Two switches give counterfactual readings used by the audit (they are not VB6):
 ``dim_types_all=True`` applies a Dim list's ``As`` type to every name in the list, and
 ``trig_degrees=True`` makes ``Sin``/``Cos``/``Tan`` read their argument in degrees.
 
-Example (Table 5-3 start and end poses; printed Table 5-4 start theta1 is 56.828)::
-
-    >>> from analysis.audit.vb6 import run_command1
-    >>> out = run_command1({"Text1": "151", "Text2": "231", "Text3": "250", "Text4": "32",
-    ...                     "Text5": "45", "Text6": "60", "Text7": "200", "Text8": "300",
-    ...                     "Text9": "178", "Text10": "20", "Text11": "50", "Text12": "80"})
-    >>> out["text"]["Text13"], out["text"]["Text14"]
-    ('56.828', '-66.006')
+The thesis's listing itself, its one repair and a run of its 计算 button on Table 5-3 are
+the GR-1's (:mod:`analysis.audit.papers.gr1.listing`: ``listing``, ``run_command1``).
 
 The interpreter is split by stage: :mod:`~analysis.audit.vb6.values` (types, conversions,
 operators), :mod:`~analysis.audit.vb6.functions` (built-ins), :mod:`~analysis.audit.vb6.lexer`,
@@ -96,50 +90,16 @@ from analysis.audit.vb6.values import to_number as to_number
 from analysis.audit.vb6.values import to_string as to_string
 from analysis.audit.vb6.values import truthy as truthy
 from analysis.audit.vb6.values import unary_minus as unary_minus
-from analysis.papers import gr1_thesis
 
 __all__ = [
-    "LISTING_REPAIRS",
     "VB6Error",
     "VB6Form",
     "VB6SyntaxError",
     "Value",
-    "listing",
     "run",
-    "run_command1",
     "vb_format",
     "vb_val",
 ]
-
-# --------------------------------------------------------------------------- the listing
-
-LISTING_REPAIRS: list[dict[str, str]] = [
-    {
-        "location": "appendix 程序清单 p. 37, Command1_Click, the cf3 statement",
-        "printed": "Py1 * Sin(θf1) Cos(θf234) * a4",
-        "repaired": "Py1 * Sin(θf1) - Cos(θf234) * a4",
-        "why": (
-            "as printed the statement is a VB6 syntax error (two operands with no operator), "
-            "so the form would not compile; the same statement for the start pose (c3) has "
-            "'- Cos(θ234) * a4' at this place, and with '-' the listing reproduces the printed "
-            "Table 5-4 end-pose theta3 = -45.244 (tests/audit/test_vb6.py)"
-        ),
-    }
-]
-"""The one edit needed to run the printed listing; everything else runs as printed."""
-
-
-def listing(*, repaired: bool = True) -> str:
-    """The thesis's VB6 listing (``gr1_thesis.LISTING``), with :data:`LISTING_REPAIRS`
-    applied when ``repaired`` (the default; as printed it does not compile)."""
-    src = gr1_thesis.LISTING
-    if repaired:
-        for rep in LISTING_REPAIRS:
-            if src.count(rep["printed"]) != 1:
-                raise ValueError(f"repair target {rep['printed']!r} not found exactly once")
-            src = src.replace(rep["printed"], rep["repaired"])
-    return src
-
 
 def run(
     source: str,
@@ -172,12 +132,3 @@ def run(
         },
         "form": form,
     }
-
-
-def run_command1(inputs: dict[str, Any], **options: bool) -> dict[str, Any]:
-    """Run ``Command1_Click`` (the "计算" button) of the repaired listing on ``inputs``.
-
-    ``inputs`` maps ``Text1`` ... ``Text12`` (start px, py, pz, alpha, beta, gamma, then the
-    end pose, the order of Table 5-3) to what is typed. Returns :func:`run`'s dict.
-    """
-    return run(listing(), "Command1_Click", inputs, **options)

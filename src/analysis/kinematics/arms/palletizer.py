@@ -26,7 +26,7 @@ pose (eq. 4: alpha = alpha1 + alpha2 - pi/2, beta = pi/2 - beta1, motor angles -
 by eq. 12). "back-up" and "back-down" turn the waist to gamma + pi and reach back over the
 base: the same formulas with the wrist at w = -rho - L3 in the arm plane. These four are every
 solution with the gripper level; section 2's claim that the pose is unique is audited against
-them (:mod:`analysis.studies.palletizer`). theta1, theta2, theta4 are wrapped to
+them (:mod:`analysis.audit.papers.palletizer.method`). theta1, theta2, theta4 are wrapped to
 (-pi, pi]; theta3 is not (branch-signed, continuous at the stretched arm).
 Refused: out of reach (L4 > L1 + L2), inside the inner reach (L4 < |L1 - L2|), each for the
 branch's own wrist; on the base axis (rho = 0: gamma undefined); and, in the isosceles family

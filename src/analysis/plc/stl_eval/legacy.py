@@ -6,7 +6,7 @@ typos readable (``CALLARCTAN,``, ``ROUNDVD122``) and a ``// ?`` uncertainty mark
 helpers find operands that are not S7-200 addresses (:func:`invalid_operands`), the V bytes
 each instruction reads and writes (:func:`defs_uses`) and operands that share bytes
 (:func:`overlaps`: VD104 and VD106 share bytes 106-107). :func:`evaluate` runs a listing
-on the S7-200 evaluator (:class:`~analysis.plc.stl_eval.machine.S7200`) as one network
+on the S7-200 evaluator (:class:`~analysis.plc.stl_eval.cpu.S7200`) as one network
 that begins with power flow on (the figures begin with ``LD 上电置1``, read as SM0.0),
 with ``CALL ARCTAN`` / ``CALL ARCCOS`` as Siemens' "Arcusfunctions" library subroutines
 (results in radians) and the whole V memory of a CPU 226 (VB0-VB10239): power flow, ENO and
@@ -21,6 +21,9 @@ import struct
 from dataclasses import dataclass
 
 import numpy as np
+
+from analysis.plc.stl_eval.cpu import S7200
+from analysis.plc.stl_eval.loader import Library, load_program
 
 __all__ = [
     "Instr",
@@ -195,8 +198,6 @@ def evaluate(
     Raises ``ValueError`` naming the line and the instruction for unknown mnemonics or
     operands (``VDD0``), and for a NaN reaching a REAL compare (the CPU would stop).
     """
-    from analysis.plc.stl_eval.machine import S7200, load_program
-
     mem = memory.copy() if memory is not None else VMemory()
     aliases = aliases or {}
     last = max((i.line for i in instrs), default=0)
@@ -231,7 +232,6 @@ def arcus_library(ftz: bool = False) -> dict:
     """ARCTAN(X) and ARCCOS(X) [rad] as library subroutines (Siemens FAQ 19308841,
     "Arcusfunctions"), computed in float64 and rounded to REAL (the library's own
     algorithm is not published); ``ftz`` flushes a denormal argument to zero first."""
-    from analysis.plc.stl_eval.machine import Library
 
     def arg(x: float) -> float:
         return 0.0 if ftz and x != 0.0 and abs(x) < 1.1754943508222875e-38 else x

@@ -1,0 +1,247 @@
+"""Seed 004's definitions for its checks (``data/registers/gr1.toml``): the GR-1's chain
+(``data/arms/gr1.toml``, d1 = 0 and the joint limits assumed), its VB6 listing
+(:mod:`analysis.audit.vb6`, run by the ``vb6`` kind on the presets of :mod:`.listing`) and the
+FX2N program's operand census. The studies behind the domains and facts: :mod:`.thesis`,
+:mod:`.listing`."""
+
+from __future__ import annotations
+
+import math
+import re
+from functools import cache
+
+import numpy as np
+import sympy as sp
+
+from analysis.audit import vb6
+from analysis.audit.context import Bespoke, context
+from analysis.audit.kinds import Result
+from analysis.audit.papers.gr1 import listing as gl
+from analysis.audit.papers.gr1 import thesis as st
+from analysis.kinematics.arm import Arm
+from analysis.kinematics.dh import link_transform_sym
+
+B = Bespoke("gr1")
+_NUM = r"-?\d+(?:\.\d+)?"
+
+
+def _tuple(text: str, k: int):
+    """``k`` numbers written '(a, b, ...)' or one a line (a printed table row), else None."""
+    t = text.strip()
+    if re.fullmatch(rf"\((?:{_NUM}, ){{{k - 1}}}{_NUM}\)", t) or re.fullmatch(rf"(?:{_NUM}\n){{{k - 1}}}{_NUM}", t):  # noqa: E501
+        return [float(v) for v in re.findall(_NUM, t)]
+    return None
+
+
+def _paper():
+    return context("gr1").paper
+
+
+@cache
+def _probe() -> Arm:
+    """A chain of the GR-1's form with a3 = 200 mm: with the GR-1's a2 = a3 = 228 mm a
+    formula with a2 and a3 swapped would pass."""
+    return Arm(st.gr1_arm().params.with_(a3=200.0))
+
+
+# --- domains ----------------------------------------------------------------------------------
+B.domain("chain")(lambda: gl.chain_values(_probe()))
+B.domain("listing_variants")(lambda: {k: np.array([v]) for k, v in gl.listing_variants().items()})
+B.domain("power_up_starts")(lambda: gl.relative_move_misses(spread_deg=10.0))
+B.domain("homed_starts")(lambda: gl.relative_move_misses())
+B.domain("any_poses")(gl.any_poses)
+B.domain("automatic_sections")(gl.automatic_sections)
+B.domain("table5_4_cells")(gl.table5_4_cells)
+B.domain("control_path")(gl.control_path)
+B.domain("partner_citations")(gl.partner_citations)
+
+
+# --- values, matrices, facts ------------------------------------------------------------------
+B.value("vb6_env")(lambda config, end: (gl.listing_env(config, end or None, _probe()), None))
+B.fact("move")(gl.move_facts)
+B.fact("variants")(gl.listing_variants)
+
+
+@B.value("pulses")
+def _pulses(row, column):
+    """Table 2-3's cell: |delta theta| of the printed Table 5-4 over Table 2-1's resolution."""
+    df = st.printed_presets().set_index("counter")
+    return float(df.loc[row].delta_deg / st.RESOLUTION_DEG[st.COUNTERS.index(row)])
+
+
+@B.value("joint_value")
+def _joint(row, column):
+    """The corrected joint value [deg] of Table 5-4's cell."""
+    return float(np.degrees(gl.corrected_move()[0][("start", "end").index(row), int(column[-1]) - 1]))  # noqa: E501
+
+
+def _rot(axis: int, angle) -> sp.Matrix:
+    return sp.Matrix(sp.BlockDiagMatrix(getattr(sp, f"rot_axis{axis}")(-angle), sp.eye(1)))
+
+
+@B.matrix("rpy")
+def _rpy():
+    """Rot(z, phi) Rot(y, theta) Rot(x, psi), eq. 3.14's order, homogeneous."""
+    s = _paper().symbols()
+    return _rot(3, s["phi"]) * _rot(2, s["theta"]) * _rot(1, s["psi"])
+
+
+B.matrix("dh_link")(lambda: link_transform_sym(*(_paper().symbols()[k] for k in ("theta_i", "d_i", "a_i", "alpha_i"))))  # noqa: E501
+
+
+# --- predicates -------------------------------------------------------------------------------
+@B.predicate("reaches")
+def _reaches(text, ctx, pose):
+    """Five joint angles [deg] put the hand at Table 5-3's position (0.05 mm: three decimals
+    move it by up to 0.02 mm)."""
+    v = _tuple(text, 5)
+    if v is None:
+        return Result(False, {"why": "not five angles"})
+    target = st.thesis_poses()[("start", "end").index(pose), :3]
+    miss = float(np.linalg.norm(st.gr1_arm().fk(np.radians(v)) - target))
+    return Result(miss <= 0.05, {"miss_mm": miss})
+
+
+@B.predicate("orientation_ok")
+def _orientation_ok(text, ctx):
+    """Six numbers (mm, deg): a pose the 5-DOF arm solves."""
+    v = _tuple(text, 6)
+    return v is not None and bool(st.gr1_arm().solve(np.array([*v[:3], *np.radians(v[3:])])).ok.any())  # noqa: E501
+
+
+@B.predicate("format_readable")
+def _format(text, ctx):
+    """The θf1 display as Command3_Click reads it back (listing lines 59-62, with Text13 =
+    "1"): joint values 0 and -24.683 deg must come back as those numbers."""
+    src = f"Private Sub T_Click()\nText13.Text = \"1\"\n{text}\n{_paper().text('listing:59-62')}\nEnd Sub\n"  # noqa: E501
+    for v in (0.0, -24.683):
+        try:
+            d = vb6.to_number(vb6.VB6Form(src).call("T_Click", {"θf1": v})["d"]).value
+        except (vb6.VB6Error, vb6.VB6SyntaxError, KeyError):
+            return False
+        if abs(float(d) - v) > 5e-4:
+            return False
+    return True
+
+
+@B.predicate("end_conditions")
+def _end_conditions(text, ctx, acceleration=False):
+    """A joint trajectory in the listing's form ('Y = ...' over a, b, c, X: start, end,
+    duration, time) meets eqs. 5.1-5.2, and with ``acceleration`` zero end accelerations."""
+    s = _paper().symbols("cubic")
+    t, T, th0, thf = s["t"], s["t_f"], s["theta_0"], s["theta_f"]
+    body = text.strip()
+    if not re.fullmatch(r"Y = [\w\s()+\-*/^.]+", body):
+        return False
+    names = {"a": "theta_0", "b": "theta_f", "c": "t_f", "X": "t", "^": "**"}
+    f = _paper().parse(re.sub(r"\b[abcX]\b|\^", lambda m: names[m[0]], body[4:]), "cubic")
+    d1, d2 = sp.diff(f, t), sp.diff(f, t, 2)
+    conds = [f.subs(t, 0) - th0, f.subs(t, T) - thf, d1.subs(t, 0), d1.subs(t, T)]
+    conds += [d2.subs(t, 0), d2.subs(t, T)] if acceleration else []
+    return all(sp.simplify(c) == 0 for c in conds)
+
+
+@B.predicate("schedule")
+def _schedule(text, ctx):
+    """'M1 -> M2 -> ...' (one after another, on/off) or 'M1 + M2 + ...' (together, each on
+    its cubic): does the hand stay within 1 mm of the planned path?"""
+    m = re.fullmatch(r"M1( -> | \+ )M2\1M3\1M4\1M5", text.strip())
+    return bool(m) and (m[1] == " + " or gl.move_facts()["apart"] <= 1.0)
+
+
+@B.predicate("counter_setting")
+def _counter_setting(text, ctx):
+    """C235-C239 count to 32-bit set values the PC can write (D registers, pairs apart),
+    written with the corrected move's presets."""
+    m = re.fullmatch(r"((?:C23\d [DK]\d+, )*C23\d [DK]\d+); the PC writes ((?:D\d+ = \d+, )*D\d+ = \d+)"  # noqa: E501
+                     r" before each move, and resets the counters", text.strip())
+    if not m:
+        return Result(False, {"why": "not 'C235 D200, ...; the PC writes D200 = ..., ...'"})
+    sets = dict(re.findall(r"(C23\d) ([DK]\d+)", m[1]))
+    writes = {f"D{a}": int(v) for a, v in re.findall(r"D(\d+) = (\d+)", m[2])}
+    presets = dict(zip(st.COUNTERS, gl.corrected_move()[2].preset, strict=True))
+    if sorted(sets) != list(st.COUNTERS) or any(not v.startswith("D") for v in sets.values()):
+        return Result(False, {"why": "a set value the PC cannot write"})
+    regs = [int(sets[c][1:]) for c in st.COUNTERS]
+    if any(r % 2 for r in regs) or len({r // 2 for r in regs}) != 5:
+        return Result(False, {"why": "32-bit set values overlap"})
+    return Result(all(writes.get(sets[c]) == presets[c] for c in st.COUNTERS), {})
+
+
+@B.predicate("direction_bits")
+def _direction_bits(text, ctx):
+    """Every direction bit the ladder reads (M11-M15, beside M8235-M8239) written for the
+    move, one polarity for all: the bit tells a joint moving + from one moving -."""
+    read = sorted({t for _, sec in gl.ladder_sections() for t in sec if re.fullmatch(r"M1\d", t)})
+    m = re.fullmatch(r"((?:M1\d = [01], )*M1\d = [01]), written by the PC with the set values", text.strip())  # noqa: E501
+    bits = dict(re.findall(r"(M1\d) = ([01])", m[1])) if m else {}
+    if sorted(bits) != read:
+        return False
+    down = [d == "-" for d in gl.corrected_move()[2].direction]
+    vals = [bits[b] == "1" for b in read]
+    return vals in (down, [not d for d in down])
+
+
+@B.predicate("work_area")
+def _work_area(text, ctx):
+    """'vertical V mm ... horizontal H mm' (optionally 'finger F mm', 'base B mm'): H is the
+    links' radius plus the finger, V their height above the shoulder plus the base."""
+    m = re.fullmatch(r"vertical (\d+) mm(?: above the floor with a base (\d+) mm high)?, horizontal (\d+) mm"  # noqa: E501
+                     r"(?: with a finger (\d+) mm long)?(?: \(the links' reach\))?", text.strip())
+    if not m:
+        return False
+    v = dict(zip(("vertical", "base", "horizontal", "finger"), (float(x or 0) for x in m.groups()), strict=True))  # noqa: E501
+    ext = st.workspace_extents()
+    return (abs(v["horizontal"] - ext["radius_mm"] - v["finger"]) <= 1
+            and abs(v["vertical"] - ext["z_max_mm"] - v["base"]) <= 1)  # fmt: skip
+
+
+@B.predicate("dh_rows")
+def _dh_rows(text, ctx):
+    """D-H rows '(thetaK, d, a, alpha_deg)' (lengths by name or in mm): a chain on which sec.
+    4.2's c3 and tan(theta234) hold (analysis.audit.papers.gr1.listing.sec42_holds_on)."""
+    row = r"\(theta(\d), ([\w.]+), ([\w.]+), (-?[\d.]+)\)"
+    rows = re.findall(row, text)
+    if not re.fullmatch(rf"{row}(?:, {row}){{4}}", text.strip()) or [r[0] for r in rows] != list("12345"):  # noqa: E501
+        return False
+    P = dict(st.gr1_arm().params)
+    try:
+        return gl.sec42_holds_on([(P[d] if d in P else float(d), P[a] if a in P else float(a),
+                                   math.radians(float(al))) for _, d, a, al in rows])  # fmt: skip
+    except ValueError:
+        return False
+
+
+@B.predicate("table5_4_cells")
+def _t54(text, ctx):
+    """Ten numbers 'start (...); end (...)': the cells the listing displays, in order."""
+    m = re.fullmatch(r"start (\(.*\)); end (\(.*\))", text.strip())
+    v = (_tuple(m[1], 5) or []) + (_tuple(m[2], 5) or []) if m else []
+    shown = gl.printed_run()["text"]
+    return len(v) == 10 and all(shown[f"Text{13 + i}"] == vb6.vb_format(x, "####.###") for i, x in enumerate(v))  # noqa: E501
+
+
+@B.predicate("table5_3_header")
+def _t53(text, ctx):
+    """Table 5-3's column names in the order whose values, typed in, give Table 5-4."""
+    rec = _paper().record("table5_3")
+    names, tokens = list(rec["columns"]), text.replace(",", " ").split()
+    if sorted(tokens) != sorted(names):
+        return False
+    order = [tokens.index(n) for n in names]
+    vals = [rec["rows"][k][i] for k in ("start", "end") for i in order]
+    return gl.run_command1({f"Text{i + 1}": str(v) for i, v in enumerate(vals)})["text"] == gl.printed_run()["text"]  # noqa: E501
+
+
+@B.predicate("restored")
+def _restored(text, ctx, of):
+    """Statements of the extracted run ``of`` (a stretch of it, blanks aside), one a line,
+    each VB6 of the modelled subset."""
+    lines = [ln.strip() for ln in text.splitlines() if ln.strip()]
+    if len(lines) < 2 or " ".join(" ".join(lines).split()) not in " ".join(_paper().text(of).split()):  # noqa: E501
+        return False
+    try:
+        form = vb6.VB6Form("Private Sub T_Click()\n" + "\n".join(lines) + "\nEnd Sub\n")
+    except vb6.VB6SyntaxError:
+        return False
+    return len(form.subs["t_click"][1]) == len(lines)

@@ -1,0 +1,314 @@
+"""``stl-run --dialect st|plcopen-xml``: run an ST program (or the ST inside a PLCopen XML
+file) on the ST engine, offline (issue 29 item 3, a contract).
+
+- With ``--scenario S.csv`` (header ``t_s,name,value``; each row sets a program variable at
+  that time, a BOOL as TRUE/FALSE, a number by :func:`analysis.validate.number_problem`'s
+  rule, a REAL also ``nan``, ``inf``, ``-inf`` on purpose): the program runs cycle by cycle
+  (``cycle_s``) until the last row's time plus ``settle_s``, with one simulated axis per
+  joint (MAP.json's ``machine.axes``: limits, software limits, home position) or, without a
+  map, per AXIS_REF variable of the program; the trace has one row per cycle: ``t_s``,
+  ``q1..qN`` (deg or mm), ``v1..vN`` (per second), then every output of the program by name
+  (MAP.json's ``machine.outputs``; without a map, every scalar variable the scenario does
+  not write).
+- Without a scenario: one scan, ``--set NAME=VALUE`` before it, ``--read NAME`` after it.
+- A source without a PROGRAM (the IK block on its own) runs through a generated PROGRAM that
+  calls its function block with its inputs and copies its outputs (today's IK sweep).
+
+Every user error raises ValueError with one line: an unknown variable, a time going
+backwards, a program that does not compile (its line and column), an engine fault (which, at
+which cycle).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+from analysis import validate
+
+__all__ = [
+    "MAX_CYCLES",
+    "MAX_ROWS",
+    "load_source",
+    "one_scan",
+    "parse_scenario",
+    "run_trace",
+    "trace_csv",
+]
+
+MAX_ROWS = 100_000
+"""The most scenario rows read."""
+MAX_CYCLES = 1_000_000
+"""The longest run (cycles): 66 minutes at 4 ms."""
+
+_INTS = {
+    "SINT": (-(2**7), 2**7 - 1),
+    "INT": (-(2**15), 2**15 - 1),
+    "DINT": (-(2**31), 2**31 - 1),
+    "LINT": (-(2**63), 2**63 - 1),
+    "USINT": (0, 2**8 - 1),
+    "UINT": (0, 2**16 - 1),
+    "UDINT": (0, 2**32 - 1),
+    "ULINT": (0, 2**64 - 1),
+    "BYTE": (0, 2**8 - 1),
+    "WORD": (0, 2**16 - 1),
+    "DWORD": (0, 2**32 - 1),
+    "LWORD": (0, 2**64 - 1),
+}
+_REALS = {"REAL": 3.4028234663852886e38, "LREAL": 1.7976931348623157e308}
+SCALARS = ("BOOL", *_INTS, *_REALS)
+
+
+def load_source(text: str, dialect: str) -> str:
+    """The ST text of a program file: as it is (``st``) or assembled from the XML's POUs."""
+    if dialect == "plcopen-xml":
+        from analysis.plc.machine.xml_st import st_from_plcopen
+
+        return st_from_plcopen(text)
+    return text
+
+
+def _pous(source: str, kind: str) -> list[str]:
+    from analysis.plc.st_engine import blank_comments
+
+    return re.findall(rf"(?im)^\s*{kind}\s+(\w+)", blank_comments(source))
+
+
+def _harness(source: str, fb: str) -> tuple[str, str]:
+    """A PROGRAM calling function block ``fb`` with its inputs, copying its outputs."""
+    from analysis.plc.st_engine import blank_comments
+
+    text = blank_comments(source)
+    m = re.search(rf"(?is)^\s*FUNCTION_BLOCK\s+{fb}\b(.*?)END_FUNCTION_BLOCK", text, flags=re.M)
+    decl = {}
+    for section in ("VAR_INPUT", "VAR_OUTPUT"):
+        body = re.findall(rf"(?is)\b{section}\b(.*?)\bEND_VAR\b", m.group(1))
+        decl[section] = re.findall(r"(\w+)\s*:\s*(\w+)", body[0]) if body else []
+    name = "STL_RUN_HARNESS"
+    lines = [f"PROGRAM {name}", "VAR"]
+    lines += [f"    {n} : {t};" for n, t in decl["VAR_INPUT"] + decl["VAR_OUTPUT"]]
+    lines += [f"    block : {fb};", "END_VAR"]
+    call = ", ".join(f"{n} := {n}" for n, _ in decl["VAR_INPUT"])
+    lines += [f"block({call});", *[f"{n} := block.{n};" for n, _ in decl["VAR_OUTPUT"]]]
+    return source + "\n" + "\n".join([*lines, "END_PROGRAM", ""]), name
+
+
+def pick_program(source: str, program: str | None, mapdoc: dict | None) -> tuple[str, str]:
+    """(source, PROGRAM name): the one asked for, MAP.json's machine program, the only
+    PROGRAM, or a harness around the only function block when there is no PROGRAM."""
+    programs = _pous(source, "PROGRAM")
+    want = program or ((mapdoc or {}).get("machine") or {}).get("program")
+    if want:
+        found = [p for p in programs if p.lower() == want.lower()]
+        if not found:
+            raise ValueError(
+                f"no PROGRAM {want} in the source (programs: {', '.join(programs) or 'none'})"
+            )
+        return source, found[0]
+    if len(programs) == 1:
+        return source, programs[0]
+    if programs:
+        raise ValueError(
+            f"the source has {len(programs)} programs ({', '.join(programs)}): "
+            "name one with --program"
+        )
+    blocks = _pous(source, "FUNCTION_BLOCK")
+    if len(blocks) != 1:
+        raise ValueError(
+            "the source has no PROGRAM and "
+            f"{'no' if not blocks else len(blocks)} function blocks: nothing to "
+            "run"
+        )
+    return _harness(source, blocks[0])
+
+
+def parse_value(text: str, typ: str, what: str) -> float:
+    """A value for a variable of type ``typ`` (module docstring), as the driver stores it."""
+    v = text.strip(" \t")
+    if typ == "BOOL":
+        word = v.upper()
+        if word not in ("TRUE", "FALSE"):
+            raise ValueError(f"{what}: a BOOL is TRUE or FALSE, not {v!r}")
+        return 1.0 if word == "TRUE" else 0.0
+    if typ in _REALS and v.lower().lstrip("+-") in ("nan", "inf", "infinity"):
+        return float(v)
+    problem = validate.number_problem(v)
+    if problem:
+        raise ValueError(f"{what}: {problem}")
+    if typ in _REALS:
+        x = float(v)
+        if abs(x) > _REALS[typ]:
+            raise ValueError(f"{what}: {v} is beyond the largest {typ} ({_REALS[typ]:.7g})")
+        return x
+    if typ in _INTS:
+        if not re.fullmatch(r"[+-]?[0-9]+", v):
+            raise ValueError(f"{what}: a {typ} is a whole number, not {v!r}")
+        lo, hi = _INTS[typ]
+        if not lo <= int(v) <= hi:
+            raise ValueError(f"{what}: {v} is outside the {typ} range {lo}..{hi}")
+        return float(int(v))
+    raise ValueError(f"{what}: a {typ} variable is not written from outside")
+
+
+def _variable(variables: dict[str, str], name: str, program: str, what: str) -> tuple[str, str]:
+    lower = {k.lower(): k for k in variables}
+    key = lower.get(name.strip().lower())
+    if key is None:
+        near = ", ".join(list(variables)[:8])
+        raise ValueError(f"{what}: {name.strip()!r} is not a variable of {program} ({near}, ...)")
+    return key, variables[key]
+
+
+def parse_scenario(table: dict, variables: dict[str, str], program: str):
+    """Rows (t_s, name, value) of a scenario table (``t_s,name,value`` as text columns),
+    each checked: a finite time not going backwards, a variable of the program, a value of
+    its type. ValueError naming the row."""
+    t_col, n_col, v_col = (list(table[c]) for c in ("t_s", "name", "value"))
+    if len(t_col) > MAX_ROWS:
+        raise ValueError(f"the scenario has {len(t_col)} rows: at most {MAX_ROWS}")
+    rows, last = [], 0.0
+    for k, (t, n, v) in enumerate(zip(t_col, n_col, v_col, strict=True)):
+        where = f"scenario row {k + 1}"
+        problem = validate.number_problem(t.strip(" \t"))
+        if problem:
+            raise ValueError(f"{where}: t_s {problem}")
+        ts = float(t)
+        if ts < 0:
+            raise ValueError(f"{where}: t_s = {t.strip()} is before 0")
+        if ts < last:
+            raise ValueError(
+                f"{where}: t_s = {t.strip()} goes back in time (the row before is at {last:g} s)"
+            )
+        last = ts
+        name, typ = _variable(variables, n, program, where)
+        if typ not in SCALARS:
+            raise ValueError(f"{where}: {name} is a {typ}, not a value a scenario writes")
+        rows.append((ts, name, parse_value(v, typ, f"{where}: {name}")))
+    return rows
+
+
+def _axes(variables: dict[str, str], mapdoc: dict | None):
+    from analysis.plc.st_engine import SimAxis
+
+    machine = (mapdoc or {}).get("machine") or {}
+    if machine.get("axes"):
+        out = []
+        for a in machine["axes"]:
+            lim = a.get("limits") or (None, None)
+            out.append(
+                SimAxis(
+                    a["axis"],
+                    float(a["max_velocity"]),
+                    float(a["max_acceleration"]),
+                    float(a["max_jerk"]),
+                    lim[0],
+                    lim[1],
+                    float(a["home"]["position"]),
+                )
+            )
+        return out
+    # no map: every AXIS_REF, no software limits, at 0; the limits only bound homing blocks
+    return [SimAxis(n, 1e6, 1e9, 1e12) for n, t in variables.items() if t == "AXIS_REF"]
+
+
+def _outputs(variables, written, mapdoc) -> list[str]:
+    from analysis.plc.st_engine import CYCLE_VARIABLE, TIME_UNIT_VARIABLE
+
+    machine = (mapdoc or {}).get("machine") or {}
+    if machine.get("outputs"):
+        return [
+            _variable(variables, n, "the program", "MAP.json output")[0] for n in machine["outputs"]
+        ]
+    skip = {w.lower() for w in written} | {TIME_UNIT_VARIABLE.lower(), CYCLE_VARIABLE.lower()}
+    return [n for n, t in variables.items() if t in SCALARS and n.lower() not in skip]
+
+
+def run_trace(
+    source: str,
+    table: dict,
+    *,
+    cycle_s: float,
+    settle_s: float,
+    mapdoc: dict | None = None,
+    program: str | None = None,
+):
+    """Run a scenario table (:func:`parse_scenario`); returns (header, axes, run)."""
+    from analysis.plc.machine.run import schedule
+    from analysis.plc.st_engine import program_variables, run_machine
+
+    if not (0.0005 <= cycle_s <= 1.0):
+        raise ValueError(f"--cycle-ms {cycle_s * 1e3:g}: between 0.5 and 1000 ms")
+    if not (0.0 <= settle_s <= 3600.0):
+        raise ValueError(f"--settle-s {settle_s:g}: between 0 and 3600 s")
+    source, name = pick_program(source, program, mapdoc)
+    variables = program_variables(source, name)
+    rows = parse_scenario(table, variables, name)
+    writes, n = schedule(rows, cycle_s, settle_s)
+    if n > MAX_CYCLES:
+        raise ValueError(
+            f"the scenario runs {n} cycles (last row at {rows[-1][0]:g} s + "
+            f"{settle_s:g} s at {cycle_s * 1e3:g} ms): at most {MAX_CYCLES}"
+        )
+    axes = _axes(variables, mapdoc)
+    outs = _outputs(variables, {n for _, n, _ in rows}, mapdoc)
+    run = run_machine(source, name, axes, writes, outs, cycle_s=cycle_s, n_cycles=n)
+    return [v for v in outs], axes, run, {n: variables[n] for n in outs}
+
+
+def _fmt(x: float) -> str:
+    if not math.isfinite(x):
+        return "nan" if math.isnan(x) else ("inf" if x > 0 else "-inf")
+    return repr(float(x)) if x != int(x) or abs(x) >= 1e15 else str(int(x))
+
+
+def trace_csv(outs, axes, run, types) -> str:
+    """The trace (module docstring): BOOL outputs as TRUE/FALSE, numbers in full."""
+    n = len(axes)
+    head = ["t_s", *(f"q{k + 1}" for k in range(n)), *(f"v{k + 1}" for k in range(n)), *outs]
+    lines = [",".join(head)]
+    bools = [types[o] == "BOOL" for o in outs]
+    for k in range(len(run.t)):
+        cells = [
+            _fmt(round(run.t[k], 9)),
+            *(_fmt(x) for x in run.q[k]),
+            *(_fmt(x) for x in run.v[k]),
+        ]
+        for b, x in zip(bools, run.values[k], strict=True):
+            cells.append(("TRUE" if x else "FALSE") if b else _fmt(x))
+        lines.append(",".join(cells))
+    return "\n".join(lines) + "\n"
+
+
+def one_scan(source: str, sets, reads, *, mapdoc=None, program=None) -> dict:
+    """One scan: ``sets`` (``NAME=VALUE``) written before it, ``reads`` (``NAME`` or
+    ``NAME:TYPE``) after it; ``{"values": {name: value}}``."""
+    from analysis.plc.st_engine import program_variables, run_machine
+
+    source, name = pick_program(source, program, mapdoc)
+    variables = program_variables(source, name)
+    writes = []
+    for s in sets:
+        var, sep, value = s.partition("=")
+        if not sep:
+            raise ValueError(f"--set {s!r}: expected NAME=VALUE (e.g. TargetX=100.0)")
+        key, typ = _variable(variables, var, name, f"--set {s!r}")
+        writes.append((0, key, parse_value(value, typ, f"--set {s!r}")))
+    if not reads:
+        raise ValueError("nothing to read: give at least one --read NAME")
+    wanted = []
+    for r in reads:
+        var, _, typ = r.partition(":")
+        key, real = _variable(variables, var, name, f"--read {r!r}")
+        if typ and typ.strip().upper() != real:
+            raise ValueError(f"--read {r!r}: {key} is a {real}, not {typ.strip().upper()}")
+        if real not in SCALARS:
+            raise ValueError(f"--read {r!r}: {key} is a {real}, not a scalar")
+        wanted.append((key, real))
+    run = run_machine(
+        source, name, _axes(variables, mapdoc), writes, [k for k, _ in wanted], n_cycles=1
+    )
+    values = {}
+    for k, (key, typ) in enumerate(wanted):
+        x = float(run.values[0, k])
+        values[key] = bool(x) if typ == "BOOL" else (x if typ in _REALS else int(x))
+    return {"values": values, "types": dict(wanted)}

@@ -1,0 +1,383 @@
+"""The machine scenarios of issue 29 item 4 and the checks that hold a run to numbers computed
+apart from the program: for every engine (the ST engine from ST and from PLCopen XML here; the
+S7-200 evaluator and awlsim reuse the definitions and the checks).
+
+A :class:`Scenario` is what an operator does (rows ``t_s, name, value``: the machine's inputs
+by their contract names, :mod:`.spec`) and what must follow (:class:`Expect`). A :class:`Trace`
+is one row per cycle: ``t`` [s], ``q`` and ``v`` (cycles, joints) in joint units (deg or mm,
+per second) and the program's outputs by name; :meth:`Trace.from_csv` reads ``stl-run
+--trace``. :func:`check` runs every check a scenario names and returns the failures (an empty
+list: it passed); each check is also a function of its own (:mod:`.checks`, re-exported
+here):
+
+- :func:`check_final`: the final joint positions equal the IK of the target (float64 closed
+  form, eqs. 20-22's pulses) within one pulse (an unlimited revolute joint modulo 360 deg);
+- :func:`check_limits`: velocity, acceleration and jerk, as finite differences of the
+  positions (exact bounds: a divided difference is a mean of the derivative), within each
+  joint's limits;
+- :func:`check_sync`: each move from rest lasts at least the joint's own time-optimal
+  profile (:func:`.profile.min_time`: axes that jump fail) and at most 1.5 times the
+  synchronised profile (:func:`.profile.sync_time`), and the joints arrive within one cycle
+  of each other;
+- :func:`check_stop`: after the stop, each axis comes to rest within
+  :func:`.profile.stop_distance` (the jerk-limited braking distance from its velocity and
+  acceleration) plus one cycle at its velocity, and never moves again;
+- :func:`check_still`: no axis moves at all in a window (a refused command);
+- :func:`check_short_way`: no move turns an unlimited joint more than half a turn;
+- :func:`check_outputs`: an output has a value at a time (Status 101, Homed, ...).
+
+The targets come from joint values (FK computed apart from the program, then the float64
+IK of that target gives the expected pulses), seeded, inside the refusal bands' margins.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from analysis.kinematics.status import Status
+from analysis.plc.machine.checks import (
+    Trace,
+    check_final,
+    check_limits,
+    check_outputs,
+    check_short_way,
+    check_still,
+    check_stop,
+    check_sync,
+    motion_segments,
+)
+from analysis.plc.machine.profile import sync_time
+from analysis.plc.machine.spec import MachineSpec, machine_spec
+
+__all__ = [
+    "SCENARIOS",
+    "Expect",
+    "Scenario",
+    "Trace",
+    "check",
+    "check_final",
+    "check_limits",
+    "check_outputs",
+    "check_short_way",
+    "check_still",
+    "check_stop",
+    "check_sync",
+    "expected_joints",
+    "motion_segments",
+    "scenarios",
+]
+
+SCENARIOS = (
+    "power_home",
+    "move",
+    "retarget",
+    "stop",
+    "reset_resume",
+    "unreachable",
+    "nan",
+    "wrap",
+    "joint_limit",
+    "wire_break",
+)
+"""The scenarios every arm runs (``joint_limit`` only where a joint has limits)."""
+
+HOME_T, START_T = 0.1, 0.5
+"""Home's and the first Start's rising edge [s]."""
+PULSE_S = 0.1
+"""How long a push button stays pressed [s]."""
+
+
+@dataclass(frozen=True)
+class Expect:
+    """What a scenario asserts: ``final`` joint positions (None: no move), ``still`` windows
+    [s] where nothing moves, ``outputs`` (t, name, value) to read, ``stop_t`` the time the
+    stop circuit opens (nothing moves again before ``stop_until``, default the end),
+    ``sync`` which moves from rest are held to the profile: "all" (but a
+    stopped one), "last" (a re-planned move: the halt before it is not one), or ""."""
+
+    final: tuple[float, ...] | None = None
+    still: tuple[tuple[float, float], ...] = ()
+    outputs: tuple[tuple[float, str, float], ...] = ()
+    stop_t: float | None = None
+    stop_until: float | None = None
+    sync: str = "all"
+
+
+@dataclass(frozen=True)
+class Scenario:
+    name: str
+    title: str
+    rows: tuple[tuple[float, str, float], ...]
+    expect: Expect
+
+    @property
+    def end_s(self) -> float:
+        """The last row's time (``stl-run`` adds ``--settle-s``)."""
+        return max(t for t, _, _ in self.rows)
+
+    def csv(self) -> str:
+        """The scenario as ``stl-run --scenario`` reads it (``t_s,name,value``)."""
+        out = ["t_s,name,value"]
+        for t, name, value in self.rows:
+            out.append(f"{t:.6g},{name},{_value(name, value)}")
+        return "\n".join(out) + "\n"
+
+
+_BOOLS = {"Enable", "Home", "Start", "StopOK", "Reset", "Grip"}
+
+
+def _value(name: str, value: float) -> str:
+    if name in _BOOLS:
+        return "TRUE" if value else "FALSE"
+    return "nan" if math.isnan(value) else repr(float(value))
+
+
+# --- the scenarios -----------------------------------------------------------------------------
+
+
+def _targets(arm, spec: MachineSpec, rng: np.random.Generator):
+    """Two reachable configurations A, B (default branch, joints a fair way from home), the
+    wrap pair across theta1 = +-180 deg, and their targets in the machine's units."""
+    from analysis.kinematics.sampling import sample_q
+
+    branch = arm.branches[0]
+    qs = sample_q(arm, rng, 64, branch=branch)
+    home = np.array([a.home_position for a in spec.axes])
+    user = arm.joints_to_user(qs)
+    far = np.max(np.abs(user - home) / np.array([a.max_velocity for a in spec.axes]), axis=1)
+    order = np.argsort(-far)
+    qa, qb = qs[order[0]], qs[order[1]]
+    wrap = []
+    step = spec.axes[0].per_pulse  # four pulses apart across the cut
+    for deg in (180.0 - 2 * step, -180.0 + 2 * step):
+        q = qa.copy()
+        q[0] = math.radians(deg)
+        wrap.append(q)
+    return qa, qb, wrap
+
+
+def _user_target(arm, q) -> tuple[float, ...]:
+    t = arm.target(q)
+    return tuple(
+        float(x) for x in np.where([u == "rad" for u in arm.input_units], np.degrees(t), t)
+    )
+
+
+def expected_joints(arm, spec: MachineSpec, target) -> tuple[float, ...] | None:
+    """The joint positions [deg | mm] the machine must reach for ``target`` (machine units):
+    the float64 IK of the default branch, as pulses (eqs. 20-22) times each axis' step; None
+    if the IK refuses it."""
+    p = arm.from_user(np.array(target, dtype=float))
+    sol = arm.solve(p, arm.branches[0])
+    if int(np.asarray(sol.status).reshape(-1)[0]) != Status.OK:
+        return None
+    q = np.asarray(sol.theta).reshape(-1, arm.n_joints)[0]
+    c = arm.pulses(q)
+    return tuple(float(k) * a.per_pulse for k, a in zip(c, spec.axes, strict=True))
+
+
+def _start(t: float, target, spec: MachineSpec) -> list[tuple[float, str, float]]:
+    rows = [(t - 0.05, n, float(x)) for n, x in zip(spec.targets, target, strict=True)]
+    return [*rows, (t, "Start", 1.0), (t + PULSE_S, "Start", 0.0)]
+
+
+def _pulse(t: float, name: str) -> list[tuple[float, str, float]]:
+    return [(t, name, 1.0), (t + PULSE_S, name, 0.0)]
+
+
+def _move_time(spec: MachineSpec, q_from, q_to) -> float:
+    d = np.asarray(q_to) - np.asarray(q_from)
+    return sync_time(
+        d,
+        *(
+            np.array([getattr(a, k) for a in spec.axes])
+            for k in ("max_velocity", "max_acceleration", "max_jerk")
+        ),
+    )
+
+
+def scenarios(arm, seed: int = 29) -> dict[str, Scenario]:
+    """The scenarios of ``arm`` (:data:`SCENARIOS`; ``joint_limit`` only where it has a
+    limited joint whose limit a reachable target crosses)."""
+    spec = machine_spec(arm)
+    rng = np.random.default_rng(seed)
+    qa, qb, (qw1, qw2) = _targets(arm, spec, rng)
+    home = tuple(a.home_position for a in spec.axes)
+    ta, tb = _user_target(arm, qa), _user_target(arm, qb)
+    ja, jb = expected_joints(arm, spec, ta), expected_joints(arm, spec, tb)
+    t_move = _move_time(spec, home, ja)
+    boot = [(0.0, "Enable", 1.0), (0.0, "StopOK", 1.0), *_pulse(HOME_T, "Home")]
+    done = START_T + t_move + 0.5
+    mid = START_T + 0.4 * t_move
+    out: dict[str, Scenario] = {}
+    out["power_home"] = Scenario(
+        "power_home",
+        "power up, Start before Home refused, home",
+        (*boot[:2], *_start(0.3, ta, spec), *_pulse(0.6, "Home"), (1.2, "Start", 0.0)),
+        Expect(
+            still=((0.0, 1.2),),
+            outputs=(
+                (0.35, "Status", 101),
+                (0.35, "Homed", 0),
+                (1.0, "Homed", 1),
+                (1.0, "Busy", 0),
+            ),
+        ),
+    )
+    out["move"] = Scenario(
+        "move",
+        "home, move to a target",
+        (*boot, *_start(START_T, ta, spec), (done, "Start", 0.0)),
+        Expect(final=ja, outputs=((done, "Done", 1), (done, "Status", 0))),
+    )
+    t2 = _move_time(spec, ja, jb) + mid + 0.5 + t_move
+    out["retarget"] = Scenario(
+        "retarget",
+        "a new target mid-move (re-planned from where the axes stop)",
+        (*boot, *_start(START_T, ta, spec), *_start(mid, tb, spec), (t2, "Start", 0.0)),
+        Expect(final=jb, sync="last"),
+    )
+    stop_rows = (*boot, *_start(START_T, ta, spec), (mid, "StopOK", 0.0))
+    settle = mid + 1.5
+    out["stop"] = Scenario(
+        "stop",
+        "the stop circuit opens mid-move; closed, Start without Reset is refused",
+        (
+            *stop_rows,
+            (settle, "StopOK", 1.0),
+            *_start(settle + 0.2, tb, spec),
+            (settle + 1.0, "Start", 0.0),
+        ),
+        Expect(
+            stop_t=mid,
+            still=((settle, settle + 1.0),),
+            outputs=((mid + 0.05, "Status", 102), (settle + 0.25, "Status", 102)),
+        ),
+    )
+    back = settle + 0.6
+    t3 = back + 0.2 + t_move + 0.5
+    out["reset_resume"] = Scenario(
+        "reset_resume",
+        "stop mid-move, Reset, Start again: the target is reached",
+        (
+            *stop_rows,
+            (settle, "StopOK", 1.0),
+            *_pulse(settle + 0.2, "Reset"),
+            *_start(back, ta, spec),
+            (t3, "Start", 0.0),
+        ),
+        Expect(
+            final=ja,
+            stop_t=mid,
+            stop_until=back,
+            outputs=((settle + 0.45, "Status", 0), (settle + 0.45, "Error", 0)),
+        ),
+    )
+    far = tuple(x * 10.0 if k < 3 else x for k, x in enumerate(ta))
+    out["unreachable"] = _refused(
+        "unreachable", "a target out of reach", boot, far, spec, Status.OUT_OF_REACH
+    )
+    nan = (math.nan, *ta[1:])
+    out["nan"] = _refused("nan", "a NaN target", boot, nan, spec, Status.INVALID)
+    out.update(_wrap(arm, spec, boot, qw1, qw2))
+    lim = _limit_target(arm, spec, rng)
+    if lim is not None:
+        out["joint_limit"] = _refused(
+            "joint_limit", "a target beyond a joint limit", boot, lim, spec, Status.JOINT_LIMITS
+        )
+    out["wire_break"] = Scenario(
+        "wire_break",
+        "a broken stop wire mid-move: Reset does not clear it, Start is refused",
+        (
+            *stop_rows,
+            *_pulse(settle, "Reset"),
+            *_start(settle + 0.4, ta, spec),
+            (settle + 1.5, "Start", 0.0),
+        ),
+        Expect(
+            stop_t=mid,
+            still=((settle - 0.2, settle + 1.5),),
+            outputs=((settle + 0.45, "Status", 102), (settle + 0.45, "Error", 1)),
+        ),
+    )
+    return out
+
+
+def _refused(name, title, boot, target, spec, status) -> Scenario:
+    rows = (*boot, *_start(START_T, target, spec), (START_T + 1.0, "Start", 0.0))
+    return Scenario(
+        name,
+        title,
+        rows,
+        Expect(
+            still=((0.0, START_T + 1.0),),
+            outputs=((START_T + 0.05, "Status", int(status)), (START_T + 0.05, "Error", 1)),
+        ),
+    )
+
+
+def _wrap(arm, spec, boot, q1, q2) -> dict[str, Scenario]:
+    t1, t2 = _user_target(arm, q1), _user_target(arm, q2)
+    j1, j2 = expected_joints(arm, spec, t1), expected_joints(arm, spec, t2)
+    if j1 is None or j2 is None:
+        return {}
+    home = tuple(a.home_position for a in spec.axes)
+    first = START_T + _move_time(spec, home, j1) + 0.5
+    end = first + 1.0
+    rows = (*boot, *_start(START_T, t1, spec), *_start(first, t2, spec), (end, "Start", 0.0))
+    return {
+        "wrap": Scenario(
+            "wrap", "a target across theta1 = +-180 deg: the short way", rows, Expect(final=j2)
+        )
+    }
+
+
+def _limit_target(arm, spec, rng: np.random.Generator):
+    """A target the arm reaches only with a joint beyond its limits (the float64 IK of the
+    default branch: JOINT_LIMITS), from joint values drawn past the limits; None if none of
+    2000 draws gives one (every joint unrestricted)."""
+    if all(a.unlimited for a in spec.axes):
+        return None
+    lo = np.array(
+        [-180.0 if a.unlimited else a.lower - 0.5 * (a.upper - a.lower) for a in spec.axes]
+    )
+    hi = np.array(
+        [180.0 if a.unlimited else a.upper + 0.5 * (a.upper - a.lower) for a in spec.axes]
+    )
+    q = arm.joints_from_user(lo + (hi - lo) * rng.random((2000, len(spec.axes))))
+    q = q[arm.valid_q(q)]
+    p = arm.target(q)
+    status = np.asarray(arm.solve(p, arm.branches[0]).status)
+    hits = np.flatnonzero(status == Status.JOINT_LIMITS)
+    return _user_target(arm, q[hits[0]]) if len(hits) else None
+
+
+def check(
+    scenario: Scenario, trace: Trace, spec: MachineSpec, arrive_s: float | None = None
+) -> list[str]:
+    """Every check ``scenario`` names (module docstring); the failures, each one line.
+    ``arrive_s``: how far apart the joints may arrive (default one cycle)."""
+    e = scenario.expect
+    out = check_limits(trace, spec)
+    if e.final is not None:
+        out += check_final(trace, spec, e.final)
+    for t0, t1 in e.still:
+        out += check_still(trace, spec, t0, t1)
+    if e.stop_t is not None:
+        out += check_stop(trace, spec, e.stop_t, e.stop_until)
+    out += check_short_way(trace, spec)
+    if e.sync:
+        segs = motion_segments(trace)
+        segs = segs[-1:] if e.sync == "last" else segs
+        k_stop = trace.at(e.stop_t) if e.stop_t is not None else None
+        for seg in segs:
+            if k_stop is not None and seg[0] <= k_stop <= seg[1]:
+                continue  # a stopped move
+            if not np.all(np.abs(trace.v[seg[0]]) < 1e-9) or seg[1] >= len(trace.t) - 1:
+                continue  # not from rest (a halted one continues), or still moving at the end
+            out += check_sync(trace, spec, seg, arrive_s)
+    out += check_outputs(trace, e.outputs)
+    return [f"{scenario.name}: {m}" for m in out]

@@ -1,0 +1,1 @@
+"""Tests of one paper's home (analysis.audit.papers)."""

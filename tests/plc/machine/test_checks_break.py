@@ -1,0 +1,80 @@
+"""Each property the scenarios hold, broken once on purpose in the generated program: its
+check must go red (and the unbroken program passes it: test_scenarios.py). A check that
+cannot fail proves nothing."""
+
+from __future__ import annotations
+
+import pytest
+from tests.plc.machine.conftest import machine, scenario_set
+
+from analysis.plc.machine.program import lreal
+from analysis.plc.machine.run import run_scenario
+from analysis.plc.machine.scenarios import check
+
+# (scenario, what to replace in the program, by what, a word of the failure expected)
+BREAKS = {
+    "final": ("move", "DINT_TO_LREAL(Ik.c2)", "DINT_TO_LREAL(Ik.c2 + 2)", "final theta2"),
+    "velocity": (
+        "move",
+        "Velocity := NormV * Scale * Tu",
+        "Velocity := NormV * Scale * Tu * LREAL#1.5",
+        "velocity",
+    ),
+    "jump": (
+        "move",
+        "Jerk := NormJ * Scale * Tu * Tu * Tu",
+        "Jerk := NormJ * Scale * Tu * Tu",
+        "jerk",
+    ),
+    "together": ("move", "    Scale := Dist3;", "    Scale := Dist3 * LREAL#0.7;", "in proportion"),
+    "short_way": (
+        "wrap",
+        "    Goal1 := Pos1 + (Dist1 - LREAL#360.0 * DINT_TO_LREAL("
+        "LREAL_TO_DINT(Dist1 / LREAL#360.0)));",
+        "",
+        "final theta1",
+    ),
+    "stop": ("stop", "        StopLatched := TRUE;", "", "moved"),
+    "stop_distance": (
+        "stop",
+        # the stop braking at half the waist's deceleration (the grabber's max_acceleration)
+        "Stop1(Axis := Axis1, Execute := Phase = 40, Deceleration := {a} * Tu * Tu",
+        "Stop1(Axis := Axis1, Execute := Phase = 40, Deceleration := {a} * LREAL#0.5 * Tu * Tu",
+        "came to rest",
+    ),
+    # the unit move not aligned to whole cycles: the engine ends the joints cycles apart
+    "aligned": ("move", "+ LREAL#0.75) * TaskCycle", "+ LREAL#0.0) * TaskCycle", "apart"),
+    # half-cycle phases: the engine's correction quintic overshoots the goal and comes back
+    "overshoot": ("move", "+ LREAL#0.75) * TaskCycle", "+ LREAL#0.5) * TaskCycle", "moved back"),
+    "refusal": ("unreachable", "IF NOT Ik.reachable THEN", "IF FALSE THEN", "Status"),
+    "homed": ("power_home", "ELSIF NOT Homed THEN", "ELSIF FALSE THEN", "moved"),
+    # the stop circuit watched only while the machine moves, and Reset clearing it whatever
+    # the circuit says: after Reset, a Start goes with the wire still broken
+    "wire_break": (
+        "wire_break",
+        ("IF NOT StopOK THEN", "        IF StopOK THEN\n            StopLatched := FALSE;"),
+        ("IF NOT StopOK AND Busy THEN", "        IF TRUE THEN\n            StopLatched := FALSE;"),
+        "moved",
+    ),
+}
+
+
+@pytest.mark.parametrize("prop", sorted(BREAKS))
+def test_a_broken_program_fails_its_check(machine_engine, prop):
+    name, old, new, word = BREAKS[prop]
+    _, spec, source, program, _ = machine("grabber")
+    decel = lreal(spec.axes[0].max_acceleration)
+    old, new = (tuple(x.replace("{a}", decel) for x in v) if not isinstance(v, str)
+                else v.replace("{a}", decel) for v in (old, new))  # fmt: skip
+    broken = source
+    for o, n in zip(*((x,) if isinstance(x, str) else x for x in (old, new)), strict=True):
+        assert o in source, f"the program no longer holds {o!r}"
+        broken = broken.replace(o, n)
+    scenario = scenario_set("grabber")[name]
+    failures = check(
+        scenario,
+        run_scenario(broken, program, spec, scenario.rows),
+        spec,
+        arrive_s=None if prop == "aligned" else 10.0,
+    )
+    assert any(word in f for f in failures), failures

@@ -1,0 +1,232 @@
+"""``python -m analysis stl-run PROGRAM --dialect st|plcopen-xml --scenario S.csv --trace T.csv``
+(issue 29 item 3, a contract): the program as ``stl`` prints it, a scenario, a trace with one
+row per cycle; bad input is one line and exit 2."""
+
+from __future__ import annotations
+
+import csv
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from tests.plc.machine.conftest import machine, scenario_set
+
+from analysis.app.cli import main
+from analysis.plc.machine.scenarios import Trace, check
+
+ROOT = Path(__file__).resolve().parents[3]
+
+
+def _run(capsys, *argv):
+    code = main(["stl-run", *map(str, argv)])
+    out = capsys.readouterr()
+    return code, out.out, out.err
+
+
+@pytest.fixture(scope="module")
+def grabber(tmp_path_factory, machine_engine):
+    d = tmp_path_factory.mktemp("machine")
+    for dialect, suffix in (("st", "st"), ("plcopen-xml", "xml")):
+        rc = main(
+            [
+                "stl",
+                "--dialect",
+                dialect,
+                "-o",
+                str(d / f"g.{suffix}"),
+                "--map",
+                str(d / f"g.{suffix}.json"),
+            ]
+        )
+        assert rc == 0
+    (d / "move.csv").write_text(scenario_set("grabber")["move"].csv(), encoding="utf-8")
+    return d
+
+
+@pytest.mark.parametrize("suffix", ["st", "xml"])
+def test_scenario_to_trace(grabber, capsys, suffix):
+    dialect = "st" if suffix == "st" else "plcopen-xml"
+    trace = grabber / f"t-{suffix}.csv"
+    code, _, err = _run(
+        capsys,
+        grabber / f"g.{suffix}",
+        "--dialect",
+        dialect,
+        "--scenario",
+        grabber / "move.csv",
+        "--trace",
+        trace,
+        "--map",
+        grabber / f"g.{suffix}.json",
+    )
+    assert code == 0, err
+    text = trace.read_text("utf-8")
+    head = next(csv.reader([text.split("\n", 1)[0]]))
+    assert head == [
+        "t_s",
+        "q1",
+        "q2",
+        "q3",
+        "v1",
+        "v2",
+        "v3",
+        "Homed",
+        "Busy",
+        "Done",
+        "Error",
+        "Status",
+        "Gripper",
+        "GripperClosed",
+        "AxisErrorID",
+    ]
+    sc = scenario_set("grabber")["move"]
+    tr = Trace.from_csv(text)
+    assert len(tr.t) == round((sc.end_s + 2.0) / 0.004) + 1 and tr.t[1] == 0.004
+    assert check(sc, tr, machine("grabber")[1]) == []
+
+
+def test_cycle_and_settle(grabber, capsys):
+    trace = grabber / "t2.csv"
+    code, _, err = _run(
+        capsys,
+        grabber / "g.st",
+        "--dialect",
+        "st",
+        "--scenario",
+        grabber / "move.csv",
+        "--trace",
+        trace,
+        "--cycle-ms",
+        "2",
+        "--settle-s",
+        "0.5",
+    )
+    assert code == 0, err
+    tr = Trace.from_csv(trace.read_text("utf-8"))
+    assert tr.t[1] == 0.002 and tr.t[-1] == pytest.approx(
+        scenario_set("grabber")["move"].end_s + 0.5, abs=0.002
+    )
+    assert "Pos1" in tr.outputs  # without a map: every variable the scenario does not write
+
+
+@pytest.mark.parametrize(
+    ("rows", "word"),
+    [
+        ("0,Enable,TRUE\n0.1,Foo,TRUE\n", "'Foo' is not a variable of MACHINE_GRABBER"),
+        ("0.5,Enable,TRUE\n0.1,Start,TRUE\n", "row 2: t_s = 0.1 goes back in time"),
+        ("0,Enable,yes\n", "a BOOL is TRUE or FALSE"),
+        ("0,TargetX,1e39\n", "beyond the largest REAL"),
+        ("0,Status,1.5\n", "a INT is a whole number"),
+        ("-1,Enable,TRUE\n", "before 0"),
+        ("0,Axis1,1\n", "AXIS_REF"),
+    ],
+)
+def test_bad_scenarios(grabber, capsys, tmp_path, rows, word):
+    (tmp_path / "s.csv").write_text("t_s,name,value\n" + rows, encoding="utf-8")
+    code, _, err = _run(
+        capsys,
+        grabber / "g.st",
+        "--dialect",
+        "st",
+        "--scenario",
+        tmp_path / "s.csv",
+        "--trace",
+        tmp_path / "t.csv",
+    )
+    assert code == 2 and word in err and err.count("\n") == 1, err
+    assert not (tmp_path / "t.csv").exists()
+
+
+def test_compile_error_names_line_and_column(capsys, tmp_path, machine_engine):
+    (tmp_path / "p.st").write_text(
+        "PROGRAM P\nVAR\n    x : INT;\nEND_VAR\nx := y + 1;\nEND_PROGRAM\n", encoding="utf-8"
+    )
+    code, _, err = _run(capsys, tmp_path / "p.st", "--dialect", "st", "--read", "x")
+    assert code == 2 and "line 5 col 6" in err and "unknown_identifier" in err, err
+
+
+def test_engine_fault_names_the_fault_and_the_cycle(capsys, tmp_path, machine_engine):
+    (tmp_path / "p.st").write_text(
+        "PROGRAM P\nVAR\n    n : DINT := 3;\n    x : DINT;\nEND_VAR\n"
+        "n := n - 1;\nx := 10 / n;\nEND_PROGRAM\n",
+        encoding="utf-8",
+    )
+    (tmp_path / "s.csv").write_text("t_s,name,value\n0.1,x,0\n", encoding="utf-8")
+    code, _, err = _run(
+        capsys,
+        tmp_path / "p.st",
+        "--dialect",
+        "st",
+        "--scenario",
+        tmp_path / "s.csv",
+        "--trace",
+        tmp_path / "t.csv",
+    )
+    assert code == 2 and "division_by_zero at cycle 2" in err, err
+
+
+def test_one_scan_and_the_ik_block_alone(capsys, tmp_path, machine_engine):
+    """Without a scenario: one scan, --set/--read; a source without a PROGRAM (the IK block
+    on its own, stl --no-motion) runs through a harness (Table 4 row 1: 500 pulses)."""
+    rc = main(["stl", "--dialect", "st", "--no-motion", "-o", str(tmp_path / "ik.st")])
+    assert rc == 0
+    capsys.readouterr()
+    code, out, err = _run(
+        capsys,
+        tmp_path / "ik.st",
+        "--dialect",
+        "st",
+        "--set",
+        "px=100.0",
+        "--set",
+        "py=100.0",
+        "--set",
+        "pz=600.0",
+        "--read",
+        "c1",
+        "--read",
+        "reachable:BOOL",
+        "--json",
+    )
+    assert code == 0, err
+    assert out.strip() == '{"values": {"c1": 500, "reachable": true}}'
+
+
+def test_s7_dialects_refuse_a_scenario(capsys, tmp_path):
+    code, _, err = _run(
+        capsys,
+        tmp_path / "x.awl",
+        "--dialect",
+        "s7-200",
+        "--scenario",
+        tmp_path / "s.csv",
+        "--trace",
+        tmp_path / "t.csv",
+    )
+    assert code == 2 and "--scenario applies to --dialect st and plcopen-xml" in err
+
+
+@pytest.mark.slow
+def test_the_contract_from_a_shell(grabber, tmp_path):
+    """The issue's command line in a subprocess, as a user types it."""
+    r = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "analysis",
+            "stl-run",
+            str(grabber / "g.st"),
+            "--dialect",
+            "st",
+            "--scenario",
+            str(grabber / "move.csv"),
+            "--trace",
+            str(tmp_path / "t.csv"),
+        ],
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+    )
+    assert r.returncode == 0, r.stderr
+    assert (tmp_path / "t.csv").read_text("utf-8").startswith("t_s,q1,q2,q3,v1,v2,v3,")
