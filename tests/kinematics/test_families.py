@@ -221,7 +221,7 @@ def test_random_arms_float32_model_follows(random_arms, rng):
         q = arm.sample_q(rng, 300, branch=arm.branches[0])
         p = arm.target(q)
         ref = arm.solve(p, arm.branches[:1], margin_mm=1e-3, margin_rad=2e-5)
-        model = predict(arm.params, p, ops=Float32Ops())
+        model = predict(arm, p, ops=Float32Ops())
         ok = ref.ok[:, 0] & model.reachable
         assert (ok == ref.ok[:, 0]).mean() > 0.98, fam
         ppr = np.asarray(arm.params.pulses_per_rev)

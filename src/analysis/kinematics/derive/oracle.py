@@ -98,7 +98,7 @@ def eaik_robot(arm):
     from eaik.IK_Homogeneous import HomogeneousRobot
 
     frames = _joint_frames(arm)
-    if arm.n_joints == 3:
+    if arm.closed_form.family == "3R":
         tool = frames[-1]
         wrist = []
         for k in range(3):
