@@ -21,8 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
-from analysis.kinematics.arm import load_arm
-from analysis.kinematics.derive import derived_arm
+from analysis.kinematics.arm import derived_arm, load_arm
 from analysis.kinematics.derive.oracle import available, compare_solution_sets
 from analysis.kinematics.derive.samples import random_arm
 from analysis.kinematics.rpy import pose_from_transform

@@ -57,7 +57,7 @@ def machine_scan_times(rounds: int = 3) -> dict:
             walls.append(time.perf_counter() - t0)
             scans.append(run.scan_ns * 1e-9)
             cycles = len(run.t)
-        text, map_text = generate("s7-300", params=arm.params)
+        text, map_text = generate(arm, "s7-300")
         runner = AwlRunner(text, MemoryMap.from_dict(json.loads(map_text)))
         xyz = sweep_targets(arm)[input_columns(arm)].to_numpy(dtype=float)[:200]
         t0 = time.perf_counter()

@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from analysis.app.cli import main
-from analysis.kinematics.arm import Arm, load_arm
+from analysis.kinematics.arm import load_arm
 from analysis.paths import data_dir
 
 
@@ -135,7 +135,7 @@ def test_json_is_valid_and_warnings_stay_off_stdout(capsys):
         (lambda a: a.solve([100, 100, 600], branches=None), "branches = None"),
         (lambda a: a.solve(np.array([100 + 1j, 100, 600])), "holds complex"),
         (lambda a: a.solve(np.ma.masked_array([100.0, 100, 600], [0, 1, 0])), "masked"),
-        (lambda a: Arm(a.params.with_(L2=1e200, L3=1e200)).solve([[100, 100, 600]]),
+        (lambda a: a.with_(L2=1e200, L3=1e200).solve([[100, 100, 600]]),
          r"L2 = 1e\+200 mm is beyond 1e\+06 mm, the largest length"),
     ],
 )

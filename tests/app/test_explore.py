@@ -81,7 +81,7 @@ def test_all_branches_against_dh_chain_and_solve(arm, table4, row):
     q = np.radians(rep.table[["theta1_deg", "theta2_deg", "theta3_deg"]].to_numpy())
     np.testing.assert_allclose(q, sol.theta, rtol=0, atol=1e-12)
     # every branch reaches the target through the D-H matrices (independent of Arm.fk)
-    tip = arm.params.dh_table().fk(q)[..., :3, 3]
+    tip = arm.dh_table().fk(q)[..., :3, 3]
     np.testing.assert_allclose(tip, np.broadcast_to(p, tip.shape), rtol=0, atol=FK_TOL_MM)
     # back branches are the front poses re-coordinated (waist + 180 deg, shoulder flipped):
     # same elbow point, different joints
@@ -123,7 +123,7 @@ def test_row8_unreachable_uses_library_message(arm, table4):
 def test_inside_inner_reach(arm):
     rep = pose_report(arm, [0.0, 50.0, 660.0])
     assert not rep.reachable and rep.error == "UnreachableError"
-    assert rep.outside_mm == pytest.approx(arm.params.reach_inner - 50.0, abs=1e-12)
+    assert rep.outside_mm == pytest.approx(arm.geometry["reach_inner"] - 50.0, abs=1e-12)
     assert "inside the inner reach" in rep.message and rep.table.empty
 
 
@@ -228,9 +228,9 @@ def _tip(ex):
 def test_explorer_builds_at_row1(arm):
     ex = build_explorer(arm, [100, 100, 600])
     x, _, z = ex.target_sliders
-    assert x.min <= -arm.params.reach_outer and x.max >= arm.params.reach_outer
-    assert z.min <= arm.params.L1 - arm.params.reach_outer
-    assert z.max >= arm.params.L1 + arm.params.reach_outer
+    assert x.min <= -arm.geometry["reach_outer"] and x.max >= arm.geometry["reach_outer"]
+    assert z.min <= arm.params.L1 - arm.geometry["reach_outer"]
+    assert z.max >= arm.params.L1 + arm.geometry["reach_outer"]
     assert x.step <= 0.1 and x.layout.width == "640px"  # 1200 mm over 640 px, 0.1 mm steps
     assert [s.description for s in ex.joint_sliders] == ["θ1 [°]", "θ2 [°]", "θ3 [°]"]
     assert ex.joint_sliders[0].style.description_width == "120px"  # labels not cut
@@ -288,7 +288,7 @@ def test_explorer_fk_mode(arm):
     t1, t2, t3 = ex.joint_sliders
     assert (t1.value, t2.value, t3.value) == (45.0, 10.21, -155.13)
     t1.value, t2.value, t3.value = 30.0, 20.0, -60.0
-    p = arm.params.dh_table().fk(np.radians([30.0, 20.0, -60.0]))[:3, 3]
+    p = arm.dh_table().fk(np.radians([30.0, 20.0, -60.0]))[:3, 3]
     assert "FK: gripper at (" + ", ".join(f"{v:.2f}" for v in p) + ") mm" in ex.message.value
     np.testing.assert_allclose(ex.report.target, p, atol=FK_TOL_MM)
     np.testing.assert_allclose(ex.report.angles_deg(), [30.0, 20.0, -60.0], atol=1e-9)

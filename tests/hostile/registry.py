@@ -277,10 +277,9 @@ def _toml_value(arm: str, slot: int, value) -> Outcome:
     """A length, a pulses_per_rev or a joint limit of ``data/arms/<arm>.toml``, rewritten."""
     with _toml_folder(arm, slot, value) as path, _captured() as (_out, _err, warned):
         try:
-            from analysis.kinematics.arm import Arm, Params
-            from analysis.kinematics.description import load_description
+            from analysis.kinematics.arm import load_arm
 
-            a = Arm(Params.from_description(load_description(str(path))))
+            a = load_arm(str(path))
             result = a.solve(np.array(a.from_user(default_target(arm))))
         except ValueError as exc:
             return Outcome(True, str(exc), warned=list(warned))
@@ -423,7 +422,6 @@ def _options(arm: str, slot: int, value) -> Outcome:
 @entry_point("Params.with_", "api", lambda arm: len(arm_of(arm).params) + 1,
              kind=lambda a, s: "ppr" if s == len(arm_of(a).params) else "len")  # fmt: skip
 def _params(arm: str, slot: int, value) -> Outcome:
-    from analysis.kinematics.arm import Arm
 
     a = arm_of(arm)
     names = list(a.params)
@@ -433,7 +431,7 @@ def _params(arm: str, slot: int, value) -> Outcome:
         change = {"pulses_per_rev": (value, *a.params.pulses_per_rev[1:])}
 
     def call():
-        b = Arm(a.params.with_(**change))
+        b = a.with_(**change)
         return b.solve([a.from_user(default_target(arm))], "all")
 
     return api(call)

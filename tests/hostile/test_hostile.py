@@ -264,7 +264,7 @@ EDGE_TOL = 1e-6
 
 def edge_arm(name: str):
     if name.startswith("derived:"):
-        from analysis.kinematics.derive import derived_arm
+        from analysis.kinematics.arm import derived_arm
 
         return derived_arm(name.split(":", 1)[1])
     return arm_of(name)
@@ -317,7 +317,7 @@ def projection_mm(arm) -> float:
     set is projected onto it, turning the tool offset with it): tool offset times the sine of
     that angle. 0 for every other arm (the GR-1's hand-written form keeps the tool point)."""
     orient = getattr(arm.closed_form, "ORIENTATION_TOL_RAD", None)
-    if not arm.description.closed_form.startswith("derived:5R") or orient is None:
+    if not arm.closed_form.name.startswith("derived:5R") or orient is None:
         return 0.0
     return arm.geometry["tool_offset"] * math.sin(orient)
 

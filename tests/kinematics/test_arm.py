@@ -38,8 +38,9 @@ from analysis.kinematics.arm import (
     Status,
     UnreachableError,
     as_points,
+    paper_arm,
 )
-from analysis.kinematics.params import ArmParams, data_dir
+from analysis.kinematics.params import data_dir
 from analysis.kinematics.pinocchio_model import PinocchioArm
 from helpers import (
     angle_diff,
@@ -114,9 +115,9 @@ def check_solutions(arm: Arm, p, sol: IKSolutions, atol_mm=ATOL_MM):
 def test_fk_equals_dh_chain(arm, rng):
     """Eq. 2's P column (hand-written fast path) equals T3 = A1 A2 A3 from the D-H rows."""
     q = rng.uniform(-2 * np.pi, 2 * np.pi, (5000, 3))
-    T = arm.params.dh_table().fk(q)
+    T = arm.dh_table().fk(q)
     assert_points_close(arm.fk(q), T[..., :3, 3], ATOL_MM, "fk vs D-H chain")
-    A = arm.params.dh_table().transforms(q)
+    A = arm.dh_table().transforms(q)
     assert_points_close(arm.elbow(q), (A[:, 0] @ A[:, 1])[..., :3, 3], ATOL_MM, "elbow vs A1 A2")
 
 
@@ -212,7 +213,7 @@ def test_ik_of_fk_batch(arm, rng):
 )
 def test_ik_of_fk_other_arms(L1, L2, L3, t1, t2, t3):
     """The closed form holds for any link lengths (not only Table 3), incl. L3 > L2."""
-    arm = Arm(ArmParams(L1=L1, L2=L2, L3=L3))
+    arm = paper_arm().with_(L1=L1, L2=L2, L3=L3)
     q = np.array([t1, t2, t3])
     r = L2 * math.cos(t2) + L3 * math.cos(t2 + t3)
     assume(abs(r) >= 1e-3 * (L2 + L3) and abs(math.sin(t3)) >= 1e-4)
@@ -252,9 +253,9 @@ def test_sweep_across_reach_boundary(arm, boundary, azimuth, elevation):
     """Targets from 5e-3 mm inside to 5e-3 mm outside the shell in 1e-3 mm steps, plus
     steps around the 1e-6 mm tolerance. delta > 0 is outside (beyond L2 + L3, or nearer
     than |L2 - L3| to the shoulder)."""
-    P = arm.params
+    geo = arm.geometry
     deltas = np.array(STEPS_MM)
-    D = P.reach_outer + deltas if boundary == "outer" else P.reach_inner - deltas
+    D = geo["reach_outer"] + deltas if boundary == "outer" else geo["reach_inner"] - deltas
     p = shell_point(arm, D, azimuth, elevation)
     sol = arm.solve(p)
     # the signed distance outside the shell is delta (p is built to ~1e-13 mm)
@@ -275,7 +276,7 @@ def test_sweep_across_reach_boundary(arm, boundary, azimuth, elevation):
     )
     reached = arm.fk(sol.theta[inside])
     on_shell = np.linalg.norm(reached - arm.shoulder, axis=-1)
-    radius = P.reach_outer if boundary == "outer" else P.reach_inner
+    radius = arm.geometry["reach_outer"] if boundary == "outer" else arm.geometry["reach_inner"]
     expected_D = np.where(deltas[inside] > 0, radius, D[inside])[:, None]
     assert_allclose(
         on_shell, np.broadcast_to(expected_D, on_shell.shape), ATOL_MM, "distance to shoulder"
@@ -303,14 +304,14 @@ def test_documented_default_tolerance():
 
 
 def test_tolerance_is_a_keyword(arm):
-    p = shell_point(arm, arm.params.reach_outer + 5e-4, 0.4, 0.3)
+    p = shell_point(arm, arm.geometry["reach_outer"] + 5e-4, 0.4, 0.3)
     assert arm.solve(p).status == Status.OUT_OF_REACH
     sol = arm.solve(p, tol=1e-3)
     assert sol.status == Status.OK
     check_solutions(arm, p, sol, 5e-4 + ATOL_MM)
     assert arm.ik(p, tol=1e-3).shape == (3,)
     with pytest.raises(UnreachableError, match=r"0\.001 mm beyond"):
-        arm.ik(shell_point(arm, arm.params.reach_outer + 1e-3 + 1e-6, 0.4, 0.3), tol=1e-3)
+        arm.ik(shell_point(arm, arm.geometry["reach_outer"] + 1e-3 + 1e-6, 0.4, 0.3), tol=1e-3)
 
 
 # --- base axis sweeps ---------------------------------------------------------------------
@@ -639,7 +640,7 @@ def test_jacobian_vs_central_differences(arm, rng):
 def test_jacobian_vs_pinocchio(arm, rng):
     """The same Jacobian from Pinocchio's frame Jacobian (LOCAL_WORLD_ALIGNED, linear part)
     of a model built from the D-H rows: agreement to 1e-9 mm/rad (entries <= 510 mm/rad)."""
-    pin_arm = PinocchioArm(arm.params.dh_table())
+    pin_arm = PinocchioArm(arm.dh_table())
     q = rng.uniform(-np.pi, np.pi, (2000, 3))
     assert_allclose(arm.jacobian(q), pin_arm.jacobian(q), 1e-9, "J vs Pinocchio")
 
@@ -663,7 +664,7 @@ def test_jacobian_singular_where_ik_is(arm, rng):
 def test_equal_links_shoulder_point():
     """L2 = L3: the inner radius is 0 and the shoulder itself is reachable (elbow folded,
     on the base axis): BASE_AXIS without a waist angle, solved with one."""
-    arm = Arm(ArmParams(L1=0.0, L2=100.0, L3=100.0))
+    arm = paper_arm().with_(L1=0.0, L2=100.0, L3=100.0)
     sol = arm.solve([0.0, 0.0, 0.0])
     assert sol.status == Status.BASE_AXIS and sol.reachable
     sol = arm.solve([0.0, 0.0, 0.0], theta1_on_axis=0.3)

@@ -44,7 +44,7 @@ def assert_same_solutions(ref, got):
 def boundary_targets(arm):
     """Targets on and around every boundary: shell spheres, base axis, atan2 cuts."""
     P = arm.params
-    R, r, L1 = P.reach_outer, P.reach_inner, P.L1
+    R, r, L1 = arm.geometry["reach_outer"], arm.geometry["reach_inner"], P.L1
     tol = 1e-6
     rng = np.random.default_rng(7)
     u = rng.standard_normal((400, 3))
@@ -102,7 +102,7 @@ def boundary_targets(arm):
 
 
 def test_compiled_solve_equals_arm_solve_random(arm, rng):
-    p = arm.shoulder + rng.uniform(-1.1, 1.1, (200_000, 3)) * arm.params.reach_outer
+    p = arm.shoulder + rng.uniform(-1.1, 1.1, (200_000, 3)) * arm.geometry["reach_outer"]
     ref, got = arm.solve(p, "all"), arm.solve(p, backend="compiled")
     assert_same_solutions(ref, got)
     # the sample really exercises every status
@@ -127,7 +127,7 @@ def test_compiled_solve_tolerance_is_passed_through(arm, tol):
 
 
 def test_compiled_solve_other_arm_and_shapes(arm, rng):
-    other = type(arm)(arm.params.with_(L1=100.0, L2=150.0, L3=420.0))  # L3 > L2
+    other = arm.with_(L1=100.0, L2=150.0, L3=420.0)  # L3 > L2
     p = other.shoulder + rng.uniform(-600, 600, (5, 7, 3))
     ref, got = other.solve(p, "all"), other.solve(p, backend="compiled")
     assert got.theta.shape == (5, 7, 4, 3) and got.status.shape == (5, 7)
@@ -154,7 +154,7 @@ def test_compiled_solve_rejects_bad_input(arm):
 def test_fk_equals_arm_fk_and_pinocchio(arm, rng):
     q = rng.uniform(-2 * np.pi, 2 * np.pi, (100_000, 3))
     np.testing.assert_allclose(compiled.fk(arm, q), arm.fk(q), rtol=0, atol=MM_TOL)
-    pin = PinocchioArm(arm.params.dh_table())
+    pin = PinocchioArm(arm.dh_table())
     np.testing.assert_allclose(compiled.fk(arm, q[:200]), pin.fk(q[:200]), rtol=0, atol=MM_TOL)
     assert compiled.fk(arm, q.reshape(10, 10_000, 3)).shape == (10, 10_000, 3)
     with pytest.raises(ValueError, match="shape"):
@@ -210,7 +210,7 @@ def test_atan2_acos_helpers_match_libm():
 def test_quantization_map_equals_numpy_pipeline(arm, rng):
     """The compiled rounding kernel (analysis.studies.quantization.rounding_body) equals the
     same body run with numpy and the separate numpy functions (solve, pulses, fk)."""
-    p = arm.shoulder + rng.uniform(-1.05, 1.05, (100_000, 3)) * arm.params.reach_outer
+    p = arm.shoulder + rng.uniform(-1.05, 1.05, (100_000, 3)) * arm.geometry["reach_outer"]
     p = np.concatenate([p, boundary_targets(arm)])
     for ppr in ((4000, 4000, 4000), (200, 1600, 25600)):
         err, c, ok = Q.quantization_map(arm, p, pulses_per_rev=ppr)

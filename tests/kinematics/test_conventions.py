@@ -43,7 +43,7 @@ def test_the_fold_keeps_every_count_continuous_but_at_the_wrap_cut(azimuth, elev
     """Across |P - shoulder| = L2 - L3 no count jumps; theta3 stays on its branch's side.
 
     (The fold once gave theta3 = +pi on one side and -pi 1e-7 mm away: c3 +2000 / -2000.)"""
-    D = ARM.params.reach_inner + FOLD_STEPS  # from just inside (within tol) outwards
+    D = ARM.geometry["reach_inner"] + FOLD_STEPS  # from just inside (within tol) outwards
     p = ARM.shoulder + D[:, None] * _direction(azimuth, elevation)
     sol = ARM.solve(p)
     assert (sol.status == Status.OK).all(), (sol.status, D)

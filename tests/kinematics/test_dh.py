@@ -18,6 +18,7 @@ import numpy as np
 import pytest
 import sympy as sp
 
+from analysis.kinematics.arm import paper_arm
 from analysis.kinematics.dh import (
     DHRow,
     DHTable,
@@ -178,7 +179,7 @@ def test_inverse_transform(rng, convention):
 
 
 def paper_symbolic_transforms():
-    table = paper_params().dh_table(symbolic=True)
+    table = paper_arm().dh_table(symbolic=True)
     A = table.transforms_sym((th1, th2, th3))
     return table, A
 
@@ -208,7 +209,7 @@ def test_paper_A_i_numeric_matches_printed(rng):
     """Numeric transforms and inverse_transform against the printed matrices evaluated at
     Table 3's lengths and random angles."""
     P = paper_params()
-    table = P.dh_table()
+    table = paper_arm().dh_table()
     q = rng.uniform(-np.pi, np.pi, (50, 3))
     A = table.transforms(q)
     subs_len = {L1: P.L1, L2: P.L2, L3: P.L3}
@@ -285,7 +286,7 @@ def test_palletizer_description_matches_seed001_printed_matrices(rng):
 
 
 def test_table_fk_shapes_and_product(rng):
-    table = paper_params().dh_table()
+    table = paper_arm().dh_table()
     q = rng.uniform(-np.pi, np.pi, (4, 5, 3))
     T = table.fk(q)
     assert T.shape == (4, 5, 4, 4)
@@ -325,9 +326,9 @@ def test_theta_offsets_and_fixed_rows(rng):
 
 def test_transforms_sym_exact_twist():
     """With exact=True a 90 deg twist gives exact 0 and 1 (no 6.1e-17 residue)."""
-    A1 = paper_params().dh_table().transforms_sym()[0]
+    A1 = paper_arm().dh_table().transforms_sym()[0]
     assert A1[2, 1] == 1 and A1[2, 2] == 0 and A1[0, 1] == 0
-    A1_float = paper_params().dh_table().transforms_sym(exact=False)[0]
+    A1_float = paper_arm().dh_table().transforms_sym(exact=False)[0]
     assert A1_float[2, 2] != 0  # cos(pi/2) in floating point: shows why exact is the default
 
 
@@ -344,7 +345,7 @@ def test_unknown_convention():
 
 
 def test_wrong_joint_count():
-    table = paper_params().dh_table()
+    table = paper_arm().dh_table()
     for q in ([0.1, 0.2], [0.1, 0.2, 0.3, 0.4], np.zeros((5, 2)), 0.3):
         with pytest.raises(ValueError, match=r"expected \(\.\.\., 3\)"):
             table.fk(q)

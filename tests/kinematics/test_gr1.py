@@ -314,7 +314,7 @@ def test_refusals_and_messages(arm):
     # inside the inner reach: only with a2 != a3
     # (100, 0, 0) mm with the approach vector down: the front wrist 27 mm from the shoulder,
     # inside |a2 - a3| = 128 mm; the back wrist 173 mm out: the back branches solve it
-    short = type(arm)(arm.params.with_(a3=100.0))
+    short = arm.with_(a3=100.0)
     pose = [100.0, 0.0, 0.0, 0.0, 0.0, np.pi]
     assert short.solve(pose, ["front-up"], limits=False).status == Status.INSIDE_REACH
     with pytest.raises(UnreachableError, match=r"inside the inner reach of 128 mm"):
@@ -345,9 +345,9 @@ def test_bad_input(arm):
     with pytest.raises(ValueError, match="non-finite"):
         arm.solve([[1.0, 2.0, 3.0, np.nan, 0.0, 0.0]])
     with pytest.raises(ValueError, match="link lengths"):
-        arm.params.with_(a2=0.0)
+        arm.with_(a2=0.0)
     with pytest.raises(ValueError, match="hand length"):
-        arm.params.with_(a4=-1.0)
+        arm.with_(a4=-1.0)
     with pytest.raises(ValueError, match="tol"):
         arm.solve(thesis_poses(), tol=-1.0)
 

@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 
 from analysis.app.cli import main
-from analysis.kinematics.arm import Arm, Status, load_arm
+from analysis.kinematics.arm import Status, load_arm
 from analysis.kinematics.description import load_description
 
 ARM = load_arm("palletizer")
@@ -100,7 +100,7 @@ def test_ik_names_the_stop_and_the_cli_exits_2(capsys):
 
 def test_other_lengths_move_the_stop_with_them(rng):
     """Lengths are parameters: with L2 = 150 mm the stop is at sqrt(200^2 + 150^2) = 250 mm."""
-    arm = Arm(ARM.params.with_(L2=150.0))
+    arm = ARM.with_(L2=150.0)
     stop = math.hypot(200.0, 150.0)
     d = np.array([stop - 0.5, stop + 0.5])
     g = np.array([[L3 + dd, 0.0, -H] for dd in d])  # wrist level with the shoulder

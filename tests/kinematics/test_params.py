@@ -1,5 +1,6 @@
-"""analysis.kinematics.params: the paper's Table 3 read from data/table3.csv, and parameter
-checks."""
+"""analysis.kinematics.params: an arm's numbers (Params), the paper's Table 3 read from
+data/table3.csv, and the parameter checks (analysis.validate's, the closed form's when the arm
+takes them: Arm.with_)."""
 
 from __future__ import annotations
 
@@ -10,7 +11,13 @@ import pandas as pd
 import pytest
 import sympy as sp
 
-from analysis.kinematics.params import ArmParams, data_dir, load_table3, paper_params
+from analysis.kinematics.arm import paper_arm
+from analysis.kinematics.params import ArmParams, Params, data_dir, load_table3, paper_params
+
+
+def _arm(P: Params):
+    """The paper's arm with the numbers ``P`` (what ``--params`` does)."""
+    return paper_arm().with_(**P, pulses_per_rev=P.pulses_per_rev)
 
 
 def test_table3_values():
@@ -24,30 +31,41 @@ def test_table3_values():
     for ppr, res in zip(P.pulses_per_rev, P.resolution_deg, strict=True):
         assert math.isclose(360.0 / ppr, res, abs_tol=1e-12)
     assert paper_params() == P
-    assert (P.reach_outer, P.reach_inner) == (510.0, 110.0)
+    geo = paper_arm().geometry
+    assert (geo["reach_outer"], geo["reach_inner"]) == (510.0, 110.0)
+
+
+def test_params_are_numbers():
+    """Params holds numbers only: no description, no closed form, no geometry."""
+    P = paper_params()
+    assert dict(P) == {"L1": 660.0, "L2": 310.0, "L3": 200.0}
+    with pytest.raises(AttributeError, match="no parameter 'reach_outer'"):
+        _ = P.reach_outer
+    with pytest.raises(ValueError, match=r"unknown parameter\(s\) \['L4'\]"):
+        P.with_(L4=1.0)
 
 
 def test_dh_table_numeric_and_symbolic():
-    P = paper_params()
-    table = P.dh_table()
+    arm = paper_arm()
+    table = arm.dh_table()
     assert table.convention == "standard" and table.n_joints == 3
     assert [(r.a, r.d) for r in table.rows] == [(0.0, 660.0), (310.0, 0.0), (200.0, 0.0)]
     assert [r.alpha for r in table.rows] == [math.pi / 2, 0.0, 0.0]
-    sym = P.dh_table(symbolic=True)
+    sym = arm.dh_table(symbolic=True)
     assert sym.rows[0].alpha == sp.pi / 2
     assert {str(sym.rows[0].d), str(sym.rows[1].a), str(sym.rows[2].a)} == {"L1", "L2", "L3"}
     assert all(v.is_positive for v in (sym.rows[0].d, sym.rows[1].a, sym.rows[2].a))
 
 
 def test_reach_inner_when_forearm_is_longer():
-    assert ArmParams(L1=0.0, L2=100.0, L3=250.0).reach_inner == 150.0
+    assert _arm(ArmParams(L1=0.0, L2=100.0, L3=250.0)).geometry["reach_inner"] == 150.0
 
 
 def test_with_revalidates():
     P = paper_params()
     assert P.with_(L2=400.0).L2 == 400.0 and P.with_(L2=400.0).L3 == P.L3
     with pytest.raises(ValueError, match="L3 = 0"):
-        P.with_(L3=0.0)
+        paper_arm().with_(L3=0.0)
 
 
 def test_data_dir_env_override(tmp_path, monkeypatch):
@@ -88,7 +106,7 @@ def test_data_dir_env_override(tmp_path, monkeypatch):
 def test_invalid_params_name_the_value(changes, message):
     base = {"L1": 660.0, "L2": 310.0, "L3": 200.0}
     with pytest.raises(ValueError, match=message):
-        ArmParams(**{**base, **changes})
+        _arm(ArmParams(**{**base, **changes}))
 
 
 def test_numpy_scalars_are_accepted():
@@ -171,7 +189,7 @@ def test_bad_values_in_table3(table3, tmp_path, column, row, value, message):
     table3[column] = table3[column].astype(float)
     table3.loc[row, column] = value
     with pytest.raises(ValueError, match=message):
-        load_table3(_save(table3, tmp_path))
+        _arm(load_table3(_save(table3, tmp_path)))
 
 
 def test_text_in_a_number_column(table3, tmp_path):

@@ -11,9 +11,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from analysis.kinematics.arm import load_arm
+from analysis.kinematics.arm import load_arm, paper_arm
 from analysis.kinematics.dh import DHRow, DHTable
-from analysis.kinematics.params import paper_params
 from analysis.kinematics.pinocchio_model import PinocchioArm, build_model
 from helpers import assert_allclose, assert_points_close, assert_transform_close
 
@@ -45,7 +44,7 @@ def test_pinocchio_fk_and_placement_on_10000_configurations(rng, arm, which):
     """Pinocchio FK == analysis FK to 1e-9 mm on 10,000 seeded random configurations, for
     the paper's arm (Table 3, standard D-H) and seed 001's palletizer (modified D-H), and
     the whole base-to-tool placement (rotation too) agrees."""
-    table = paper_params().dh_table() if which == "paper" else palletizer()
+    table = paper_arm().dh_table() if which == "paper" else palletizer()
     pa = PinocchioArm(table)
     assert pa.model.nq == table.n_joints
     q = rng.uniform(-2 * np.pi, 2 * np.pi, (N_CONFIGS, table.n_joints))
@@ -58,7 +57,7 @@ def test_pinocchio_fk_and_placement_on_10000_configurations(rng, arm, which):
 
 @pytest.mark.parametrize("which", ["paper", "palletizer"])
 def test_pinocchio_jacobian(rng, arm, which):
-    table = paper_params().dh_table() if which == "paper" else palletizer()
+    table = paper_arm().dh_table() if which == "paper" else palletizer()
     pa = PinocchioArm(table)
     q = rng.uniform(-np.pi, np.pi, (1000, table.n_joints))
     J = pa.jacobian(q)
@@ -121,7 +120,7 @@ def test_fixed_row_first(rng, convention):
 
 
 def test_model_structure():
-    model = build_model(paper_params().dh_table())
+    model = build_model(paper_arm().dh_table())
     assert model.nq == 3 and model.nv == 3
     assert [model.names[i] for i in range(1, model.njoints)] == ["waist", "shoulder", "elbow"]
     assert [model.joints[i].shortname() for i in range(1, 4)] == ["JointModelRZ"] * 3
@@ -135,7 +134,7 @@ def test_no_revolute_row():
 
 @pytest.mark.parametrize("q", [[0.1, 0.2], np.zeros((4, 2)), np.zeros(6), 0.3])
 def test_bad_configuration_shapes(q):
-    pa = PinocchioArm(paper_params().dh_table())
+    pa = PinocchioArm(paper_arm().dh_table())
     for method in (pa.fk, pa.jacobian):
         with pytest.raises(ValueError, match=r"expected \(\.\.\., 3\)"):
             method(q)

@@ -17,7 +17,7 @@ from hypothesis import strategies as st
 
 from analysis.audit.papers.picker.poe_checks import dh_arm_names
 from analysis.kinematics import poe
-from analysis.kinematics.arm import load_arm
+from analysis.kinematics.arm import load_arm, paper_arm
 from analysis.kinematics.dh import DHTable
 from analysis.kinematics.params import paper_params
 from analysis.kinematics.pinocchio_model import PinocchioPOE, build_poe_model
@@ -161,7 +161,7 @@ def test_symbolic_poe_of_the_main_arm_equals_its_symbolic_dh_product():
     S = [[0, 0, 1, 0, 0, 0], [0, -1, 0, L1, 0, 0], [0, -1, 0, L1, 0, -L2]]
     M = [[1, 0, 0, L2 + L3], [0, 0, -1, 0], [0, 1, 0, L1], [0, 0, 0, 1]]
     q = sp.symbols("theta1:4", real=True)
-    A1, A2, A3 = paper_params().dh_table(symbolic=True).transforms_sym(q)
+    A1, A2, A3 = paper_arm().dh_table(symbolic=True).transforms_sym(q)
     diff = (poe.fk_sym(S, M, q) - A1 * A2 * A3).applyfunc(lambda e: sp.simplify(sp.expand_trig(e)))
     assert diff == sp.zeros(4, 4)
 
@@ -228,7 +228,7 @@ def test_poe_equals_dh_fk_for_every_dh_arm(rng, name):
 
 
 def test_screws_from_dh_of_table3_are_the_hand_derived_screws():
-    S, M = poe.screws_from_dh(paper_params().dh_table())
+    S, M = poe.screws_from_dh(paper_arm().dh_table())
     S_c, M_c = main_arm_screws()
     assert_allclose(S, S_c, 1e-12, "screws")
     assert_allclose(M, M_c, 1e-12, "M")

@@ -281,7 +281,7 @@ def test_readme_step_b_a_new_closed_form_in_the_package(data_copy, tmp_path, mon
         import sys
 
         sys.modules.pop("analysis.kinematics.arms.planar2r", None)
-        arms_pkg._load.cache_clear()
+        arms_pkg.from_module.cache_clear()
 
 
 # --------------------------------------------------------------------------------------------

@@ -8,6 +8,7 @@ import pandas as pd
 import pytest
 import sympy as sp
 
+from analysis.kinematics.arm import paper_arm
 from analysis.kinematics.params import data_dir
 from analysis.papers import grabber as paper
 
@@ -32,9 +33,8 @@ def test_parse_rejects_unknown_names_and_bad_syntax():
 
 def test_symbols_are_those_of_the_dh_table():
     """The printed items must use the very symbols the symbolic D-H table uses."""
-    from analysis.kinematics.params import paper_params
 
-    A1, _, _ = paper_params().dh_table(symbolic=True).transforms_sym()
+    A1, _, _ = paper_arm().dh_table(symbolic=True).transforms_sym()
     assert A1.free_symbols == {paper.SYMBOLS["theta1"], paper.SYMBOLS["L1"]}
 
 

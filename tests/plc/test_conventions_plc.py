@@ -79,8 +79,7 @@ def _unit(azimuth, elevation):
 def test_reach_spheres_same_status_and_counts_as_python(direction, sphere, branch, dialect):
     """Across the folded-elbow and stretched spheres: refused where Python refuses, and no
     count a revolution off (the fold once gave PLC -2000 where Python gave +2000)."""
-    P = ARM.params
-    radius = P.reach_inner if sphere == "inner" else P.reach_outer
+    radius = ARM.geometry["reach_inner" if sphere == "inner" else "reach_outer"]
     D = radius + np.array(OFFSETS)
     _check(ARM.shoulder + D[:, None] * _unit(*direction), branch, *dialect)
 

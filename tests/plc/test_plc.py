@@ -11,8 +11,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from analysis.kinematics.arm import BRANCHES, Arm, paper_arm
-from analysis.kinematics.params import paper_params
+from analysis.kinematics.arm import BRANCHES, paper_arm
 from analysis.plc.approx import acos_f32, atan2_f32, atan_coefficients, measure_errors
 from analysis.plc.emit import emit_s7200, fmt_real
 from analysis.plc.generate import generate
@@ -58,7 +57,7 @@ def test_golden_s7200_has_paper_structure():
 
 
 def test_no_link_length_typed_into_emitters():
-    p = Arm(paper_params().with_(L2=321.0, L3=123.0))
+    p = paper_arm().with_(L2=321.0, L3=123.0)
     text = emit_s7200(build_program(p))
     # the lengths come from the parameters: L2, L2 + L3 (the reach) and L2^2 + L3^2 (eq. 10)
     assert "321.0" in text and "444.0" in text and str(321.0**2 + 123.0**2) in text

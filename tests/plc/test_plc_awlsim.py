@@ -15,8 +15,7 @@ import json
 import numpy as np
 import pytest
 
-from analysis.kinematics.arm import BRANCHES, Arm
-from analysis.kinematics.params import paper_params
+from analysis.kinematics.arm import BRANCHES, paper_arm
 from analysis.plc.emit import emit_s7200, emit_s7300
 from analysis.plc.generate import generate
 from analysis.plc.ir import build_program
@@ -31,7 +30,7 @@ pytestmark = pytest.mark.slow  # seconds per test: run first (tests/conftest.py)
 
 pytest.importorskip("awlsim")
 SENTINEL = -999_999
-ARM = Arm(paper_params())
+ARM = paper_arm()
 
 
 def _source(variant: str, branch: str = "front-up", with_program: bool = False):

@@ -22,8 +22,7 @@ import json
 import numpy as np
 import pytest
 
-from analysis.kinematics.arm import Arm, load_arm
-from analysis.kinematics.params import paper_params
+from analysis.kinematics.arm import load_arm, paper_arm
 from analysis.plc.emit import emit_s7200, emit_s7300
 from analysis.plc.generate import generate
 from analysis.plc.ir import build_program
@@ -56,7 +55,7 @@ def _case(name, folder):
     """(arm, branch, S7-200 text, map, S7-300 program with the same ATAN2/ACOS or None), as
     the arm's awlsim test generates them."""
     if name == "grabber":
-        arm = Arm(paper_params())
+        arm = paper_arm()
         text = emit_s7200(build_program(arm, "front-up"))  # as test_plc_awlsim.py
         s7300 = emit_s7300(build_program(arm, "front-up", "subroutine"))
         return arm, "front-up", text, default_map("s7-200"), (s7300, default_map("s7-300"))

@@ -7,8 +7,8 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from analysis.kinematics.arm import Arm
-from analysis.kinematics.params import data_dir, paper_params
+from analysis.kinematics.arm import paper_arm
+from analysis.kinematics.params import data_dir
 from analysis.studies import workspace as W
 
 
@@ -150,7 +150,7 @@ def test_workspace_maps_nan_exactly_where_unreachable(arm):
 
 
 def test_other_arm_geometry():
-    arm = Arm(paper_params().with_(L2=200.0, L3=310.0))  # links swapped: same shell
+    arm = paper_arm().with_(L2=200.0, L3=310.0)  # links swapped: same shell
     assert W.shell_volume(arm) == pytest.approx(4 / 3 * math.pi * (510.0**3 - 110.0**3))
 
 

@@ -14,7 +14,9 @@
 // homing uses; a motion FB's own Velocity/Acceleration/Jerk inputs reach the axis as they
 // are, i.e. per cycle: analysis.plc.st_engine explains where the program converts them),
 // set to `start` and left unpowered.
-// WRITES: ','-separated variables the stdin records may write (a scalar of PROGRAM's VAR).
+// WRITES: ','-separated variables the stdin records may write (a scalar of PROGRAM's VAR), or
+// "@K" for axis K's drive power-stage feedback (AxisModel::set_power_feedback: FALSE while
+// powered is an axis error, the drive's fault; TRUE restores it).
 // Each record on stdin is (int64 cycle, int64 index into WRITES, float64 value), little-
 // endian, in non-decreasing cycle order: it is stored before the scan of that cycle, the way
 // an HMI or a fieldbus writes a PLC's variables between two scans.
@@ -244,7 +246,19 @@ int main(int argc, char **argv)
     // the writable variables and the traced outputs
     const std::vector<std::string> writes = split(argv[6], ','), outs = split(argv[7], ',');
     std::vector<const st::VarInfo *> write_var;
+    std::vector<long> write_axis;  // -1: a variable; K: axis K's power feedback
     for(const std::string &n : writes) {
+        if(!n.empty() && n[0] == '@') {
+            const long k = std::strtol(n.c_str() + 1, nullptr, 10);
+            if(k < 0 || k >= static_cast<long>(axes.size())) {
+                std::fprintf(stderr, "%s: no such axis\n", n.c_str());
+                return 2;
+            }
+            write_var.push_back(nullptr);
+            write_axis.push_back(k);
+            continue;
+        }
+        write_axis.push_back(-1);
         const int i = vm.find(n.c_str());
         if(i < 0 || !writable(vm.variable(i)->type) || vm.variable(i)->constant) {
             std::fprintf(stderr, "%s is not a writable variable of %s\n", n.c_str(), name.c_str());
@@ -274,7 +288,10 @@ int main(int argc, char **argv)
                              static_cast<long long>(rec.index));
                 return 2;
             }
-            store(buffer, compiled.program, *write_var[rec.index], rec.value);
+            if(write_axis[rec.index] >= 0)
+                (void)axes[write_axis[rec.index]]->set_power_feedback(rec.value != 0.0);
+            else
+                store(buffer, compiled.program, *write_var[rec.index], rec.value);
             have = std::fread(&rec, sizeof(rec), 1, stdin) == 1;
         }
         for(std::size_t a = 0; a < n_axes; ++a) {

@@ -133,14 +133,15 @@ class _Progress:
 
 def _arm(args: argparse.Namespace):
     """The arm of ``--arm`` (and ``--params``: a Table 3 file for the paper's arm)."""
-    from analysis.kinematics.arm import Arm, load_arm
+    from analysis.kinematics.arm import load_arm
 
     if args.params:
         if args.arm != "grabber":
             raise UsageError("--params takes a Table 3 file: it applies to the paper's arm only")
         from analysis.kinematics.params import load_table3
 
-        return Arm(load_table3(args.params))
+        table3 = load_table3(args.params)
+        return load_arm("grabber").with_(**table3, pulses_per_rev=table3.pulses_per_rev)
     return load_arm(args.arm)
 
 

@@ -151,7 +151,7 @@ def _module(arm) -> str:
     return (
         "(function () {\n"
         f"// {arm.name}: printed by analysis.app.explore_js from the closed form "
-        f"'{arm.description.closed_form}' and the D-H chain of data/arms; do not edit\n"
+        f"'{arm.cf.name}' and the D-H chain of data/arms; do not edit\n"
         "const raw_solve = function (a) {\n" + graph_js(solve_graph(arm)) + "\n};\n"
         "const raw_frames = function (a) {\n" + graph_js(frames_graph(arm)) + "\n};\n"
         f"const arm = {json.dumps(meta, ensure_ascii=False)};\n"

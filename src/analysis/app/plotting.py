@@ -214,7 +214,7 @@ def plot_arm(
     ax.set_xlabel("x [mm]", labelpad=16)  # clear of the tick labels
     ax.set_ylabel("y [mm]", labelpad=16)
     ax.set_zlabel("z [mm]", labelpad=16)
-    reach = arm.params.reach_outer
+    reach = arm.geometry["reach_outer"]
     ax.set_xlim(-reach, reach)
     ax.set_ylim(-reach, reach)
     ax.set_zlim(0, arm.params.L1 + reach)

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from analysis.kinematics.loader import load_arm
 from analysis.paths import data_dir
 
 __all__ = ["arm_names", "describe_arm", "list_arms"]
@@ -19,10 +20,9 @@ def arm_names() -> tuple[str, ...]:
 def describe_arm(name: str | Path) -> dict:
     """One arm as plain data: ``name`` (what ``--arm`` takes: the file's stem), ``title,
     paper, joints`` (names), ``joint_units``, ``branches``, ``inputs``, ``parameters`` {name:
-    {value, unit, status}}; or ``name`` and ``error`` (the reason it does not load, one line)
+    {value, unit, status}} (an arm without a closed form: no branches, no inputs, and
+    ``no_ik``, the reason); or ``name`` and ``error`` (the reason it does not load, one line)
     if it does not."""
-    from analysis.kinematics.arm import load_arm
-
     stem = Path(str(name)).stem
     try:
         arm = load_arm(str(name))
@@ -35,12 +35,13 @@ def describe_arm(name: str | Path) -> dict:
         "paper": d.paper,
         "joints": list(arm.joint_names),
         "joint_units": list(arm.joint_units),
-        "branches": list(arm.branches),
-        "inputs": list(arm.inputs),
+        "branches": list(arm.branches) if arm.closed_form else [],
+        "inputs": list(arm.inputs) if arm.closed_form else [],
         "parameters": {
             k: {"value": p.value, "unit": p.unit, "status": p.status}
             for k, p in d.parameters.items()
         },
+        **({} if arm.closed_form else {"no_ik": " ".join(arm.no_ik.split())}),
     }
 
 

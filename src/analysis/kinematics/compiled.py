@@ -40,10 +40,11 @@ import numpy as np
 import numpy.typing as npt
 
 from analysis.kinematics import pool
-from analysis.kinematics.arms import closed_form as load_cf
+from analysis.kinematics.forward import chain_points
 from analysis.kinematics.printing import INFIX, ExpressionPrinter
 from analysis.kinematics.solution import IKSolutions, as_points, solve_body
 from analysis.kinematics.trace import Graph, Node, TraceOps
+from analysis.validate import MAX_COORD_MM
 
 try:  # pragma: no cover - depends on the environment
     import numba  # noqa: F401
@@ -376,9 +377,10 @@ def build(fn, arrays, scalars, outputs: dict, primitives=()) -> Kernel:
 # inverse kinematics
 # --------------------------------------------------------------------------------------------
 @cache
-def ik_kernel(closed_form: str, params: tuple, names: tuple, limits: tuple) -> Kernel:
-    """The kernel of :func:`~analysis.kinematics.arm.solve_body` for one closed form."""
-    cf = load_cf(closed_form)
+def ik_kernel(cf, params: tuple, names: tuple, limits: tuple) -> Kernel:
+    """The kernel of :func:`~analysis.kinematics.solution.solve_body` for the closed form
+    ``cf`` (a :class:`~analysis.kinematics.arms.ClosedForm`, the arm's) and the parameter
+    names ``params`` (their values are the kernel's scalar inputs)."""
 
     def body(m, v):
         p = tuple(v[k] for k in cf.INPUTS)
@@ -435,8 +437,6 @@ def _storage(view: np.ndarray, shape: tuple) -> np.ndarray:
 def input_limits(units: Sequence[str]) -> np.ndarray:
     """Largest |input| per column (:mod:`analysis.validate`): coordinates [mm]; angles [rad]
     any finite value."""
-    from analysis.validate import MAX_COORD_MM
-
     return np.array([np.finfo(np.float64).max if u == "rad" else MAX_COORD_MM for u in units])
 
 
@@ -447,7 +447,7 @@ def solve(arm, p: npt.NDArray[np.float64], names, *, tol: float, limits, out=Non
     if not HAVE_NUMBA:  # pragma: no cover
         return arm.solve(p, names, tol=tol, limits=bool(limits))
     names = tuple(names)
-    kern = ik_kernel(arm.description.closed_form, tuple(arm.params), names, tuple(limits))
+    kern = ik_kernel(arm.cf, tuple(arm.params), names, tuple(limits))
     nj = arm.n_joints
     shape = p.shape[:-1]
     res = out if out is not None else allocate(nj, shape, names)
@@ -474,13 +474,10 @@ def solve(arm, p: npt.NDArray[np.float64], names, *, tol: float, limits, out=Non
 # forward kinematics
 # --------------------------------------------------------------------------------------------
 @cache
-def fk_kernel(description, params: tuple) -> Kernel:
-    """The kernel of the arm's end point (:func:`analysis.kinematics.arm.chain_points`: the
-    D-H chain, or the closed form's own FK for a closed chain)."""
-    from analysis.kinematics.arm import chain_points
-
+def fk_kernel(description, cf, params: tuple) -> Kernel:
+    """The kernel of the arm's end point (:func:`analysis.kinematics.forward.chain_points`:
+    the D-H chain, or the closed form ``cf``'s own FK for a closed chain)."""
     nq = len(description.joints)
-    cf = load_cf(description.closed_form)
 
     def body(m, v):
         P = {k: v[k] for k in params}
@@ -496,7 +493,7 @@ def fk(arm, q: npt.ArrayLike, out: npt.NDArray[np.float64] | None = None):
     q = arm._q(q)
     if not HAVE_NUMBA:  # pragma: no cover
         return arm.fk(q)
-    kern = fk_kernel(arm.description, tuple(arm.params))
+    kern = fk_kernel(arm.description, arm.closed_form, tuple(arm.params))
     shape = q.shape[:-1]
     n = int(np.prod(shape, dtype=np.int64))
     res = np.empty((3, n)) if out is None else _storage(out, (n, 3))

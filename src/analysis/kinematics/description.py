@@ -64,6 +64,7 @@ from analysis.kinematics.dh import DHRow, DHTable
 from analysis.paths import data_dir
 
 __all__ = [
+    "DERIVED",
     "HOME_MODES",
     "JOINT_KINDS",
     "MAX_PULSES_PER_REV",
@@ -84,6 +85,9 @@ printed: every figure and table that uses it says so), or measured (on the robot
 user's own arm)."""
 JOINT_KINDS = ("revolute", "prismatic")
 MAX_PULSES_PER_REV = validate.MAX_PULSES_PER_REV
+DERIVED = "derived"
+"""The ``closed_form`` of a description that asks for one derived from its rows (also what
+a missing ``closed_form`` means where there are rows)."""
 HOME_MODES = ("switch", "set")
 """How an axis is homed: "switch" (a reference switch is searched, MC_Home with a switch) or
 "set" (the present position is declared to be the home position)."""
@@ -501,12 +505,11 @@ def _load(name: str, tables: tuple, stamp: tuple) -> ArmDescription:
                 raise ValueError(
                     f"{path} joint {j.name}: kind {j.kind!r}, but its D-H row is {kind!r}"
                 )
-    # none named: derived from the D-H rows (a description without rows names its own)
-    cf_name = _text(d, "closed_form", path.name, "derived" if rows else path.stem)
+    # none named: derived from the D-H rows (a description without rows names its own);
+    # the loader (analysis.kinematics.loader) resolves it: a description is data
+    cf_name = _text(d, "closed_form", path.name, DERIVED if rows else path.stem)
     if not cf_name:
         raise ValueError(f"{path}: closed_form = {cf_name!r} must name a closed form")
-    if cf_name.endswith(".py"):  # a closed form kept next to the description
-        cf_name = str((path.parent / cf_name).resolve())
     convention = _text(d, "convention", path.name, "standard")
     if convention not in ("standard", "modified"):
         raise ValueError(f"{path.name}: convention {convention!r} is not 'standard' or 'modified'")
@@ -525,10 +528,6 @@ def _load(name: str, tables: tuple, stamp: tuple) -> ArmDescription:
     )
     if rows:
         desc.dh_table()  # every row resolves
-    if desc.closed_form == "derived":  # none named: derived from the rows where it can be
-        from analysis.kinematics.derive import attach
-
-        desc = attach(desc)
     return desc
 
 

@@ -1,4 +1,10 @@
-"""The paper's arm's numbers (seed 000): Table 3 as :class:`~analysis.kinematics.arm.Params`.
+"""An arm's numbers: :class:`Params` (parameter values [mm] and pulses per revolution), and
+the paper's arm's Table 3 (seed 000) read into them.
+
+:class:`Params` is plain numbers, checked by :mod:`analysis.validate` when built: no file is
+read, no closed form looked up, no geometry answered (the closed form's, on
+:attr:`analysis.kinematics.arm.Arm.geometry`). The loader
+(:func:`analysis.kinematics.loader.load_arm`) builds it from a description.
 
 The grabber's description (``data/arms/grabber.toml``) reads its lengths and pulses per
 revolution from ``data/table3.csv``, the paper's Table 3 verbatim. :func:`load_table3`
@@ -9,14 +15,87 @@ needs, and :func:`ArmParams` builds the grabber's parameters from numbers.
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
+from dataclasses import dataclass, field
 from functools import cache
 from pathlib import Path
 
-from analysis.kinematics.arm import Params
-from analysis.kinematics.description import load_description
+from analysis import validate
 from analysis.paths import data_dir
 
-__all__ = ["ArmParams", "data_dir", "load_table3", "paper_params"]
+__all__ = ["ArmParams", "Params", "data_dir", "load_table3", "paper_params"]
+
+
+@dataclass(frozen=True)
+class Params(Mapping):
+    """The numbers of one arm: parameter values [mm] by name and pulses per revolution per
+    joint, checked by :mod:`analysis.validate` (lengths within its range, whole pulses).
+
+    A read-only mapping of parameter names to values, which also allows attribute access to
+    them (``P.L1``) and to the informational items of ``extra``.
+
+    >>> P = Params({"L1": 660, "L2": 310.0}, (4000, 4000))
+    >>> P.L1, dict(P.with_(L2=300))
+    (660.0, {'L1': 660.0, 'L2': 300.0})
+    """
+
+    data: Mapping[str, float]
+    pulses_per_rev: tuple[int, ...]
+    extra: Mapping = field(default_factory=dict, compare=False)
+    """Informational items of the paper's tables (e.g. Table 3's step angles)."""
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.data, Mapping):
+            raise ValueError(f"parameters {self.data!r} must map names to lengths [mm]")
+        vals = {}
+        for k, v in dict(self.data).items():
+            if not isinstance(k, str):
+                raise ValueError(f"parameter name {k!r} is not text")
+            vals[k] = validate.length_mm(v, k)  # real, finite, in the supported range
+        object.__setattr__(self, "data", vals)
+        ppr = self.pulses_per_rev
+        if hasattr(ppr, "tolist"):
+            ppr = ppr.tolist()
+        try:
+            if not isinstance(ppr, (list, tuple)) or not ppr:
+                raise ValueError
+            ppr = tuple(validate.pulses_per_rev(v, "pulses_per_rev") for v in ppr)
+        except ValueError:
+            raise ValueError(
+                f"pulses_per_rev = {self.pulses_per_rev!r}: need whole numbers in "
+                f"1 .. {validate.MAX_PULSES_PER_REV:,}, one per joint"
+            ) from None
+        object.__setattr__(self, "pulses_per_rev", ppr)
+
+    def __getitem__(self, key: str) -> float:
+        return self.data[key]
+
+    def __iter__(self):
+        return iter(self.data)
+
+    def __len__(self) -> int:
+        return len(self.data)
+
+    def __getattr__(self, name: str):
+        if name.startswith("_") or name in ("data", "pulses_per_rev", "extra"):
+            raise AttributeError(name)
+        if name in self.data:
+            return self.data[name]
+        if name in self.extra:
+            return self.extra[name]
+        raise AttributeError(f"no parameter {name!r} (parameters: {', '.join(self.data)})")
+
+    def with_(self, **changes) -> Params:
+        """A copy with some values (or ``pulses_per_rev``) changed, checked again; a name
+        that is not a parameter is refused."""
+        ppr = changes.pop("pulses_per_rev", self.pulses_per_rev)
+        unknown = sorted(set(changes) - set(self.data))
+        if unknown:
+            raise ValueError(
+                f"unknown parameter(s) {unknown}; the parameters are {', '.join(self.data)}"
+            )
+        return Params({**self.data, **changes}, ppr, self.extra)
+
 
 TABLE3_COLUMNS = (
     "link",
@@ -43,12 +122,11 @@ def ArmParams(
 
     ``step_angle_deg`` and ``resolution_deg`` are Table 3's informational columns.
     """
-    desc = load_description("grabber")
     extra = {
         "step_angle_deg": tuple(float(v) for v in step_angle_deg),
         "resolution_deg": tuple(float(v) for v in resolution_deg),
     }
-    return Params("grabber", {"L1": L1, "L2": L2, "L3": L3}, pulses_per_rev, desc, extra)
+    return Params({"L1": L1, "L2": L2, "L3": L3}, pulses_per_rev, extra)
 
 
 def load_table3(path: str | Path | None = None) -> Params:
@@ -74,8 +152,6 @@ def _load_table3(path: Path, mtime_ns: int, size: int) -> Params:
     batch CSV's): an empty cell, ``nan``, ``inf`` or ``1_000`` is refused, naming the line
     and the column."""
     import csv
-
-    from analysis import validate
 
     try:
         with path.open(newline="", encoding="utf-8-sig") as fh:

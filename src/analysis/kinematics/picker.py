@@ -36,8 +36,9 @@ from analysis.kinematics import poe
 from analysis.kinematics.arms import picker as cf
 from analysis.kinematics.arms.picker import ACTIVE, PASSIVE
 from analysis.kinematics.description import STATUSES, load_description
+from analysis.kinematics.loader import load_arm
 from analysis.kinematics.ops import numpy_ops
-from analysis.kinematics.params import data_dir
+from analysis.paths import data_dir
 
 __all__ = [
     "ACTIVE",
@@ -193,11 +194,8 @@ class Picker:
     def arm(self):
         """The picker as an :class:`~analysis.kinematics.arm.Arm` with these lengths (the
         closed-form IK needs the pantograph proportion: ValueError otherwise)."""
-        from analysis.kinematics.arm import Arm, Params
-
-        base = Params.from_description(load_description("picker"))
-        values = {k: self.params[k] for k in base.data}
-        return Arm(base.with_(**values))
+        base = load_arm("picker")
+        return base.with_(**{k: self.params[k] for k in base.params})
 
     # ----------------------------------------------------------------------- screws
     def open_chain(self) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:

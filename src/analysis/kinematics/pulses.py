@@ -17,8 +17,8 @@ from typing import Literal
 import numpy as np
 import numpy.typing as npt
 
-from analysis.kinematics.description import MAX_PULSES_PER_REV
 from analysis.kinematics.ops import NumpyOps, numpy_ops
+from analysis.validate import MAX_PULSES_PER_REV
 
 __all__ = [
     "DINT_MAX",
@@ -26,6 +26,7 @@ __all__ = [
     "pulse_angle",
     "pulse_count",
     "pulse_value",
+    "pulse_values",
     "pulses_to_angles",
     "round_half_away",
 ]
@@ -75,6 +76,15 @@ def _per_joint(fn, values, ppr, lead_mm):
         prismatic, fn(numpy_ops, values, ppr, np.where(prismatic, lead, 1.0)),
         fn(numpy_ops, values, ppr),
     )  # fmt: skip
+
+
+def pulse_values(
+    q: npt.ArrayLike, pulses_per_rev: npt.ArrayLike, *, lead_mm: npt.ArrayLike | None = None
+) -> npt.NDArray[np.float64]:
+    """Unrounded pulse counts (..., n) for joint values (..., n) [rad | mm]: eqs. 20-22 per
+    revolute joint, ``q / lead * ppr`` per prismatic one (``lead_mm`` finite there)."""
+    q = np.asarray(q, dtype=float)
+    return _per_joint(pulse_value, q, np.asarray(pulses_per_rev, dtype=float), lead_mm)
 
 
 def round_half_away(x: npt.ArrayLike) -> npt.NDArray[np.float64]:

@@ -34,8 +34,11 @@ __all__ = [
     "UnreachableError",
     "as_points",
     "check_joints",
+    "check_theta1_on_axis",
     "check_tol",
+    "collect",
     "decision_tol",
+    "raise_refusal",
     "refusal_options",
     "solve_body",
     "status_of",
@@ -286,7 +289,7 @@ def decision_tol(m: Ops, cf, p, P, tol):
     records it; ``tol`` may be one of its values).
 
     >>> from analysis.kinematics.ops import numpy_ops
-    >>> from analysis.kinematics.arm import paper_arm
+    >>> from analysis.kinematics.loader import paper_arm
     >>> arm = paper_arm()
     >>> t = decision_tol(numpy_ops, arm.closed_form, (100.0, 100.0, 600.0), arm.params, 1e-6)
     >>> 0 < 1e-6 - float(t) < 1e-10
@@ -386,6 +389,55 @@ def solve_body(
     return out
 
 
-# --------------------------------------------------------------------------------------------
-# the arm
-# --------------------------------------------------------------------------------------------
+def collect(r: dict, names: Sequence[str], shape: tuple, n_joints: int) -> IKSolutions:
+    """The numpy solver body's output ``r`` (:func:`solve_body`) for targets of ``shape``
+    as an :class:`IKSolutions` (every array broadcast to the targets' shape)."""
+    theta = np.stack(
+        [np.stack([np.broadcast_to(r[f"q:{b}:{j}"], shape) for j in range(n_joints)], -1)
+         for b in names], axis=-2,
+    ).astype(float)  # fmt: skip
+    ok = np.stack([np.broadcast_to(r[f"ok:{b}"], shape) for b in names], axis=-1)
+    status = np.broadcast_to(r["status"], shape).astype(np.int8)
+    outside = np.broadcast_to(r["outside"], shape).astype(float)
+    branch_status = np.stack(
+        [np.broadcast_to(r[f"status:{b}"], shape) for b in names], axis=-1
+    ).astype(np.int8)
+    return IKSolutions(theta, ok.copy(), status, outside, tuple(names), branch_status)
+
+
+def raise_refusal(cf, arm: str, P, p, status: int, outside: float, *, tol: float) -> None:
+    """Raise the error that ``status`` means for target ``p`` of arm ``arm`` (closed form
+    ``cf``, parameters ``P``): nothing if OK, :class:`UnreachableError`,
+    :class:`BaseAxisError`, :class:`OrientationError` or ValueError with the closed form's
+    one-line reason (``refusal``)."""
+    status = Status(status)
+    if status == Status.OK:
+        return
+    if status == Status.JOINT_LIMITS:
+        values = ", ".join(
+            f"{name} = {math.degrees(v) if u == 'rad' else v:g} {'deg' if u == 'rad' else u}"
+            for name, v, u in zip(cf.inputs, map(float, p), cf.input_units, strict=True)
+        )
+        raise ValueError(
+            f"target ({values}) is reachable, but no requested branch is within the joint "
+            f"limits of {arm}"
+        )
+    message, limit = cf.refusal(status, p, P, tol=tol, distance=outside)
+    if status in (Status.OUT_OF_REACH, Status.INSIDE_REACH):
+        raise UnreachableError(message, p, outside, limit, status)
+    if status == Status.BASE_AXIS:
+        raise BaseAxisError(message, p)
+    if status == Status.ORIENTATION:
+        raise OrientationError(message, p)
+    raise ValueError(message)
+
+
+def check_theta1_on_axis(value) -> float | npt.NDArray[np.float64]:
+    """The waist angle for targets on the base axis [rad]: real, finite, within ten turns
+    (:func:`analysis.validate.angle_rad`), wrapped to (-pi, pi] (the README's convention)."""
+    if np.ndim(value) == 0 and not isinstance(value, np.ma.MaskedArray):
+        return validate.wrap_rad(validate.angle_rad(value, "theta1_on_axis"))
+    arr = validate.real_array(value, "theta1_on_axis")
+    if arr.size and np.abs(arr).max() > validate.MAX_ANGLE_RAD:
+        validate.angle_rad(float(arr.flat[np.abs(arr).argmax()]), "theta1_on_axis")
+    return validate.wrap_rad(arr)

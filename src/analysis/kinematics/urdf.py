@@ -39,7 +39,6 @@ is the check (``tests/kinematics/test_urdf.py``).
 from __future__ import annotations
 
 import math
-import tomllib
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -47,6 +46,9 @@ from pathlib import Path
 import numpy as np
 
 from analysis.kinematics.dh import exact_cos_sin
+from analysis.kinematics.loader import load_arm
+from analysis.kinematics.model import Arm
+from analysis.kinematics.picker import load_picker
 from analysis.kinematics.rpy import rpy_from_matrix
 
 __all__ = [
@@ -300,9 +302,8 @@ def screw_joints(
     return links, joints, parent, frame
 
 
-def _picker_urdf(path: Path) -> str:
-    from analysis.kinematics.picker import load_picker
-
+def _picker_urdf(desc) -> str:
+    path = desc.path
     pk = load_picker(path)
     p = pk.params
     S, M = pk.open_chain()
@@ -368,7 +369,6 @@ def _picker_urdf(path: Path) -> str:
         f"{q.note}"
         for q in p.parameters.values()
     ]
-    d = tomllib.loads(path.read_text(encoding="utf-8"))
     extra = [
         "CLOSED CHAIN exported as its open-chain equivalent: URDF holds trees only. The loop "
         "is cut at the wrist base F': closure_main (main chain) and closure_secondary (the "
@@ -380,8 +380,8 @@ def _picker_urdf(path: Path) -> str:
     ]
     desc_like = {
         "name": "picker",
-        "title": d.get("title", "2P4R camellia-fruit picker (seed 002)"),
-        "paper": d.get("paper", "seed 002: Yang, Li, Gao 2016"),
+        "title": desc.title,
+        "paper": desc.paper,
         "parameters": statuses,
     }
     return to_xml("picker", _header(desc_like, path, extra), [*links, *tree], joints)
@@ -399,41 +399,23 @@ def _home(S: np.ndarray) -> np.ndarray:
 
 
 # --------------------------------------------------------------------------- dispatch
-def _resolve(name: str) -> Path:
-    from analysis.paths import data_dir
-
-    path = Path(name) if str(name).endswith(".toml") else data_dir() / "arms" / f"{name}.toml"
-    if not path.is_file():
-        known = sorted(p.stem for p in (data_dir() / "arms").glob("*.toml"))
-        raise ValueError(f"no arm {name!r}: expected one of {', '.join(known)} or a .toml path")
-    return path
-
-
-def arm_urdf(name: str) -> str:
-    """The URDF text of arm ``name`` (a name in ``data/arms`` or a description's path)."""
-    from analysis.kinematics.description import load_description
-
-    path = _resolve(name)
-    try:
-        d = tomllib.loads(path.read_text(encoding="utf-8"))
-    except tomllib.TOMLDecodeError as exc:
-        raise ValueError(f"{path}: not valid TOML ({exc})") from None
-    if not d.get("rows") and "vertical_guide" in {**d.get("parameters", {}), **d.get("axes", {})}:
-        return _picker_urdf(path)  # the closed chain (its guides: parameters, or [axes])
-    desc = load_description(str(path))
+def arm_urdf(arm: Arm | str | Path) -> str:
+    """The URDF text of an arm (an :class:`~analysis.kinematics.model.Arm`, or a name in
+    ``data/arms`` or a description's path, loaded by :func:`~analysis.kinematics.loader.
+    load_arm`)."""
+    if not isinstance(arm, Arm):
+        arm = load_arm(arm)
+    desc = arm.description
+    if not desc.has_rows and "vertical_guide" in {**desc.parameters, **desc.axes}:
+        return _picker_urdf(desc)  # the closed chain (its guides: parameters, or [axes])
     links, joints = dh_joints(desc)
-    try:
-        from analysis.kinematics.arms import closed_form
-
-        cf = closed_form(desc.closed_form)
-        how = getattr(cf, "family", None)
-        route = (
-            f"closed form derived from these rows ({how} family)"
-            if how
-            else f"hand-written closed form analysis.kinematics.arms.{desc.closed_form}"
-        )
-    except ValueError as exc:
-        route = f"no closed form ({' '.join(str(exc).split())})"
+    cf = arm.closed_form
+    if cf is None:
+        route = f"no closed form ({' '.join(arm.no_ik.split())})"
+    elif getattr(cf, "family", None):
+        route = f"closed form derived from these rows ({cf.family} family)"
+    else:
+        route = f"hand-written closed form analysis.kinematics.arms.{desc.closed_form}"
     extra = [f"{desc.convention} D-H ({len(desc.joints)} joints); IK in this project: {route}"]
     desc_like = {
         "name": desc.name,
@@ -441,7 +423,7 @@ def arm_urdf(name: str) -> str:
         "paper": desc.paper,
         "parameters": _param_lines(desc),
     }
-    return to_xml(_slug(desc.name, "arm"), _header(desc_like, path, extra), links, joints)
+    return to_xml(_slug(desc.name, "arm"), _header(desc_like, desc.path, extra), links, joints)
 
 
 def pinocchio_configuration(model, names, q) -> np.ndarray:

@@ -252,6 +252,8 @@ class StPrinter(PlcPrinter):
             f"{t}{self.comment(f'refused: {Status(code).text}; c1..cn keep their values')}",
             f"{t}{self.assign('status', str(code))}",
             f"{t}{self.assign('reachable', 'FALSE')}",
+            f"{t}{self.assign('Error', 'TRUE')}",
+            f"{t}{self.assign('ErrorID', str(code))}",
             f"{t}RETURN;",
         ]
 
@@ -272,7 +274,26 @@ class StPrinter(PlcPrinter):
         ]
 
     def _print_accept(self, i: Instr) -> list[str]:
-        return [self.assign("status", "0"), self.assign("reachable", "TRUE")]
+        return [self.assign("status", "0"), self.assign("reachable", "TRUE"),
+                self.assign("Done", "TRUE")]  # fmt: skip
+
+    def execute(self) -> list[str]:
+        """PLCopen's Execute/Done/Busy/Error/ErrorID: the target is solved once, on Execute's
+        rising edge; the outputs hold while Execute stays TRUE and clear when it falls (Busy
+        is never TRUE: the block answers within its call)."""
+        t, a = self.indent, self.assign
+        return [
+            self.comment("PLCopen Execute: solved on the rising edge; Done or Error (ErrorID = "
+                         "status) hold while Execute is TRUE, cleared when it falls"),
+            f"IF NOT {self.var('Execute')} THEN",
+            *(f"{t}{x}" for x in (a("Done", "FALSE"), a("Busy", "FALSE"), a("Error", "FALSE"),
+                                  a("ErrorID", "0"), a("ExecuteSeen", "FALSE"), "RETURN;")),
+            "END_IF;",
+            f"IF {self.var('ExecuteSeen')} THEN",
+            f"{t}RETURN;",
+            "END_IF;",
+            a("ExecuteSeen", "TRUE"),
+        ]  # fmt: skip
 
     # --- blocks -------------------------------------------------------------------------------
     def body(self, code) -> list[str]:
@@ -310,15 +331,22 @@ class StPrinter(PlcPrinter):
         """The IK function block: the program's I/O as its interface, the work values its
         static variables."""
         codes = sorted({int(i.args[1]) for i in program.body if i.op in ("refuse", "notfinite")})
-        self.declare([*program.inputs, *program.outputs, "reachable", "status", *program.work])
-        ins = tuple(
+        plc = ("Execute", "Done", "Busy", "Error", "ErrorID", "ExecuteSeen")
+        self.declare([*plc, *program.inputs, *program.outputs, "reachable", "status",
+                      *program.work])  # fmt: skip
+        ins = self.decls(["Execute"], "BOOL", "rising edge: solve the target")
+        ins += tuple(
             Decl(n, self.ident(n), "REAL", u) for n, u in zip(program.inputs, units, strict=True)
         )
-        outs = self.decls(program.outputs, "DINT", self.count_note)
+        outs = self.decls(["Done", "Busy", "Error"], "BOOL")
+        outs += self.decls(["ErrorID"], "DINT", "the status of a refused target")
+        outs += self.decls(program.outputs, "DINT", self.count_note)
         outs += self.decls(["reachable"], "BOOL", self.reachable_note)
         outs += self.decls(["status"], "DINT", self.status_note([0, *codes]))
-        sections = (("input", ins), ("output", outs), ("static", self.decls(program.work, "REAL")))
-        return Pou(fb, "functionBlock", program.title, sections, tuple(self.body(program.body)))
+        static = self.decls(["ExecuteSeen"], "BOOL") + self.decls(program.work, "REAL")
+        sections = (("input", ins), ("output", outs), ("static", static))
+        body = (*self.execute(), *self.body(program.body))
+        return Pou(fb, "functionBlock", program.title, sections, body)
 
     def pous(self, program: Program, fb: str, units) -> list[Pou]:
         """The program's blocks in order: its functions, then the IK function block."""

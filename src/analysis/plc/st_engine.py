@@ -41,6 +41,7 @@ from analysis.plc.runner import RunResult
 
 __all__ = [
     "ENGINE_ENV",
+    "POWER_OK",
     "EngineFault",
     "EngineMissing",
     "MachineRun",
@@ -104,15 +105,15 @@ def engine_path(check: bool = True) -> Path:
 
 def harness(fb: str, inputs, outputs, name: str = "ST_HARNESS") -> str:
     """A PROGRAM calling function block ``fb`` with its inputs (REAL) and copying its
-    outputs (``c1..cn`` DINT, ``reachable`` BOOL, ``status`` DINT) to its own variables."""
+    outputs (``c1..cn`` DINT, ``reachable`` BOOL, ``status`` DINT) to its own variables: every
+    scan a rising edge of the block's Execute (called with Execute FALSE, then TRUE)."""
     decl = [f"    {n} : REAL;" for n in inputs]
     decl += [f"    {n} : DINT;" for n in outputs]
     decl += ["    reachable : BOOL;", "    status : DINT;", f"    ik : {fb};"]
     call = ", ".join(f"{n} := {n}" for n in inputs)
     copy = [f"{n} := ik.{n};" for n in (*outputs, "reachable", "status")]
-    return "\n".join(
-        [f"PROGRAM {name}", "VAR", *decl, "END_VAR", f"ik({call});", *copy, "END_PROGRAM", ""]
-    )
+    body = [f"ik(Execute := FALSE, {call});", f"ik(Execute := TRUE, {call});", *copy]
+    return "\n".join([f"PROGRAM {name}", "VAR", *decl, "END_VAR", *body, "END_PROGRAM", ""])
 
 
 @dataclass(frozen=True)
@@ -236,6 +237,12 @@ class SimAxis:
                                                       self.start))])  # fmt: skip
 
 
+POWER_OK = "PowerOK"
+"""``<axis>.PowerOK`` in a machine run's writes: the axis' drive power-stage feedback
+(``AxisModel::set_power_feedback``): FALSE while powered is an axis error (a drive fault),
+TRUE restores it. Not a program variable: the simulated drive's own signal."""
+
+
 class EngineFault(ValueError):
     """A scan faulted (which fault, at which cycle); the trace up to it is kept."""
 
@@ -329,13 +336,17 @@ def run_machine(
 ) -> MachineRun:
     """Run PROGRAM ``program`` for ``n_cycles`` cycles of ``cycle_s`` with one simulated
     axis per :class:`SimAxis` in ``axes``; ``writes`` are ``(cycle, name, value)`` stored
-    before that cycle's scan (an HMI writing between scans); ``outputs`` the variables traced.
+    before that cycle's scan (an HMI writing between scans; ``<axis>.PowerOK``: the drive's
+    power feedback, :data:`POWER_OK`); ``outputs`` the variables traced.
     If the program declares :data:`TIME_UNIT_VARIABLE` or :data:`CYCLE_VARIABLE`, the cycle
     time [s] is written there before the first scan. Raises :class:`EngineFault` (with the
     trace so far) when a scan faults, ValueError when the program does not compile or a name
     is not its variable."""
     engine = engine or machine_engine_path()
     cycle_ns = round(cycle_s * 1e9)
+    axes = list(axes)
+    drive = {f"{a.name}.{POWER_OK}".lower(): f"@{k}" for k, a in enumerate(axes)}
+    writes = [(c, drive.get(n.lower(), n), v) for c, n, v in writes]
     names = sorted({n for _, n, _ in writes})
     rows = [(c, names.index(n), float(v)) for c, n, v in writes]
     variables = program_variables(source, program, engine)
@@ -348,7 +359,6 @@ def run_machine(
             rows.insert(0, (0, names.index(tu), cycle_ns * 1e-9))
     rows.sort(key=lambda r: r[0])
     data = np.array(rows, dtype=[("c", "<i8"), ("i", "<i8"), ("v", "<f8")]).tobytes()
-    axes = list(axes)
     cmd = [str(engine), "", program, str(cycle_ns), str(int(n_cycles)),
            ";".join(a.spec() for a in axes), ",".join(names), ",".join(outputs)]  # fmt: skip
 

@@ -198,9 +198,9 @@ def quantization_map(
 @cache
 def _rounding_kernel(name, description, params: tuple, branch: str):
     from analysis.kinematics import compiled
-    from analysis.kinematics.arm import Params
+    from analysis.kinematics.arm import arm_of
 
-    arm = Arm(Params.from_description(description))
+    arm = arm_of(description)
     n = arm.n_joints
     cf = arm.closed_form
 
@@ -359,7 +359,7 @@ def stats_by_length_scale(
     out = {}
     P = arm.params
     for f in factors:  # loop over settings
-        a = Arm(P.with_(L1=P.L1 * f, L2=P.L2 * f, L3=P.L3 * f))
+        a = arm.with_(L1=P.L1 * f, L2=P.L2 * f, L3=P.L3 * f)
         r = quantization_error(a, sample_shell(a, n, np.random.default_rng(seed)))
         out[float(f)] = error_stats(r.error_mm, r.ok)
     return out
@@ -388,8 +388,7 @@ def pulses_float32(
 
     p = as_points(p)
     if pulses_per_rev is not None:
-        ppr = tuple(int(v) for v in _ppr(arm, pulses_per_rev))
-        arm = type(arm)(arm.params.with_(pulses_per_rev=ppr))
+        arm = arm.with_(pulses_per_rev=tuple(int(v) for v in _ppr(arm, pulses_per_rev)))
     r = predict(arm, p.reshape(-1, 3), ops=Float32Ops())
     shape = p.shape[:-1]
     return r.computed.reshape(*shape, -1), r.theta.reshape(*shape, -1)

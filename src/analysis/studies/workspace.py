@@ -137,7 +137,7 @@ def shell_volume(arm: Arm) -> float:
 
     R = L2 + L3, r = |L2 - L3| (Table 3: 510 and 110 mm -> 5.500e8 mm^3 = 0.550 m^3).
     """
-    R, r = arm.params.reach_outer, arm.params.reach_inner
+    R, r = arm.geometry["reach_outer"], arm.geometry["reach_inner"]
     return 4.0 / 3.0 * math.pi * (R**3 - r**3)
 
 
@@ -145,7 +145,7 @@ def sample_box(arm: Arm, n: int, rng: np.random.Generator) -> npt.NDArray[np.flo
     """``n`` targets uniform in the cube of side 2 (L2 + L3) around the shoulder, (n, 3) [mm]."""
     if n <= 0:
         raise ValueError(f"n = {n} samples must be positive")
-    R = arm.params.reach_outer
+    R = arm.geometry["reach_outer"]
     return arm.shoulder + rng.uniform(-R, R, (int(n), 3))
 
 
@@ -157,7 +157,7 @@ def sample_shell(arm: Arm, n: int, rng: np.random.Generator) -> npt.NDArray[np.f
     """
     if n <= 0:
         raise ValueError(f"n = {n} samples must be positive")
-    R, r = arm.params.reach_outer, arm.params.reach_inner
+    R, r = arm.geometry["reach_outer"], arm.geometry["reach_inner"]
     u = rng.standard_normal((int(n), 3))
     u /= np.linalg.norm(u, axis=-1, keepdims=True)
     D = np.cbrt(r**3 + rng.uniform(0.0, 1.0, int(n)) * (R**3 - r**3))
@@ -202,7 +202,7 @@ def monte_carlo_volume(
         m = min(chunk, n - done)
         hits += int(reachable(arm, sample_box(arm, m, rng), limits).sum())
         done += m
-    box = (2.0 * arm.params.reach_outer) ** 3
+    box = (2.0 * arm.geometry["reach_outer"]) ** 3
     from statistics import NormalDist
 
     zq = NormalDist().inv_cdf(0.5 + confidence / 2.0)
@@ -249,7 +249,7 @@ def section_grid(
     """
     if n < 2:
         raise ValueError(f"n = {n} grid points per axis must be at least 2")
-    R = arm.params.reach_outer + margin_mm
+    R = arm.geometry["reach_outer"] + margin_mm
     L1 = arm.params.L1
     if plane == "xz":
         level = 0.0 if level_mm is None else float(level_mm)
@@ -274,7 +274,7 @@ def section_circles(arm: Arm, plane: str, level_mm: float) -> dict[str, float | 
     """Radii [mm] and centre of the shell's boundary circles (the stretched and folded
     singular sets) in a section: ``{"centre_u", "centre_v", "outer", "inner"}`` (None
     where the plane misses that sphere)."""
-    R, r, L1 = arm.params.reach_outer, arm.params.reach_inner, arm.params.L1
+    R, r, L1 = arm.geometry["reach_outer"], arm.geometry["reach_inner"], arm.params.L1
     if plane == "xz":
         off, cu, cv = abs(level_mm), 0.0, L1
     elif plane == "xy":

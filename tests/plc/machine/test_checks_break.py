@@ -46,7 +46,9 @@ BREAKS = {
     "aligned": ("move", "+ LREAL#0.75) * TaskCycle", "+ LREAL#0.0) * TaskCycle", "apart"),
     # half-cycle phases: the engine's correction quintic overshoots the goal and comes back
     "overshoot": ("move", "+ LREAL#0.75) * TaskCycle", "+ LREAL#0.5) * TaskCycle", "moved back"),
-    "refusal": ("unreachable", "IF NOT Ik.reachable THEN", "IF FALSE THEN", "Status"),
+    # an axis error not latched: the other axes carry on when a drive fails
+    "axis_error": ("axis_error", "IF Fault AND NOT FaultLatched THEN", "IF FALSE THEN", "Status"),
+    "refusal": ("unreachable", "IF Ik.Error THEN", "IF FALSE THEN", "Status"),
     "homed": ("power_home", "ELSIF NOT Homed THEN", "ELSIF FALSE THEN", "moved"),
     # the stop circuit watched only while the machine moves, and Reset clearing it whatever
     # the circuit says: after Reset, a Start goes with the wire still broken

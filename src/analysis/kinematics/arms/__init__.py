@@ -58,8 +58,9 @@ To add an arm: write its description (``data/arms/<name>.toml``, or a file anywh
 either name an existing closed form in it (``closed_form = "grabber"`` serves every 3R arm
 of that shape, whatever its lengths) or write a module with the names above: here
 (``analysis/kinematics/arms/<name>.py``), or next to the description
-(``closed_form = "<file>.py"``, a path relative to the description's folder). When the
-arm loads (:class:`analysis.kinematics.arm.Params`), :meth:`ClosedForm.probe` records its
+(``closed_form = "<file>.py"``, a file in the description's folder: such a description
+runs code). When the arm loads (:func:`analysis.kinematics.loader.load_arm`, the one place
+that picks a closed form), :meth:`ClosedForm.probe` records its
 ``ik`` once with the parameters: a closed form that the recorder cannot follow (Python's
 ``if`` on a value, ``math.sqrt``) is refused then, with the reason, instead of breaking the
 compiled and PLC backends later.
@@ -77,6 +78,7 @@ from types import ModuleType
 from typing import Any, NamedTuple
 
 from analysis.kinematics.status import STATUS_TEXT, Status
+from analysis.kinematics.trace import Graph, TraceOps
 
 __all__ = [
     "INPUT_UNIT_NAMES",
@@ -84,7 +86,10 @@ __all__ = [
     "OPTIONS",
     "ClosedForm",
     "IKResult",
-    "closed_form",
+    "check_module",
+    "from_file",
+    "from_module",
+    "known",
 ]
 
 MAX_INPUTS = 6
@@ -141,7 +146,7 @@ class IKResult(NamedTuple):
 class ClosedForm:
     """A closed-form module checked against the contract (see the module docstring).
 
-    Build it with :func:`closed_form`; an error names the missing or malformed piece.
+    Build it with :func:`check_module`; an error names the missing or malformed piece.
     Attributes the contract does not name (``ORIENTATION_TOL_RAD``, ``PROJECTION_HINT``)
     are read from the module; ``BRANCHES`` and ``INPUTS`` too, as the module spells them.
     """
@@ -265,8 +270,6 @@ class ClosedForm:
         cannot follow (Python's ``if``/``and``/``or`` on a value, ``math`` functions instead
         of ``m``'s), or a joint count other than ``n_joints``.
         """
-        from analysis.kinematics.trace import Graph, TraceOps
-
         g = Graph()
         m = TraceOps(g)
         p = tuple(g.input(k) for k in self.inputs)
@@ -400,29 +403,41 @@ def check_module(name: str, mod) -> ClosedForm:
 
 
 @cache
-def _load(name: str) -> ClosedForm:
+def from_module(name: str) -> ClosedForm:
+    """The closed form ``analysis.kinematics.arms.<name>``, checked against the contract
+    (module docstring); ValueError naming the modules there if there is none.
+
+    Only the loader (:func:`analysis.kinematics.loader.load_arm`) calls this: an arm holds
+    its closed form, and nothing downstream looks one up by name."""
+    if not isinstance(name, str) or not name.isidentifier() or name.startswith("_"):
+        raise ValueError(
+            f"closed form {name!r} is not a module name ({', '.join(known())}) or a .py file "
+            "next to the description"
+        )
     try:
         mod = importlib.import_module(f"analysis.kinematics.arms.{name}")
     except ModuleNotFoundError as exc:
         if exc.name != f"analysis.kinematics.arms.{name}":
             raise
-        known = ", ".join(_known())
         raise ValueError(
-            f"no closed form {name!r} in analysis.kinematics.arms (known: {known})"
+            f"no closed form {name!r} in analysis.kinematics.arms (known: {', '.join(known())})"
         ) from None
     return check_module(name, mod)
 
 
-def _known() -> list[str]:
+def known() -> list[str]:
+    """The closed-form modules of this package."""
     import pkgutil
 
     return sorted(m.name for m in pkgutil.iter_modules(__path__) if not m.name.startswith("_"))
 
 
 @cache
-def _load_file(path: str, stamp: tuple) -> ClosedForm:
-    """A closed form kept in a file of the user's (``closed_form = "my_arm.py"`` next to
-    the description), imported once per version of the file."""
+def from_file(path: str, stamp: tuple) -> ClosedForm:
+    """The closed form in the Python file ``path`` (a user's own, ``closed_form =
+    "my_arm.py"`` next to the description), imported, and so run, once per version
+    ``stamp`` of the file. The loader decides which files may be imported
+    (:func:`analysis.kinematics.loader.closed_form_file`)."""
     import hashlib
     import importlib.util
     import sys
@@ -441,30 +456,3 @@ def _load_file(path: str, stamp: tuple) -> ClosedForm:
             f"closed form {path} does not import: {type(exc).__name__}: {exc}"
         ) from None
     return check_module(path, mod)
-
-
-def closed_form(name: str | ClosedForm) -> ClosedForm:
-    """The closed form ``analysis.kinematics.arms.<name>``, or the one in the Python file
-    ``name`` (a path ending in ``.py``: a user's own, next to their description), or the one
-    derived from a description's D-H table (``derived:...``, :mod:`analysis.kinematics.derive`),
-    checked against the contract (module docstring); a :class:`ClosedForm` is returned as it
-    is."""
-    if isinstance(name, ClosedForm):
-        return name
-    if isinstance(name, str) and name.startswith("derived:"):
-        # derived from a description's D-H table (what a description without closed_form
-        # gets): analysis.kinematics.derive
-        from analysis.kinematics.derive import lookup
-
-        return lookup(name)
-    if isinstance(name, str) and name.endswith(".py"):
-        from pathlib import Path
-
-        path = Path(name).resolve()
-        if not path.is_file():
-            raise ValueError(f"closed form {name}: no such file")
-        st = path.stat()
-        return _load_file(str(path), (st.st_mtime_ns, st.st_size))
-    if not isinstance(name, str) or not name.isidentifier():
-        raise ValueError(f"closed form {name!r} is not a module name (or a path to a .py file)")
-    return _load(name)

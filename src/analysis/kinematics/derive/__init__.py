@@ -1,15 +1,14 @@
 """A closed form derived from the D-H table, for the families the seed papers belong to.
 
 A description without ``closed_form`` (``data/arms/*.toml`` or a user's file) gets one
-derived here: :func:`attach` names it ``"derived:<family>-<digest>"`` and
-:func:`analysis.kinematics.arms.closed_form` finds it by that name. The result is the same
-kind of closed form as the hand-written ones (:mod:`analysis.kinematics.arms`): one body
-written against the math namespace ``m``, so the derived arm gets the numpy solver, the
-compiled kernel, the float32 model, SymPy and the PLC programs without further code.
-Outside the families the description still loads (its FK, Pinocchio model and URDF need no
-closed form) and :func:`analysis.kinematics.arms.closed_form` raises the reason, naming the
-family rule it breaks; a hand-written closed form (``closed_form = "<module>"``) is the
-route for any other arm.
+derived here (:func:`derive`, called by the loader, :func:`analysis.kinematics.loader.
+load_arm`, which keeps it in the arm). The result is the same kind of closed form as the
+hand-written ones (:mod:`analysis.kinematics.arms`): one body written against the math
+namespace ``m``, so the derived arm gets the numpy solver, the compiled kernel, the float32
+model, SymPy and the PLC programs without further code. Outside the families the
+description still loads (its FK, Pinocchio model and URDF need no closed form) and asking
+the arm for IK raises the reason, naming the family rule it breaks; a hand-written closed
+form (``closed_form = "<module>"``) is the route for any other arm.
 
 Method: subproblem decomposition (Paden-Kahan, :mod:`.subproblems`) on the chain's screws at
 q = 0 (:mod:`.chain`). Every family has a waist (axis 1, direction ``w1``) and a set of
@@ -71,7 +70,6 @@ record (compiled kernel, float32 model, PLC programs); it is the oracle instead
 
 from __future__ import annotations
 
-import dataclasses
 import hashlib
 import json
 
@@ -79,15 +77,12 @@ from analysis.kinematics.derive.chain import home
 from analysis.kinematics.derive.closed_form import DerivedClosedForm
 from analysis.kinematics.derive.families import FAMILIES, NotDerivable, classify
 from analysis.kinematics.derive.forms import build
+from analysis.kinematics.ops import numpy_ops
 
-__all__ = ["DERIVED", "FAMILIES", "DerivedClosedForm", "NotDerivable", "attach", "derive",
-           "derived_arm", "lookup"]  # fmt: skip
+__all__ = ["DERIVED", "FAMILIES", "DerivedClosedForm", "NotDerivable", "derive"]
 
 DERIVED = "derived"
-"""The ``closed_form`` of a description that asks for a derived one (also what a missing
-``closed_form`` means)."""
-_REGISTRY: dict[str, DerivedClosedForm | NotDerivable] = {}
-_CHECKED: dict = {}
+"""The name prefix of a derived closed form (``derived:<family>-<digest>``)."""
 
 
 def _digest(*parts) -> str:
@@ -100,73 +95,15 @@ def _key(desc) -> tuple:
 
 
 def derive(desc) -> DerivedClosedForm:
-    """The derived closed form of description ``desc`` (whatever its ``closed_form``), or
-    NotDerivable with the reason. The same structure gives the same object."""
-    table = desc.dh_table()
-    from analysis.kinematics.ops import numpy_ops
+    """The closed form derived from the D-H rows of description ``desc`` (whatever its
+    ``closed_form``), named ``derived:<family>-<digest of the structure>``; NotDerivable
+    (a ValueError) with the reason for a chain outside the families.
 
+    The loader (:func:`analysis.kinematics.loader.load_arm`) calls it once per description
+    version and keeps the result in the arm: there is no registry to look it up in."""
+    table = desc.dh_table()
     h = home(numpy_ops, table)
     structure = classify(h.axes, h.rotation, desc.derive, h.kinds)
-    probe = build("derived:probe", desc, structure)
-    flags = probe.flags
-    name = f"{DERIVED}:{structure.family}-{_digest(_key(desc), flags)}"
-    known = _REGISTRY.get(name)
-    if isinstance(known, DerivedClosedForm):
-        return known
-    probe.__name__ = name
-    _REGISTRY[name] = probe
-    return probe
-
-
-def attach(desc):
-    """``desc`` with ``closed_form`` set to the name of its derived closed form (registered
-    for :func:`lookup`); a chain outside the families gets a name whose lookup raises the
-    reason."""
-    try:
-        name = derive(desc).__name__
-    except NotDerivable as exc:
-        name = f"{DERIVED}:refused-{_digest(_key(desc))}"
-        _REGISTRY[name] = NotDerivable(
-            f"arm {desc.name} names no closed_form and none can be derived from its D-H "
-            f"table: {exc}. Write one (analysis.kinematics.arms) and name it with "
-            'closed_form = "<module>"'
-        )
-    return dataclasses.replace(desc, closed_form=name)
-
-
-def lookup(name: str) -> DerivedClosedForm:
-    """The derived closed form registered as ``name`` (ValueError: the reason it could not
-    be derived, or that no description registered it)."""
-    got = _REGISTRY.get(name)
-    if isinstance(got, NotDerivable):
-        raise NotDerivable(str(got))
-    if got is None:
-        raise ValueError(
-            f"no derived closed form {name!r}: load the description that derives it first"
-        )
-    return _checked(got)
-
-
-def _checked(cf: DerivedClosedForm):
-    """The closed form as the arm contract wraps a module (the typed contract's
-    ``check_module`` where the contract has one; the object itself otherwise)."""
-    try:
-        from analysis.kinematics.arms import check_module
-    except ImportError:
-        return cf
-    wrapped = _CHECKED.get(cf.__name__)
-    if wrapped is None:
-        wrapped = _CHECKED[cf.__name__] = check_module(cf.__name__, cf)
-    return wrapped
-
-
-def derived_arm(desc):
-    """An :class:`~analysis.kinematics.arm.Arm` of description ``desc`` (or a name or path)
-    on its derived closed form, whatever its ``closed_form`` (the seed arms' oracle)."""
-    from analysis.kinematics.arm import Arm, Params
-    from analysis.kinematics.description import load_description
-
-    if isinstance(desc, str):
-        desc = load_description(desc)
-    d = dataclasses.replace(desc, closed_form=derive(desc).__name__)
-    return Arm(Params.from_description(d))
+    cf = build("derived:probe", desc, structure)
+    cf.__name__ = f"{DERIVED}:{structure.family}-{_digest(_key(desc), cf.flags)}"
+    return cf

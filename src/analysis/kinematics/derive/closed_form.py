@@ -9,7 +9,7 @@ kernel, the float32 model, SymPy and the PLC programs run it unchanged. ``ik`` i
 subproblem decomposition of :mod:`analysis.kinematics.derive` (its docstring gives the
 steps; :mod:`.positioning` and :mod:`.wrist` write them), against the math namespace ``m``;
 the lengths come from ``P`` through the description's D-H rows at every call, so a changed
-parameter (``Params.with_``) or a traced one (the compiled kernel) is used as it is.
+parameter (``Arm.with_``) or a traced one (the compiled kernel) is used as it is.
 
 Branches: ``<side>-<elbow>`` (front/back, up/down: four), and for a six-axis arm
 ``<side>-<elbow>-<wrist>`` (noflip/flip, :data:`.wrist.WRISTS`: eight).

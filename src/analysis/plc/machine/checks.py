@@ -105,9 +105,10 @@ def check_final(trace: Trace, spec: MachineSpec, expected) -> list[str]:
     ]
 
 
-def check_limits(trace: Trace, spec: MachineSpec, rel: float = 1e-6) -> list[str]:
+def check_limits(trace: Trace, spec: MachineSpec, rel: float = 1e-6, skip=None) -> list[str]:
     """Velocity, acceleration and jerk from the positions' divided differences within each
-    joint's limits (a relative ``rel`` for round-off)."""
+    joint's limits (a relative ``rel`` for round-off); ``skip`` (axis, t): that axis from t
+    on is not held (its drive failed and stopped it dead)."""
     dt, out = trace.cycle_s, []
     for order, lim, word in zip(
         (1, 2, 3), _limits(spec), ("velocity", "acceleration", "jerk"), strict=True
@@ -115,6 +116,8 @@ def check_limits(trace: Trace, spec: MachineSpec, rel: float = 1e-6) -> list[str
         if len(trace.q) <= order:
             continue
         d = np.abs(np.diff(trace.q, n=order, axis=0)) / dt**order
+        if skip is not None:
+            d[max(trace.at(skip[1]) - order, 0) :, skip[0]] = 0.0
         peak = d.max(axis=0)
         for k in np.flatnonzero(peak > lim * (1 + rel) + 1e-9):
             at = trace.t[int(np.argmax(d[:, k]))]
@@ -204,7 +207,7 @@ def check_sync(
 
 
 def check_stop(
-    trace: Trace, spec: MachineSpec, t_stop: float, t_until: float | None = None
+    trace: Trace, spec: MachineSpec, t_stop: float, t_until: float | None = None, skip=None
 ) -> list[str]:
     """After the stop circuit opens at ``t_stop``: each axis comes to rest within its
     jerk-limited braking distance from its velocity and acceleration then (:func:`.profile.
@@ -219,6 +222,8 @@ def check_stop(
     rest = segs[0][1] if segs and segs[0][0] <= k + 1 else k
     out = []
     for i, ax in enumerate(spec.axes):
+        if i == skip:
+            continue  # its drive failed: stopped dead, not braked by the program
         v0 = trace.v[k, i]
         a0 = (trace.v[k, i] - trace.v[k - 1, i]) / dt if k > 0 else 0.0
         bound = stop_distance(v0, a0, a[i], j[i]) + abs(v0) * dt

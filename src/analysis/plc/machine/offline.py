@@ -9,10 +9,12 @@ file) on the ST engine, offline (issue 29 item 3, a contract).
   map, per AXIS_REF variable of the program; the trace has one row per cycle: ``t_s``,
   ``q1..qN`` (deg or mm), ``v1..vN`` (per second), then every output of the program by name
   (MAP.json's ``machine.outputs``; without a map, every scalar variable the scenario does
-  not write).
+  not write). ``AxisN.PowerOK`` (FALSE, then TRUE) is the simulated drive's power feedback:
+  losing it is an axis error (:data:`analysis.plc.st_engine.POWER_OK`).
 - Without a scenario: one scan, ``--set NAME=VALUE`` before it, ``--read NAME`` after it.
 - A source without a PROGRAM (the IK block on its own) runs through a generated PROGRAM that
-  calls its function block with its inputs and copies its outputs (today's IK sweep).
+  calls its function block with its inputs (a rising edge of its Execute in every scan) and
+  copies its outputs (today's IK sweep).
 
 Every user error raises ValueError with one line: an unknown variable, a time going
 backwards, a program that does not compile (its line and column), an engine fault (which, at
@@ -85,11 +87,18 @@ def _harness(source: str, fb: str) -> tuple[str, str]:
         body = re.findall(rf"(?is)\b{section}\b(.*?)\bEND_VAR\b", m.group(1))
         decl[section] = re.findall(r"(\w+)\s*:\s*(\w+)", body[0]) if body else []
     name = "STL_RUN_HARNESS"
+    execute = [n for n, _ in decl["VAR_INPUT"] if n.lower() == "execute"]
+    ins = [(n, t) for n, t in decl["VAR_INPUT"] if n not in execute]
     lines = [f"PROGRAM {name}", "VAR"]
-    lines += [f"    {n} : {t};" for n, t in decl["VAR_INPUT"] + decl["VAR_OUTPUT"]]
+    lines += [f"    {n} : {t};" for n, t in ins + decl["VAR_OUTPUT"]]
     lines += [f"    block : {fb};", "END_VAR"]
-    call = ", ".join(f"{n} := {n}" for n, _ in decl["VAR_INPUT"])
-    lines += [f"block({call});", *[f"{n} := block.{n};" for n, _ in decl["VAR_OUTPUT"]]]
+    call = ", ".join(f"{n} := {n}" for n, _ in ins)
+    if execute:  # a PLCopen block: a rising edge of Execute in every scan
+        lines += [f"block({execute[0]} := FALSE, {call});",
+                  f"block({execute[0]} := TRUE, {call});"]  # fmt: skip
+    else:
+        lines += [f"block({call});"]
+    lines += [f"{n} := block.{n};" for n, _ in decl["VAR_OUTPUT"]]
     return source + "\n" + "\n".join([*lines, "END_PROGRAM", ""]), name
 
 
@@ -240,16 +249,19 @@ def run_trace(
         raise ValueError(f"--cycle-ms {cycle_s * 1e3:g}: between 0.5 and 1000 ms")
     if not (0.0 <= settle_s <= 3600.0):
         raise ValueError(f"--settle-s {settle_s:g}: between 0 and 3600 s")
+    from analysis.plc.st_engine import POWER_OK
+
     source, name = pick_program(source, program, mapdoc)
     variables = program_variables(source, name)
-    rows = parse_scenario(table, variables, name)
+    axes = _axes(variables, mapdoc)
+    drives = {f"{a.name}.{POWER_OK}": "BOOL" for a in axes}  # the drives' power feedback
+    rows = parse_scenario(table, {**variables, **drives}, name)
     writes, n = schedule(rows, cycle_s, settle_s)
     if n > MAX_CYCLES:
         raise ValueError(
             f"the scenario runs {n} cycles (last row at {rows[-1][0]:g} s + "
             f"{settle_s:g} s at {cycle_s * 1e3:g} ms): at most {MAX_CYCLES}"
         )
-    axes = _axes(variables, mapdoc)
     outs = _outputs(variables, {n for _, n, _ in rows}, mapdoc)
     run = run_machine(source, name, axes, writes, outs, cycle_s=cycle_s, n_cycles=n)
     return [v for v in outs], axes, run, {n: variables[n] for n in outs}

@@ -240,9 +240,8 @@ class MachinePrinter:
 
     def axis_fault(self, k: str) -> str:
         v = self.v
-        errs = " OR ".join(
-            f"{v(fb + k)}.Error" for fb in ("Power", "Homing", "Move", "Halt", "Stop")
-        )
+        # not the stop's own error: stopping an axis already in error fails by design
+        errs = " OR ".join(f"{v(fb + k)}.Error" for fb in ("Power", "Homing", "Move", "Halt"))
         return f"({v('ReadErr' + k)}.AxisErrorID <> 0) OR {errs}"
 
     def latches(self) -> list[str]:
@@ -333,9 +332,10 @@ class MachinePrinter:
             f"{t}ELSE",
             self.comment("the target latched: the inputs stay as the operator wrote them"),
             *latch,
-            f"{t}{t}{v('Ik')}({ik_call});",
-            f"{t}{t}IF NOT {v('Ik')}.reachable THEN",
-            *self.refuse(f"DINT_TO_INT({v('Ik')}.status)", 3),
+            f"{t}{t}{v('Ik')}(Execute := FALSE, {ik_call});",
+            f"{t}{t}{v('Ik')}(Execute := TRUE, {ik_call});",
+            f"{t}{t}IF {v('Ik')}.Error THEN",
+            *self.refuse(f"DINT_TO_INT({v('Ik')}.ErrorID)", 3),
             f"{t}{t}ELSIF ({v('Phase')} = {st['MOVING']}) OR ({v('Phase')} = {st['PLAN']}) OR "
             f"({v('Phase')} = {st['HALTING']}) THEN",
             f"{t}{t}{t}{v('Phase')} := {st['HALTING']};",

@@ -38,7 +38,7 @@ class SclMachinePrinter(MachinePrinter):
         return [f"#Pos{k} := {self.v(axis)}.ActualPosition;"]
 
     def axis_fault(self, k: str) -> str:
-        errs = " OR ".join(f"#{fb}{k}.Error" for fb in ("Power", "Homing", "Move", "Halt", "Stop"))
+        errs = " OR ".join(f"#{fb}{k}.Error" for fb in ("Power", "Homing", "Move", "Halt"))
         return f"{self.v('Axis' + k)}.StatusWord.%X1 OR {errs}"
 
     def latches(self) -> list[str]:

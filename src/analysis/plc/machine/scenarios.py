@@ -71,6 +71,7 @@ __all__ = [
 ]
 
 SCENARIOS = (
+    "axis_error",
     "power_home",
     "move",
     "retarget",
@@ -104,6 +105,9 @@ class Expect:
     stop_t: float | None = None
     stop_until: float | None = None
     sync: str = "all"
+    faulted: tuple[int, float] | None = None
+    """(axis index, time): that axis' drive fails then (it stops dead: its limits and braking
+    are not the program's)."""
 
 
 @dataclass(frozen=True)
@@ -288,6 +292,33 @@ def scenarios(arm, seed: int = 29) -> dict[str, Scenario]:
         out["joint_limit"] = _refused(
             "joint_limit", "a target beyond a joint limit", boot, lim, spec, Status.JOINT_LIMITS
         )
+    drive = spec.axes[1].name
+    out["axis_error"] = Scenario(
+        "axis_error",
+        f"{drive}'s drive fails mid-move: every axis stops; after Reset the machine must be "
+        "homed again (Start refused)",
+        (
+            *boot,
+            *_start(START_T, ta, spec),
+            (mid, f"{drive}.PowerOK", 0.0),
+            (mid + 0.3, f"{drive}.PowerOK", 1.0),
+            *_pulse(settle, "Reset"),
+            *_start(settle + 0.4, ta, spec),
+            (settle + 1.5, "Start", 0.0),
+        ),
+        Expect(
+            stop_t=mid,
+            faulted=(1, mid),
+            still=((mid + 1.0, settle + 1.5),),
+            outputs=(
+                (mid + 0.05, "Status", 103),
+                (mid + 0.05, "Error", 1),
+                (mid + 0.05, "Homed", 0),
+                (settle + 0.45, "Status", 101),
+                (settle + 0.45, "Error", 1),
+            ),
+        ),
+    )
     out["wire_break"] = Scenario(
         "wire_break",
         "a broken stop wire mid-move: Reset does not clear it, Start is refused",
@@ -361,13 +392,14 @@ def check(
     """Every check ``scenario`` names (module docstring); the failures, each one line.
     ``arrive_s``: how far apart the joints may arrive (default one cycle)."""
     e = scenario.expect
-    out = check_limits(trace, spec)
+    out = check_limits(trace, spec, skip=e.faulted)
     if e.final is not None:
         out += check_final(trace, spec, e.final)
     for t0, t1 in e.still:
         out += check_still(trace, spec, t0, t1)
     if e.stop_t is not None:
-        out += check_stop(trace, spec, e.stop_t, e.stop_until)
+        out += check_stop(trace, spec, e.stop_t, e.stop_until,
+                          skip=e.faulted[0] if e.faulted else None)  # fmt: skip
     out += check_short_way(trace, spec)
     if e.sync:
         segs = motion_segments(trace)

@@ -5,6 +5,7 @@ import numpy as np
 import pytest
 
 from analysis.audit.papers.grabber import table4
+from analysis.kinematics.arm import paper_arm
 from analysis.kinematics.params import paper_params
 from analysis.kinematics.pinocchio_model import PinocchioArm
 
@@ -25,7 +26,7 @@ def test_row8_unreachable_by_geometry(summary):
 
 
 def test_fk_of_printed_angles_matches_pinocchio(summary):
-    pa = PinocchioArm(paper_params().dh_table())
+    pa = PinocchioArm(paper_arm().dh_table())
     ok = summary["fk_error_mm"].notna().to_numpy()
     q = np.radians(
         summary.loc[ok, ["printed_theta1", "printed_theta2", "printed_theta3"]]

@@ -17,7 +17,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from analysis.audit.papers.palletizer import method as chk
-from analysis.kinematics.arm import Arm, load_arm
+from analysis.kinematics.arm import load_arm
 from helpers import assert_points_close
 
 ATOL_MM = 1e-9
@@ -169,7 +169,7 @@ def test_fk_of_ik_through_pinocchio_on_10000_configurations(L2):
     well-conditioned) and the very angles it started from (the IK is unique there). L2 = 150:
     the non-isosceles family works the same."""
     arm = load_arm("palletizer")
-    arm = arm if L2 == arm.params.L2 else Arm(arm.params.with_(L2=L2))
+    arm = arm if L2 == arm.params.L2 else arm.with_(L2=L2)
     r = chk.fk_ik_pinocchio(arm, 10_000)
     assert r["n"] == 10_000 and r["all_ok"] and r["status"] == {0: 10_000}
     assert r["max_err_mm"] < ATOL_MM

@@ -41,7 +41,7 @@ def _paper():
 def _probe() -> Arm:
     """A chain of the GR-1's form with a3 = 200 mm: with the GR-1's a2 = a3 = 228 mm a
     formula with a2 and a3 swapped would pass."""
-    return Arm(st.gr1_arm().params.with_(a3=200.0))
+    return st.gr1_arm().with_(a3=200.0)
 
 
 # --- domains ----------------------------------------------------------------------------------

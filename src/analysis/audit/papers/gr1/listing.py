@@ -385,7 +385,7 @@ def move_facts() -> dict[str, object]:
     q, names, presets, turn = corrected_move()
     t = st.table5_4().set_index(["pose", "source"])
     fx = st.fx2n_vs_cubic(gr1_arm(), q[0], q[1], samples=1001)  # 1001: path lengths to 0.1 %
-    d1 = [np.linalg.norm(Arm(gr1_arm().params.with_(d1=float(h))).fk(st.printed_joints()[0])
+    d1 = [np.linalg.norm(gr1_arm().with_(d1=float(h)).fk(st.printed_joints()[0])
                          - st.thesis_poses()[0, :3]) for h in np.linspace(-200, 200, 81)]  # fmt: skip  # noqa: E501
     free = st.workspace_extents(limits=False)
 

@@ -31,10 +31,10 @@ def _S(name):
 
 # --- matrices and substitutions (Table 1, sec. 1.2) -----------------------------------------
 def _links():
-    from analysis.kinematics.params import paper_params
+    from analysis.kinematics.arm import paper_arm
 
     th = [_S(f"theta{i}") for i in (1, 2, 3)]
-    return paper_params().dh_table(symbolic=True).transforms_sym(th)
+    return paper_arm().dh_table(symbolic=True).transforms_sym(th)
 
 
 def _inverse(A: sp.Matrix) -> sp.Matrix:

@@ -144,7 +144,7 @@ def workspace() -> dict[str, np.ndarray]:
     rng = np.random.default_rng(2016)
     q = sample_q(arm, rng, 200)
     dq = np.abs(pulses_to_angles(angles_to_pulses(q)) - q).max(axis=-1)
-    p = arm.shoulder + rng.uniform(-1, 1, (50_000, 3)) * arm.params.reach_outer
+    p = arm.shoulder + rng.uniform(-1, 1, (50_000, 3)) * arm.geometry["reach_outer"]
     P, th = front_up(p)
     err = np.linalg.norm(arm.fk(pulses_to_angles(angles_to_pulses(th))) - P, axis=-1)
     tip = np.resize(err, len(q))

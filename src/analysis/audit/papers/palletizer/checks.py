@@ -14,10 +14,10 @@ B = Bespoke("palletizer")
 
 
 def _arm(**changes):
-    from analysis.kinematics.arm import Arm, load_arm
+    from analysis.kinematics.arm import load_arm
 
     arm = load_arm("palletizer")
-    return Arm(arm.params.with_(**changes)) if changes else arm
+    return arm.with_(**changes) if changes else arm
 
 
 def _S(name):

@@ -372,7 +372,7 @@ def _arm(**changes) -> Arm:
     from analysis.kinematics.arm import load_arm
 
     arm = load_arm("palletizer")
-    return Arm(arm.params.with_(**changes)) if changes else arm
+    return arm.with_(**changes) if changes else arm
 
 
 def claim_grid() -> dict[str, np.ndarray]:
