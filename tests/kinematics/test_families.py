@@ -213,7 +213,6 @@ def test_random_arms_float32_model_follows(random_arms, rng):
     count (a half-pulse tie or the wrap cut apart: tests/kinematics/test_families_plc.py runs
     the programs themselves on the ST engine)."""
     from analysis.kinematics.ops import Float32Ops
-    from analysis.kinematics.pulses import angles_to_pulses
     from analysis.plc.model import predict
 
     for fam in NEW_FAMILIES:
@@ -239,7 +238,8 @@ def test_outside_the_families_says_which_rule(tmp_path):
     base = random_family_arm(np.random.default_rng(1), "6R-wrist", "standard", "user")
     for text, reason in (
         (base.replace("alpha_deg = 90.0", "alpha_deg = 60.0", 1)
-         .replace("alpha_deg = -90.0", "alpha_deg = 60.0", 1), "not 90|not parallel|do not meet|passes"),
+         .replace("alpha_deg = -90.0", "alpha_deg = 60.0", 1),
+         "not 90|not parallel|do not meet|passes"),
     ):  # fmt: skip
         path = tmp_path / "user.toml"
         path.write_text(text, encoding="utf-8")

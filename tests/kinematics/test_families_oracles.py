@@ -25,8 +25,9 @@ from analysis.kinematics.derive.samples_more import random_family_arm
 
 REVOLUTE_FAMILIES = ("2R-planar", "3R-planar", "6R-wrist", "6R-parallel")
 
-needs_eaik = pytest.mark.skipif(not eaik_available(),
-                                reason="EAIK is not installed (the bench extra: make bench)")  # fmt: skip
+needs_eaik = pytest.mark.skipif(
+    not eaik_available(), reason="EAIK is not installed (the bench extra: make bench)"
+)
 needs_plcopen = pytest.mark.skipif(
     not po.available(), reason="pyplcopen's kinematics driver is not built (make st-engine, g++)"
 )

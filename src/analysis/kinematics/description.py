@@ -390,12 +390,14 @@ def _check_rows(rows: list[dict], path: Path) -> tuple[dict, ...]:
 def description_path(name: str | Path) -> Path:
     """The file of arm ``name``: ``data/arms/<name>.toml`` for a name, or ``name`` itself
     for the path of a description file (anything ending in ``.toml`` or holding a folder
-    separator), anywhere on disk.
+    separator) or of a URDF (``.urdf``: its serial chain, :mod:`analysis.kinematics.urdf_in`),
+    anywhere on disk.
 
     Raises ValueError naming the arms that exist, or the file that does not.
     """
     text = str(name)
-    if isinstance(name, Path) or text.endswith(".toml") or "/" in text or "\\" in text:
+    urdf = text.lower().endswith(".urdf")  # a URDF's chain (analysis.kinematics.urdf_in)
+    if isinstance(name, Path) or text.endswith(".toml") or urdf or "/" in text or "\\" in text:
         path = Path(text).expanduser()
         if not path.is_file():
             raise ValueError(f"no arm description {text!r}: no such file")
@@ -444,7 +446,12 @@ def _load(name: str, tables: tuple, stamp: tuple) -> ArmDescription:
     """
     path = Path(name)
     try:
-        d = tomllib.loads(path.read_text(encoding="utf-8"))
+        if path.suffix.lower() == ".urdf":  # converted to this format (no code run, bounded)
+            from analysis.kinematics.urdf_in import description_text
+
+            d = tomllib.loads(description_text(path))
+        else:
+            d = tomllib.loads(path.read_text(encoding="utf-8"))
     except tomllib.TOMLDecodeError as exc:
         raise ValueError(f"{path}: not valid TOML ({exc})") from None
     except (OSError, UnicodeDecodeError) as exc:

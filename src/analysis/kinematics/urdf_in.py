@@ -39,6 +39,7 @@ elements and attributes.
 
 from __future__ import annotations
 
+import itertools
 import math
 import os
 import stat
@@ -119,7 +120,15 @@ def _numbers(path, el, attr: str, n: int, default=None) -> np.ndarray:
     parts = text.split()
     if len(parts) != n:
         raise _err(path, f"<{el.tag} {attr}={text[:40]!r}>: expected {n} numbers")
-    return np.array([validate.parse_real(p, f"<{el.tag} {attr}>") for p in parts])
+    return np.array([_real(path, p, f"<{el.tag} {attr}>") for p in parts])
+
+
+def _real(path, text: str, what: str) -> float:
+    """A number of the file (:func:`analysis.validate.parse_real`), its errors naming it."""
+    try:
+        return validate.parse_real(text, what)
+    except ValueError as exc:
+        raise _err(path, str(exc)) from None
 
 
 def _rotation(rpy) -> np.ndarray:
@@ -170,11 +179,11 @@ def _limits(path, el, name: str, kind: str):
     if lim is None or kind == "fixed":
         return None, None
     scale = MM if kind == "prismatic" else 1.0
-    velocity = validate.parse_real(lim.get("velocity", "0"), f"joint {name} velocity") * scale
+    velocity = _real(path, lim.get("velocity", "0"), f"joint {name} velocity") * scale
     if kind == "continuous":
         return None, velocity if velocity > 0 else None
-    lo = validate.parse_real(lim.get("lower", "0"), f"joint {name} lower") * scale
-    hi = validate.parse_real(lim.get("upper", "0"), f"joint {name} upper") * scale
+    lo = _real(path, lim.get("lower", "0"), f"joint {name} lower") * scale
+    hi = _real(path, lim.get("upper", "0"), f"joint {name} upper") * scale
     if not lo < hi:
         raise _err(path, f"joint {name!r}: limit lower {lo:g} is not below upper {hi:g}")
     return (lo, hi), velocity if velocity > 0 else None
@@ -262,21 +271,26 @@ def _walk(path, name, root, children) -> UrdfChain:
 
 
 def _tool(path, link, children) -> list[Joint]:
-    """The fixed joints from the last moving joint's link to the tool frame."""
-    out = []
-    for _ in range(MAX_JOINTS + 1):
-        fixed = children.get(link, [])
-        if not fixed:
-            return out
-        if len(fixed) > 1:
-            named = [j for j in fixed if j.child == "tool0"]
-            if not named:
-                raise _err(path, f"no tool frame: link {link!r} has {len(fixed)} fixed children "
-                                 f"({', '.join(j.child for j in fixed)}) and none is tool0")
-            fixed = named
-        out.append(fixed[0])
-        link = fixed[0].child
-    raise _err(path, "the fixed frames after the last joint form a cycle")
+    """The fixed joints from the last moving joint's link to the tool frame: the one leaf of
+    the fixed frames after it, or, where they branch, the path to ``tool0``."""
+    paths, stack = [], [(link, [])]
+    while stack:
+        if len(paths) > MAX_JOINTS:
+            raise _err(path, "the fixed frames after the last joint form a cycle")
+        here, way = stack.pop()
+        kids = children.get(here, [])
+        if not kids:
+            paths.append(way)
+        stack.extend((j.child, [*way, j]) for j in reversed(kids))
+    if len(paths) == 1:
+        return paths[0]
+    named = [w for w in paths if any(j.child == "tool0" for j in w)]
+    if not named:
+        leaves = sorted(w[-1].child for w in paths)
+        raise _err(path, f"no tool frame: after the last joint the fixed frames end in "
+                         f"{len(paths)} links ({', '.join(leaves)}) and none is tool0")
+    way = named[0]
+    return way[: next(i for i, j in enumerate(way) if j.child == "tool0") + 1]
 
 
 # --- the D-H rows -------------------------------------------------------------------------
@@ -300,7 +314,7 @@ def _frames(lines, tool: np.ndarray) -> list[np.ndarray]:
     frames = []
     prev = np.zeros(3)  # where the previous common normal meets this line
     x_prev = np.array([1.0, 0.0, 0.0])
-    for (p, z), (q, w) in zip(lines[:-1], lines[1:], strict=True):
+    for (p, z), (q, w) in itertools.pairwise(lines):
         n = np.cross(z, w)
         if np.linalg.norm(n) > 1e-12:
             n /= np.linalg.norm(n)
@@ -401,7 +415,8 @@ def _joint_entry(j: Joint) -> list[str]:
             out.append(f"limits_deg = [{math.degrees(j.limits[0])!r}, "
                        f"{math.degrees(j.limits[1])!r}]")  # fmt: skip
         unit = "rad/s"
-        out.append(f"limits_status = {_toml_str('printed: <limit> of joint ' + src if j.limits else 'a continuous joint: a full turn')}")
+        status = f"printed: <limit> of joint {src}" if j.limits else "continuous: a full turn"
+        out.append(f"limits_status = {_toml_str(status)}")
     if j.velocity is not None:
         out.append(f'max_velocity = {{ value = {j.velocity!r}, unit = "{unit}", status = '
                    f'"printed", source = {_toml_str("<limit velocity> of joint " + src)} }}')

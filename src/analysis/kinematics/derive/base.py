@@ -51,7 +51,7 @@ class FamilyForm:
         self.family = structure.family
 
     @property
-    def INPUT_UNITS(self) -> tuple:  # noqa: N802 (the contract's name)
+    def INPUT_UNITS(self) -> tuple:
         return tuple("rad" if k in RPY else "mm" for k in self.INPUTS)
 
     def inputs_of(self, T) -> np.ndarray:
@@ -84,7 +84,7 @@ class FamilyForm:
         return q
 
     @property
-    def STARTUP_TARGET(self):  # noqa: N802 (the contract's name)
+    def STARTUP_TARGET(self):
         """The example target a generated PLC program writes on its first scan: the inputs
         of a seeded configuration within the joint limits that the default branch solves
         back, rounded (0.1 mm, 1e-6 rad); None if none of 200 does."""

@@ -185,7 +185,7 @@ class DerivedClosedForm(WaistArm):
                    band=wr.wrist_band(margin_rad))  # fmt: skip
         branches, conds, outsides, flips = {}, {}, [], {}
         for side, v in sides.items():
-            for tag, arm in self._arms(m, g, v, side, ctx):
+            for _, arm in self._arms(m, g, v, side, ctx):
                 outsides.append(arm.get("outside"))
                 for name, (q, extra) in arm["branches"].items():
                     branches[name] = (v["theta1"], *q)
@@ -292,12 +292,12 @@ class DerivedClosedForm(WaistArm):
         {"up": [], "down": []} receives each elbow's joint 2 and 3 cosines and sines."""
         t, c, gam, sg = self._plane(m, g, arm, tag, ctx, ctx["tol"], ctx["axis_tol"],
                                     ctx["precise"])  # fmt: skip
-        return {
-            elbow: self._elbow(m, g, t, c, gam, sg,
-                               self.s_up[side] * (1.0 if elbow == "up" else -1.0), arm, tag,
-                               elbow, None if turns is None else turns[elbow])  # fmt: skip
-            for elbow in ("up", "down")
-        }
+        out = {}
+        for elbow in ("up", "down"):
+            s = self.s_up[side] * (1.0 if elbow == "up" else -1.0)
+            out[elbow] = self._elbow(m, g, t, c, gam, sg, s, arm, tag, elbow,
+                                     None if turns is None else turns[elbow])  # fmt: skip
+        return out
 
     def refusal(self, status: Status, p, P, *, tol: float, distance: float) -> tuple[str, float]:
         """The one-line reason a target is refused, naming it and the limit crossed, and
@@ -356,9 +356,10 @@ class DerivedClosedForm(WaistArm):
                     f"{lat:g} mm around the waist axis that the arm's lateral offset "
                     "keeps every reachable point out of"
                 ), lat
+        sh = fmt(geo["shoulder"])
         return (
             f"{where} puts the wrist {distance:.3f} mm inside the inner reach of "
-            f"{geo['reach_inner']:g} mm (|La - Lb|) around the shoulder at {fmt(geo['shoulder'])} mm"
+            f"{geo['reach_inner']:g} mm (|La - Lb|) around the shoulder at {sh} mm"
         ), geo["reach_inner"]
 
     def _degenerate_reason(self, where, pose, P, tol) -> str:

@@ -158,7 +158,10 @@ def compare_seeded(arm, mechanism: str, targets: np.ndarray, rng, random_seeds: 
         T = transform_from_pose(targets)
     reqs, owner = [], []
     for i in range(len(targets)):
-        head = _fmt(T[i, :3, 3]) + " " + _fmt(T[i, :3, :3].ravel()) if pose else _fmt(targets[i, :3])
+        if pose:
+            head = _fmt(T[i, :3, 3]) + " " + _fmt(T[i, :3, :3].ravel())
+        else:
+            head = _fmt(targets[i, :3])
         ours = [sol.theta[i, b] for b in range(len(arm.branches)) if sol.ok[i, b]]
         seeds = [(s, 1e-3) for s in ours]
         seeds += [(rng.uniform(-math.pi, math.pi, arm.n_joints), 10.0) for _ in range(random_seeds)]
@@ -188,6 +191,7 @@ def compare_seeded(arm, mechanism: str, targets: np.ndarray, rng, random_seeds: 
             tally["equal"] += 1
     ok = sol.ok
     reached = arm.target(np.nan_to_num(sol.theta[ok]))[:, : min(3, targets.shape[1])]
-    res = float(np.abs(reached - targets[np.nonzero(ok)[0], : reached.shape[1]]).max()) if ok.any() else 0.0
+    want = targets[np.nonzero(ok)[0], : reached.shape[1]]
+    res = float(np.abs(reached - want).max()) if ok.any() else 0.0
     return Agreement(arm.closed_form.family, len(targets), tally["equal"], tally["empty"],
                      tally["subset"], tally["disagree"], int(ok.sum()), 0, res, first)  # fmt: skip

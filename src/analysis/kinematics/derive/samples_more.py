@@ -103,8 +103,9 @@ def _rows(rng, spec: str) -> tuple[list[dict], dict]:
                 v = f"{key}{i + 1}"
             row[key] = v
         if twist == "axis" or rng.random() < 0.5:
-            row["theta_offset_deg"] = float(rng.choice((0.0, 90.0, -90.0, 180.0)) if
-                                            rng.random() < 0.7 else round(rng.uniform(-180, 180), 2))
+            square = float(rng.choice((0.0, 90.0, -90.0, 180.0)))
+            row["theta_offset_deg"] = square if rng.random() < 0.7 else float(
+                round(rng.uniform(-180, 180), 2))  # fmt: skip
         rows.append(row)
     return rows, params
 

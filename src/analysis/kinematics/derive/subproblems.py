@@ -35,9 +35,9 @@ from analysis.kinematics.dh import _add, _mul
 __all__ = [
     "across",
     "add",
-    "mul",
     "cross",
     "dot",
+    "mul",
     "norm_sq",
     "pk1",
     "pk1_cs",

@@ -31,11 +31,19 @@ from __future__ import annotations
 import numpy as np
 
 from analysis.kinematics.derive import subproblems as sp
-from analysis.kinematics.dh import exact_cos_sin
 from analysis.kinematics.derive.positioning import apply_columns, mat_vec, transpose_apply
+from analysis.kinematics.dh import exact_cos_sin
 
-__all__ = ["WRIST_BAND", "WRIST_TOL_RAD", "WRISTS", "pick_noflip", "spherical", "ur_pitch",
-           "ur_q5", "wrist_band"]  # fmt: skip
+__all__ = [
+    "WRISTS",
+    "WRIST_BAND",
+    "WRIST_TOL_RAD",
+    "pick_noflip",
+    "spherical",
+    "ur_pitch",
+    "ur_q5",
+    "wrist_band",
+]  # fmt: skip
 
 WRISTS = ("noflip", "flip")
 """The wrist's two solutions: ``noflip`` the one whose middle joint (q5) has a sine >= 0,
