@@ -29,9 +29,9 @@ def _scratch_in_memory(min_free: int = 4 << 30) -> None:
     """Temporary files (``tmp_path``, ``tempfile``, and the subprocesses' TMPDIR) in /dev/shm
     when it is a writable tmpfs with at least ``min_free`` bytes free, and TMPDIR is not set.
 
-    The atomic writers fsync every file and directory they write (analysis.app.safe_io); on
+    The atomic writers fsync every file and directory they write (analysis.safe_io); on
     the disk those fsyncs are most of the time of the tests that write thousands of small
-    files (tests/app/test_safe_io.py: 40.6 s on /tmp, 10.5 s on /dev/shm, measured on one
+    files (tests/safe_io/test_safe_io.py: 40.6 s on /tmp, 10.5 s on /dev/shm, measured on one
     machine). The semantics under test (rename, permissions, ENOSPC/EFBIG, links) are those
     of any POSIX file system; on a machine without such a tmpfs nothing changes."""
     if os.environ.get("TMPDIR"):

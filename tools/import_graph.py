@@ -130,8 +130,6 @@ def cycles(graph: dict[str, set[str]]) -> list[list[str]]:
 
 def floor(mod: str) -> int:
     parts = mod.split(".")
-    if len(parts) > 2 and parts[1] == "app" and parts[2] == "safe_io":
-        return 3
     return FLOORS.get(parts[1] if len(parts) > 1 else "", 0)
 
 

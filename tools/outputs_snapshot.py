@@ -49,7 +49,7 @@ def _arms(work: Path) -> dict[str, str]:
     for name in ("grabber", "palletizer", "gr1"):
         text = (ROOT / "data" / "arms" / f"{name}.toml").read_text()
         text = re.sub(r'(?m)^closed_form = ".*"\n', "", text)
-        text = text.replace(f'name = "{name}"', f'name = "{name}-derived"', 1)
+        text = text.replace(f'name = "{name}"', f'name = "{name}_derived"', 1)
         folder = work / "derived"
         folder.mkdir(exist_ok=True)
         if name == "grabber":

@@ -411,9 +411,9 @@ def rate(value: object, unit: object, name: str, *, order: int, kind: str) -> fl
     _, factor = _RATE_UNITS[unit[: -len(suffix)]]
     hi = MAX_RATE[order - 1]
     v = real(value, name, unit) * factor
-    real(v, name, f"{base}{suffix}", lo=0.0, hi=hi, what="the largest rate the code supports")
     if not v > 0:
-        raise InvalidValue(f"{name} = {v:g} {base}{suffix} must be > 0", name, value)
+        raise InvalidValue(f"{_label(name)}{_fmt(v)} {base}{suffix} must be > 0", name, value)
+    real(v, name, f"{base}{suffix}", hi=hi, what="the largest rate the code supports")
     return math.radians(v) if kind == "revolute" else v
 
 

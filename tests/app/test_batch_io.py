@@ -16,7 +16,7 @@ from pathlib import Path
 import pytest
 
 from analysis.app.cli import main
-from analysis.app.safe_io import sweep_stale
+from analysis.safe_io import sweep_stale
 
 pytestmark = pytest.mark.slow  # subprocesses: seconds each
 

@@ -148,12 +148,12 @@ def test_arm_descriptions_with_holes_are_one_line_errors(tmp_path, capsys):
     base = (data_dir() / "arms" / "palletizer.toml").read_text()
     cases = {
         "no pulses_per_rev": (base.replace('pulses_per_rev = { value = 3200, status = "assumed" }',
-                                           "", 1), "needs pulses_per_rev"),
-        "no joint name": (base.replace('name = "theta1"\n', "", 1), "needs a name"),
+                                           "", 1), "theta1 pulses_per_rev: is missing"),
+        "no joint name": (base.replace('name = "theta1"\n', "", 1), "1 name: None is not text"),
         "a list for a number": (base.replace("alpha_deg = -90", "alpha_deg = [-90]", 1),
                                 "is not a real number"),
         "a list for a length": (base.replace("L1 = { value = 200.0", "L1 = { value = [200.0]", 1),
-                                "[200.0] is not a finite number"),
+                                "[200.0] (list) is not a real number"),
         "a string for a limit": (
             base.replace("limits_deg = [-180, 180]", 'limits_deg = ["-180", 180]', 1), "is text"
         ),

@@ -172,11 +172,13 @@ def test_a_text_a_kind_cannot_read_is_not_right():
 
 
 # --- the mutation harness -----------------------------------------------------------------------
-def test_harness_generates_what_it_says():
-    m = harness.mutants("theta1 = 2*x + 3", "k")
-    assert m["sign"] and m["index"] and m["digit"]
-    assert all(t != "theta1 = 2*x + 3" for ts in m.values() for t in ts)
-    assert any(t in ("theta2 = 2*x + 3", "theta0 = 2*x + 3") for t in m["index"])
-    texts = harness.nonsense("theta1 = 2*x + 3", "k", [])
-    assert len(texts) >= 24 and len(set(texts)) == len(texts)
-    assert harness.nonsense("a", "k", []) == harness.nonsense("a", "k", [])  # seeded
+def test_harness_edits_are_single_edits_of_each_kind():
+    e = harness.edits("theta1 = 2*x + 3*sin(L4p) < 1e-6", ["theta1", "x", "L4p", "y"])
+    assert all(e[k] for k in harness.EDIT_KINDS)
+    assert "theta2 = 2*x + 3*sin(L4p) < 1e-6" in e["index"]
+    assert "theta1 = 2*x + 3*sin(L3p) < 1e-6" in e["index"]  # a digit inside a name
+    assert "theta1 = 2*x + 3*cos(L4p) < 1e-6" in e["trig"]
+    assert "theta1 = 2*x + 3*sin(L4p) < 1e+6" in e["threshold"]
+    assert "theta1 = 2*x + 3*sin(L4p) <= 1e-6" in e["threshold"]
+    assert "theta1 = 2*y + 3*sin(L4p) < 1e-6" in e["symbol"]
+    assert all(t != "theta1 = 2*x + 3*sin(L4p) < 1e-6" for ts in e.values() for t in ts)

@@ -1,9 +1,8 @@
 """The registers of every paper, built from data/registers/, and the mutation harness.
 
 ``test_manifestation[<id>]``: the check rejects the printed text (a finding) or accepts it
-(what holds), accepts the correction, rejects at least 20 generated nonsense texts and the
-correction with one sign, index or digit changed (analysis.audit.harness; a text that says the
-same as the correction is dropped as equivalent). An uncertain row's readings differ in verdict.
+(what holds), accepts the correction, and an uncertain row's readings differ in verdict; the
+mutation harness over every row is tests/audit/test_harness.py.
 ``test_cause[<id>]``: the cause's demonstration holds on the printed texts and fails once they
 are replaced by the corrections. The generated files are what the registers give; the cause set
 is the one before issue 20 with each deliberate change listed in the register's [[change]].
@@ -19,8 +18,8 @@ from pathlib import Path
 import pytest
 
 from analysis import audit
-from analysis.audit import harness, schema
 from analysis.audit import register as reg
+from analysis.audit import schema
 from analysis.audit.context import context
 from analysis.paths import data_dir
 
@@ -35,32 +34,17 @@ def _rows(kind: str):
                 yield pytest.param(p, row["id"], id=row["id"])
 
 
-def _vocabulary(paper: str) -> list[str]:
-    r = reg.register(paper)
-    words = {w for c in r.causes for m in c.manifestations for w in m.corrected.split()[:3]}
-    return sorted(words)[:200]
-
-
 @pytest.mark.parametrize(("paper", "mid"), list(_rows("manifestation")))
 def test_manifestation(paper, mid):
     m = reg.register(paper).manifestation(mid)
-    ctx = context(paper)
     if m.status == "holds":
         assert m.verify(m.checked), f"{mid}: what the paper prints fails its check"
     else:
-        assert not m.verify(m.checked), f"{mid}: the printed text passes the check"
+        assert not m.holds(m.checked), f"{mid}: the printed text passes the check"
     assert m.verify(m.corrected), f"{mid}: the correction {m.corrected!r} fails its check"
     if m.status == "uncertain":
-        assert len({m.verify(t) for t in m.readings}) == 2, f"{mid}: the readings agree"
-    # a generated text that passes must say what the correction says (checked only then)
-    texts = harness.nonsense(m.corrected, mid, _vocabulary(paper))
-    passed = [t for t in texts if m.verify(t) and not harness.equivalent(t, m, ctx)]
-    assert not passed, f"{mid}: nonsense passes: {passed[:3]}"
-    assert sum(not m.verify(t) for t in texts) >= 20
-    for how, ts in harness.mutants(m.corrected, mid).items():
-        for t in ts:
-            assert not m.verify(t) or harness.equivalent(t, m, ctx), (
-                f"{mid}: the correction with one {how} changed passes: {t!r}")
+        assert len({m.holds(t) for t in m.readings}) == 2, f"{mid}: the readings agree"
+    assert not m.verify("nonsense") and not m.verify(m.corrected + "  # note")
 
 
 @pytest.mark.parametrize(("paper", "cid"), list(_rows("cause")))
@@ -72,24 +56,6 @@ def test_cause(paper, cid):
         assert not cause.demonstrate(fixed), f"{cid}: demonstrated with the corrections printed"
     if cause.status in schema.COUNTED:
         assert cause.severity in schema.SEVERITIES and cause.consequence
-
-
-def test_what_holds_holds_and_can_fail():
-    """The checks that hold (seed 000's items): the printed text passes; mutated, a sample fails."""
-    items = [r for r in reg.items_table("grabber") if r["verdict"] == "holds"]
-    assert len(items) > 150
-    r = reg.register("grabber")
-    ms = [r.manifestation(i["id"]) for i in items]
-    assert all(m.verify(m.checked) for m in ms)
-    ctx = context("grabber")
-    tried = 0
-    for m in ms[::9]:
-        for ts in harness.mutants(m.printed, m.id).values():
-            for t in ts:
-                if not m.verify(t) or not harness.equivalent(t, m, ctx):
-                    tried += 1
-                    assert not m.verify(t), f"{m.id}: {t!r} passes"
-    assert tried >= 10
 
 
 @pytest.mark.parametrize("paper", PAPERS)
@@ -149,7 +115,10 @@ def test_old_causes_are_all_accounted_for():
     for p in PAPERS:
         r = reg.register(p)
         now = {c.id: c.status for c in r.causes}
-        changes = {ch["old"]: ch for ch in r.changes}
+        changes = {ch["old"]: ch for ch in r.changes if "old" in ch}
+        current = {c.id for c in r.causes} | {m.id for m in r.manifestations}
+        for ch in (ch for ch in r.changes if "old" not in ch):  # a change of a current row
+            assert ch["id"] in current and ch["why"].strip() and ch["issue"] >= 30, ch
         ids = {row["id"] for row in rows if row["paper"] == p}
         assert set(changes) <= ids, set(changes) - ids
         for row in (x for x in before if x["paper"] == p):

@@ -237,11 +237,11 @@ def _write(tmp_path: Path, text: str) -> Path:
 
 def test_loader_rejects_bad_files(tmp_path):
     good = (pk.data_dir() / "arms" / "picker.toml").read_text(encoding="utf-8")
-    with pytest.raises(ValueError, match="status 'guessed'"):
+    with pytest.raises(ValueError, match="x_A status: 'guessed' is not one of printed"):
         pk.load_picker_params(
             _write(tmp_path, good.replace('status = "assumed"', 'status = "guessed"', 1))
         )
-    with pytest.raises(ValueError, match="parameter x_A has no note"):
+    with pytest.raises(ValueError, match="x_A nope: unknown key; did you mean 'note'"):
         pk.load_picker_params(
             _write(tmp_path, good.replace(', note = "vertical guide', ', nope = "x', 1))
         )

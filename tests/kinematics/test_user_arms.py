@@ -319,7 +319,7 @@ def test_planar_2r_through_every_path(planar, tmp_path, capsys):
     ex = Explorer(str(planar))
     assert len(ex.target_sliders) == 2 and "ok" in ex.message.value
     ex.fk_mode.value = True
-    assert "FK: gripper at" in ex.message.value
+    assert "FK: joints (" in ex.message.value
     src, out = tmp_path / "t.csv", tmp_path / "o.csv"
     src.write_text("x_mm,y_mm\n300,100\n900,0\n")
     assert main(["ik", "--arm", str(planar), "--input", str(src), "--output", str(out)]) == 0
@@ -422,7 +422,7 @@ def test_arms_lists_every_arm_when_one_description_is_broken(data_copy, capsys):
     out = capsys.readouterr().out
     lines = {line.split()[0]: line for line in out.splitlines()}
     assert {"grabber", "palletizer", "picker", "gr1", "measured"} <= set(lines)
-    assert "not loadable" in lines["broken"] and "status 'guessed'" in lines["broken"]
+    assert "not loadable" in lines["broken"] and "status: 'guessed'" in lines["broken"]
     docs = {d["name"]: d for d in _json(capsys, "arms")}
     assert docs["measured"]["parameters"]["L1"]["status"] == "measured"
     assert "error" in docs["broken"] and "error" not in docs["palletizer"]

@@ -72,6 +72,9 @@ def test_section_4_2_position_readings_invert_the_planar_chain():
     r = a2 * sp.cos(t2) + a3 * sp.cos(t2 + t3) + a4 * sp.cos(t234)
     z = a2 * sp.sin(t2) + a3 * sp.sin(t2 + t3) + a4 * sp.sin(t234)
     sub = {s["px"]: r * sp.cos(t1), s["py"]: r * sp.sin(t1), s["pz"]: z}
+    # sec. 4.2's notation: c_i, s_i the cosine and sine of joint i (s3 the root with s3 > 0)
+    sub.update({s[f"{f}{j}"]: fn(s[f"theta{j}"]) for j in ("1", "2", "3", "234")
+                for f, fn in (("c", sp.cos), ("s", sp.sin))})  # fmt: skip
     for key, truth in (("4.2-c3", sp.cos(t3)), ("4.2-s2", sp.sin(t2)), ("4.2-c2", sp.cos(t2))):
         rhs = g.parse(g.EQUATIONS[key]["rhs"]).subs(sub)
         assert sp.simplify(sp.expand_trig(rhs - truth)) == 0, key

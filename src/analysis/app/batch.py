@@ -2,13 +2,13 @@
 
 ``ik --input IN.csv --output OUT.csv``: the input (columns :func:`input_columns`: x_mm,
 y_mm, z_mm; for a pose also its angles in degrees; any other columns too) is read strictly
-(:func:`analysis.app.safe_io.iter_record_chunks`: a missing, duplicate or ragged column is an
+(:func:`analysis.safe_io.iter_record_chunks`: a missing, duplicate or ragged column is an
 error naming its true line), solved chunk by chunk, and written to a temporary file that
-replaces the output only when everything succeeded (:func:`~analysis.app.safe_io.
+replaces the output only when everything succeeded (:func:`~analysis.safe_io.
 atomic_writer`; ``-`` writes standard output as it goes); the output may not be the input,
 nor a device or a FIFO. Memory is bounded by one chunk whatever the file size and the cell
 widths: at most ``chunk_rows`` records and about 32 MB of cell text
-(:data:`analysis.app.safe_io._read.CHUNK_BYTES`), read, solved and written before the next.
+(:data:`analysis.safe_io._read.CHUNK_BYTES`), read, solved and written before the next.
 
 Nothing of the input is lost: every input column is echoed byte for byte (the cell text as
 read, never re-formatted: ``100.12345678901234`` stays that), under its own name; a name that
@@ -40,7 +40,7 @@ from pathlib import Path
 import numpy as np
 
 from analysis import validate
-from analysis.app.safe_io import InputError, check_paths, iter_record_chunks, output_stream
+from analysis.safe_io import InputError, check_paths, iter_record_chunks, output_stream
 from analysis.kinematics.arm import Arm
 from analysis.kinematics.status import STATUS_TEXT, Status
 

@@ -409,7 +409,7 @@ def _missing_branches(arm, target, names, sols, args) -> list[dict]:
 
 # --- stl ------------------------------------------------------------------------------------------
 def _cmd_stl(args: argparse.Namespace) -> int:
-    from analysis.app.safe_io import check_paths, write_many_atomic
+    from analysis.safe_io import check_paths, write_many_atomic
     from analysis.plc.dialects import DIALECTS
     from analysis.plc.generate import generate
     from analysis.plc.memmap import MemoryMap

@@ -273,7 +273,7 @@ def _cmd_stl_run(args: argparse.Namespace) -> int:
 
 def _cmd_stl_run_st(args: argparse.Namespace) -> int:
     """``--dialect st|plcopen-xml`` (:mod:`analysis.plc.machine.offline`)."""
-    from analysis.app.safe_io import check_paths, read_table, write_text_atomic
+    from analysis.safe_io import check_paths, read_table, write_text_atomic
     from analysis.plc.machine import offline
 
     if args.cpu is not None:

@@ -20,7 +20,7 @@ def cmd_urdf(args: argparse.Namespace) -> int:
     from analysis.kinematics.urdf import arm_urdf
 
     if args.output is not None:
-        from analysis.app.safe_io import check_paths, write_text_atomic
+        from analysis.safe_io import check_paths, write_text_atomic
 
         check_paths(inputs=[], outputs=[args.output], make_parents=True)
     text = arm_urdf(args.arm)

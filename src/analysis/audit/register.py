@@ -22,6 +22,7 @@ import tomllib
 from functools import cache
 from pathlib import Path
 
+from analysis.audit.equivalence import same
 from analysis.audit.schema import (
     COUNTED,
     COUNTING_RULE,
@@ -141,6 +142,11 @@ def _manifestation(cause: dict, m: dict, ctx, check) -> Manifestation:
             memo[text] = check(spec, text, ctx)
         return memo[text]
 
+    declared = (corrected, *m.get("equivalent", ()))
+
+    def agrees(text: str) -> bool:
+        return any(same(text, ref, spec, ctx) for ref in declared if ref)
+
     readings = tuple(m.get("readings", ()))
     mm = Manifestation(
         id=f"{cause['id']}/{m['id']}", cause=cause["id"], status=cause["status"],
@@ -149,7 +155,7 @@ def _manifestation(cause: dict, m: dict, ctx, check) -> Manifestation:
         alternatives=tuple(m.get("alternatives", ())),
         rests_on=tuple(m.get("rests_on", cause.get("rests_on", ()))),
         equivalent=tuple(m.get("equivalent", ())), source=repr(m["printed"]) if not
-        isinstance(m["printed"], str) else m["printed"], spec=spec, result=result,
+        isinstance(m["printed"], str) else m["printed"], spec=spec, result=result, agrees=agrees,
     )  # fmt: skip
     ns = {
         "printed": result(mm.checked), "corrected": result(corrected),
@@ -188,15 +194,23 @@ def each_cells(e: dict, paper):
                        f"{rec.location.split(',')[0]} row {r} {c}", {"row": r, "column": c})
 
 
-def _each(cause: dict, e: dict, ctx, check) -> list[Manifestation]:
-    """The printed cells that hold (a ``holds`` cause's ``[[cause.each]]``): one manifestation
-    per cell; the cells that fail are other causes' manifestations (a test checks it)."""
+def _each(cause: dict, e: dict, ctx, check, explained: set[str]) -> list[Manifestation]:
+    """The printed cells a ``holds`` cause's ``[[cause.each]]`` names: one manifestation per
+    cell, but for the cells another cause explains (its manifestations name them,
+    ``explained``). A cell that fails its check and that no cause explains is an error naming
+    the cell: none is dropped."""
     out = []
     for slug, ref, where, cell in each_cells(e, ctx.paper):
+        if ref in explained:
+            continue
         m = {"id": slug, "printed": ref, "check": {**e["check"], **cell}, "location": where}
         mm = _manifestation(cause, m, ctx, check)
-        if mm.verify(mm.printed):
-            out.append(mm)
+        if not mm.holds(mm.printed):
+            raise ValueError(
+                f"unexplained: {ctx.paper.id} {where} ({ref}): the printed cell fails its check "
+                f"({cause['id']}, [[cause.each]]) and no cause explains it"
+            )
+        out.append(mm)
     return out
 
 
@@ -221,9 +235,11 @@ def register(paper: str) -> Register:
     raw = tomllib.loads(source_path(paper).read_text(encoding="utf-8"))
     ctx = context(paper)
     causes = []
+    named = {c["id"]: [_manifestation(c, m, ctx, check) for m in c.get("manifestation", ())]
+             for c in raw["cause"]}  # fmt: skip
+    explained = {m.source for ms in named.values() for m in ms}
     for c in raw["cause"]:
-        ms = [_manifestation(c, m, ctx, check) for m in c.get("manifestation", ())]
-        ms += [x for e in c.get("each", ()) for x in _each(c, e, ctx, check)]
+        ms = named[c["id"]] + [x for e in c.get("each", ()) for x in _each(c, e, ctx, check, explained)]  # noqa: E501
         ns = {"facts": _Namespace(ctx.fact)}
         if ms:  # a cause's template may name its first manifestation's checks
             ns.update(printed=ms[0].result(ms[0].checked), corrected=ms[0].result(ms[0].corrected))
@@ -362,7 +378,7 @@ def _store_digests(papers, files: dict[Path, str]) -> None:
 
 def write_all(papers=None) -> list[str]:
     """Rewrite every register CSV, the item table and the README block; what changed."""
-    from analysis.app.safe_io import write_many_atomic
+    from analysis.safe_io import write_many_atomic
 
     papers = list(papers or available())
     files = generated(papers)

@@ -4,9 +4,9 @@ A :class:`Cause` is one thing the paper got wrong (or left out, or cannot be dec
 once; each place it shows is a :class:`Manifestation` with the printed text (a reference into
 ``analysis.papers``), the corrected text and ``verify(text) -> bool``, a shared check kind
 (:mod:`analysis.audit.kinds`) that decides a text by computation. ``demonstrate()`` is the
-cause's test: the printed forms fail and the corrections pass; it fails once the printed texts
-are replaced by the corrected ones. An ``uncertain`` cause demonstrates the ambiguity instead:
-its readings differ in what they imply (one is right, one is not).
+cause's test: the printed forms fail their checks and the corrections pass; it fails once the
+printed texts are replaced by the corrected ones. An ``uncertain`` cause demonstrates the
+ambiguity instead: its readings differ in what they imply (one is right, one is not).
 
 Statuses (:data:`STATUSES`): ``error`` the paper states something wrong; ``omission`` it leaves
 out what its claim needs; ``unsupported`` a claim with no evidence in the paper; ``uncertain``
@@ -126,9 +126,19 @@ class Manifestation:
     """The reference(s) into the paper the printed text comes from (``@eq12[2,2]``)."""
     spec: Mapping = field(default_factory=dict, repr=False, compare=False)
     result: Callable = field(default=lambda text: None, repr=False, compare=False)
+    agrees: Callable = field(default=lambda text: False, repr=False, compare=False)
+    """``agrees(text)``: the text is the same statement as the correction (or as one the
+    register declares ``equivalent``), :func:`analysis.audit.equivalence.same`."""
+
+    def holds(self, text: str) -> bool:
+        """Is ``text`` true of the paper's model? The check kind's computation alone (a
+        tautology is true: :meth:`verify` is the question a correction answers)."""
+        return bool(self.result(text))
 
     def verify(self, text: str) -> bool:
-        return bool(self.result(text))
+        """Does ``text`` state what the paper should have printed: the same statement as the
+        correction, and true by the check's computation?"""
+        return bool(self.agrees(text)) and self.holds(text)
 
     @property
     def checked(self) -> str:
@@ -184,15 +194,15 @@ class Cause:
         texts = texts or {}
         ms = self.manifestations
         if self.status == "holds":
-            return all(m.verify(texts.get(m.id, m.checked)) for m in ms) and self.extra()
+            return all(m.holds(texts.get(m.id, m.checked)) for m in ms) and self.extra()
         if self.status == "uncertain":  # the print's readings differ (with a text printed: one)
             return all(
-                len({m.verify(t) for t in ((texts[m.id],) if m.id in texts else m.readings)}) == 2
+                len({m.holds(t) for t in ((texts[m.id],) if m.id in texts else m.readings)}) == 2
                 for m in ms
             ) and self.extra()
         return (
             bool(ms)
-            and all(not m.verify(texts.get(m.id, m.checked)) and m.verify(m.corrected) for m in ms)
+            and all(not m.holds(texts.get(m.id, m.checked)) and m.verify(m.corrected) for m in ms)
             and self.extra()
         )
 

@@ -51,8 +51,8 @@ provenance of every number, which is what an audit needs.
 
 from __future__ import annotations
 
-import csv
 import math
+import re
 import tomllib
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -60,22 +60,28 @@ from functools import cache
 from pathlib import Path
 
 from analysis import validate
+from analysis.kinematics import schema
 from analysis.kinematics.dh import DHRow, DHTable
+from analysis.kinematics.schema import IDENTIFIER, DescriptionError, Reader, identifier_problem
+from analysis.kinematics.tables import table_path, table_value
+from analysis.kinematics.urdf_in import description_text as urdf_description_text
 from analysis.paths import data_dir
+from analysis.safe_io import read_text
 
 __all__ = [
     "DERIVED",
     "HOME_MODES",
     "JOINT_KINDS",
+    "MAX_DESCRIPTION_BYTES",
     "MAX_PULSES_PER_REV",
     "MOTION_KEYS",
     "RATE_KEYS",
     "STATUSES",
     "ArmDescription",
     "AxisSpec",
+    "DescriptionError",
     "JointSpec",
     "ParamSpec",
-    "check_pulses_per_rev",
     "load_description",
 ]
 
@@ -85,6 +91,9 @@ printed: every figure and table that uses it says so), or measured (on the robot
 user's own arm)."""
 JOINT_KINDS = ("revolute", "prismatic")
 MAX_PULSES_PER_REV = validate.MAX_PULSES_PER_REV
+MAX_DESCRIPTION_BYTES = 1 << 20
+"""Largest description file read [bytes] (1 MiB: the seed arms' are 3-7 kB)."""
+IDENTIFIER_RE = re.compile(r"[A-Za-z](?:_?[A-Za-z0-9])*")
 DERIVED = "derived"
 """The ``closed_form`` of a description that asks for one derived from its rows (also what
 a missing ``closed_form`` means where there are rows)."""
@@ -220,14 +229,15 @@ class ArmDescription:
         """True if the description gives D-H rows (else its closed form gives the FK)."""
         return bool(self.rows)
 
+    derive: dict = field(default_factory=dict, compare=False)
+    """The ``[derive]`` table: decisions for a closed form derived from the rows
+    (:mod:`analysis.kinematics.derive.families`)."""
+
     @property
     def statuses(self) -> dict[str, str]:
         """Provenance of every parameter and axis, by name."""
         return {**{k: p.status for k, p in self.parameters.items()},
                 **{k: a.status for k, a in self.axes.items()}}  # fmt: skip
-    derive: dict = field(default_factory=dict, compare=False)
-    """The ``[derive]`` table: decisions for a closed form derived from the rows
-    (:mod:`analysis.kinematics.derive.families`)."""
 
     @property
     def values(self) -> dict[str, float]:
@@ -280,113 +290,6 @@ def _resolve(v, values: dict, arm: str):
     return float(v)
 
 
-def check_pulses_per_rev(value, where: str) -> int:
-    """A whole number of pulses per revolution in 1 .. :data:`MAX_PULSES_PER_REV`
-    (:func:`analysis.validate.pulses_per_rev`)."""
-    try:
-        return validate.pulses_per_rev(value, "pulses_per_rev")
-    except ValueError as exc:
-        raise ValueError(f"{where}: {exc}") from None
-
-
-def _table_path(name: str, folder: Path) -> Path:
-    """A table named by a description: next to the description, else in ``data/``."""
-    near = folder / name
-    return near if near.is_file() else data_dir() / name
-
-
-def _table_value(spec: dict, base: Path, tables: dict, where: str) -> float:
-    name = spec["table"]
-    path = Path(tables.get(name, _table_path(name, base)))
-    try:
-        with path.open(newline="", encoding="utf-8") as fh:
-            reader = csv.DictReader(fh)
-            header = reader.fieldnames or []
-            if len(set(header)) != len(header):
-                raise ValueError(f"{path}: duplicate column names in the header {header}")
-            rows = list(reader)
-    except FileNotFoundError:
-        raise ValueError(f"{where}: table {path} not found") from None
-    col = spec["column"]
-    for key in [*spec.get("match", {}), col]:
-        if key not in header:
-            raise ValueError(f"{where}: {path} has no column {key!r} (columns: {header})")
-    for n, row in enumerate(rows, start=2):
-        if None in row or None in row.values():
-            raise ValueError(f"{path} line {n}: {len(header)} columns expected")
-    hits = [r for r in rows if all(r[k] == str(v) for k, v in spec.get("match", {}).items())]
-    if len(hits) != 1:
-        raise ValueError(f"{where}: {len(hits)} rows of {path} match {spec.get('match')}")
-    return validate.parse_real(hits[0][col], f"{where}: {path} column {col}")
-
-
-def _number(spec, base: Path, tables: dict, where: str) -> float:
-    if isinstance(spec, dict) and "table" in spec:
-        return _table_value(spec, base, tables, where)
-    if isinstance(spec, dict):
-        if "value" not in spec:
-            raise ValueError(f"{where}: needs a value (a number, or a table to read it from)")
-        spec = spec["value"]
-    if isinstance(spec, (list, dict, str)):  # not a number at all (the words used before)
-        raise ValueError(f"{where}: {spec!r} is not a finite number")
-    return validate.real(spec, where)
-
-
-def _text(d: dict, key: str, where: str, default: str) -> str:
-    v = d.get(key, default)
-    if not isinstance(v, str):
-        raise ValueError(f"{where}: {key} = {v!r} must be a string")
-    return v
-
-
-def _table(d: dict, key: str, where: str) -> dict:
-    """``[key]``: a table (a missing key is an empty one)."""
-    v = d.get(key, {})
-    if not isinstance(v, dict):
-        raise ValueError(f"{where}: [{key}] must be a table, not {v!r}")
-    return v
-
-
-def _tables(d: dict, key: str, where: str) -> list[dict]:
-    """``[[key]]``: an array of tables (a missing key is an empty one)."""
-    v = d.get(key, [])
-    if not isinstance(v, list) or not all(isinstance(t, dict) for t in v):
-        raise ValueError(f"{where}: {key} must be an array of tables ([[{key}]]), not {v!r}")
-    return v
-
-
-def _row_value(v, where: str, key: str):
-    """A D-H row's length: a number [mm] or the name of a parameter."""
-    if isinstance(v, str):
-        return v
-    return validate.length_mm(v, f"{where} {key}")
-
-
-def _row_angle(v, where: str, key: str) -> float:
-    return validate.real(v, f"{where} {key}", "deg", lo=-validate.MAX_JOINT_DEG,
-                         hi=validate.MAX_JOINT_DEG, what="ten turns")  # fmt: skip
-
-
-def _check_rows(rows: list[dict], path: Path) -> tuple[dict, ...]:
-    out = []
-    for i, r in enumerate(rows, start=1):
-        where = f"{path.name} row {i}"
-        kind = r.get("kind", "revolute")
-        if kind not in ("revolute", "prismatic", "fixed"):
-            raise ValueError(f"{where}: kind {kind!r} is not 'revolute', 'prismatic' or 'fixed'")
-        for key in ("link", "joint"):
-            _text(r, key, where, "")
-        row = dict(r)
-        for key in ("alpha_deg", "theta_offset_deg"):
-            if key in r:
-                row[key] = _row_angle(r[key], where, key)
-        for key in ("a", "d"):
-            if key in r:
-                row[key] = _row_value(r[key], where, key)
-        out.append(row)
-    return tuple(out)
-
-
 def description_path(name: str | Path) -> Path:
     """The file of arm ``name``: ``data/arms/<name>.toml`` for a name, or ``name`` itself
     for the path of a description file (anything ending in ``.toml`` or holding a folder
@@ -399,9 +302,11 @@ def description_path(name: str | Path) -> Path:
     urdf = text.lower().endswith(".urdf")  # a URDF's chain (analysis.kinematics.urdf_in)
     if isinstance(name, Path) or text.endswith(".toml") or urdf or "/" in text or "\\" in text:
         path = Path(text).expanduser()
-        if not path.is_file():
+        if not path.exists():
             raise ValueError(f"no arm description {text!r}: no such file")
         return path
+    if not IDENTIFIER_RE.fullmatch(text):
+        raise ValueError(f"no arm {text!r}: an arm name is {IDENTIFIER} (or give a *.toml path)")
     path = data_dir() / "arms" / f"{text}.toml"
     if not path.is_file():
         known = sorted(p.stem for p in (data_dir() / "arms").glob("*.toml"))
@@ -414,7 +319,11 @@ def description_path(name: str | Path) -> Path:
 
 def load_description(name: str | Path, tables: dict | None = None) -> ArmDescription:
     """Read ``data/arms/<name>.toml`` (or the description file at path ``name``) once per
-    version of it and of its tables; see :func:`_load` for the arguments."""
+    version of it and of the tables it may read; see :func:`_load` for the arguments.
+
+    Raises ValueError (:class:`~analysis.kinematics.schema.DescriptionError`, or
+    :class:`analysis.safe_io.InputError` for a file that cannot be read) in one line naming
+    the file, the key and the rule."""
     path = description_path(name)
     near = [*path.parent.glob("*.csv"), *data_dir().glob("*.csv")]
     files = [path, *(Path(v) for v in (tables or {}).values()), *near]
@@ -425,225 +334,242 @@ def load_description(name: str | Path, tables: dict | None = None) -> ArmDescrip
 def _version(path: Path) -> tuple[int, int]:
     try:
         st = path.stat()
-    except FileNotFoundError:
+    except OSError:
         return (-1, -1)
     return (st.st_mtime_ns, st.st_size)
 
 
 @cache
 def _load(name: str, tables: tuple, stamp: tuple) -> ArmDescription:
-    """Read ``data/arms/<name>.toml``.
+    """Read and check the description file ``name`` against the schema
+    (:mod:`analysis.kinematics.schema`).
 
     Parameters
     ----------
     name : str
-        Arm name (file stem), or a path to a TOML file.
-    tables : dict, optional
+        The description's path.
+    tables : tuple of (str, str)
         Replacement paths for the tables a description reads, by file name (e.g.
-        ``{"table3.csv": "my_table3.csv"}`` for the command line's ``--params``).
-
-    Raises ``ValueError`` naming the file and the entry for anything malformed.
+        ``{"table3.csv": "my_table3.csv"}``), chosen by the caller.
     """
     path = Path(name)
+    file = path.name
+    if path.suffix.lower() == ".urdf":  # a URDF's serial chain, converted (bounded, no DTD)
+        text = urdf_description_text(path)
+    else:
+        text = read_text(path, MAX_DESCRIPTION_BYTES, "arm description")
     try:
-        if path.suffix.lower() == ".urdf":  # converted to this format (no code run, bounded)
-            from analysis.kinematics.urdf_in import description_text
-
-            d = tomllib.loads(description_text(path))
-        else:
-            d = tomllib.loads(path.read_text(encoding="utf-8"))
+        d = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise ValueError(f"{path}: not valid TOML ({exc})") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise ValueError(f"{path}: cannot read ({exc})") from None
-    tables = dict(tables or {})
-    base = path.parent
-    params = {}
-    raw_params = d.get("parameters", {})
-    if not isinstance(raw_params, dict):
-        raise ValueError(f"{path.name}: [parameters] must be a table, not {raw_params!r}")
-    for key, spec in raw_params.items():
-        where = f"{path.name} parameter {key}"
-        status = _status(spec, where)
-        if isinstance(spec, dict):
-            unit = _text(spec, "unit", where, "mm")
-            source = _text(spec, "source", where, _text(spec, "note", where, ""))
-        else:
-            unit, source = "mm", ""
-        value = _number(spec, base, tables, where)
-        if unit == "mm":
-            value = validate.length_mm(value, where)
-        params[key] = ParamSpec(key, value, unit, status, source)
-    raw_axes = d.get("axes", {})
-    if not isinstance(raw_axes, dict):
-        raise ValueError(f"{path.name}: [axes] must be a table, not {raw_axes!r}")
-    axes = {}
-    for key, spec in raw_axes.items():
-        where = f"{path.name} axis {key}"
-        value = spec.get("value") if isinstance(spec, dict) else spec
-        ok = isinstance(value, list) and len(value) == 3
-        ok = ok and all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in value)
-        if not ok or not all(math.isfinite(v) for v in value) or not any(value):
-            raise ValueError(f"{where}: {value!r} is not a direction (three finite numbers)")
-        note = _text(spec, "note", where, _text(spec, "source", where, "")) if isinstance(
-            spec, dict) else ""  # fmt: skip
-        axes[key] = AxisSpec(key, tuple(float(v) for v in value), _status(spec, where), note)
-    rows = _check_rows(_tables(d, "rows", path.name), path)
+        raise DescriptionError(file, "", f"not valid TOML ({exc})") from None
+    except RecursionError:
+        raise DescriptionError(file, "", "nested deeper than the TOML reader follows") from None
+    r = Reader(d, file)
+    r.check_keys(schema.TOP)
+    ctx = _Context(path, file, dict(tables))
+    params = {k: _parameter(r.sub("parameters"), k, ctx) for k in r.sub("parameters").data}
+    axes = {k: _axis(r.sub("axes"), k) for k in r.sub("axes").data}
+    rows = tuple(_row(t, params) for t in r.tables("rows"))
     if "rows" in d and not rows:
-        raise ValueError(f"{path}: [[rows]] is empty")
-    joints = tuple(
-        _joint(j, path, base, tables, i)
-        for i, j in enumerate(_tables(d, "joints", path.name), start=1)
-    )
-    if not joints:
-        raise ValueError(f"{path}: no [[joints]] (one per joint variable)")
-    names = [j.name for j in joints]
-    if len(set(names)) != len(names):
-        raise ValueError(f"{path}: [[joints]] repeat a name ({names})")
-    if rows:
-        moving = [r.get("kind", "revolute") for r in rows if r.get("kind", "revolute") != "fixed"]
-        if len(joints) != len(moving):
-            raise ValueError(
-                f"{path}: {len(joints)} [[joints]] for {len(moving)} moving rows "
-                "(revolute or prismatic)"
-            )
-        for j, kind in zip(joints, moving, strict=True):
-            if j.kind != kind:
-                raise ValueError(
-                    f"{path} joint {j.name}: kind {j.kind!r}, but its D-H row is {kind!r}"
-                )
-    # none named: derived from the D-H rows (a description without rows names its own);
-    # the loader (analysis.kinematics.loader) resolves it: a description is data
-    cf_name = _text(d, "closed_form", path.name, DERIVED if rows else path.stem)
-    if not cf_name:
-        raise ValueError(f"{path}: closed_form = {cf_name!r} must name a closed form")
-    convention = _text(d, "convention", path.name, "standard")
-    if convention not in ("standard", "modified"):
-        raise ValueError(f"{path.name}: convention {convention!r} is not 'standard' or 'modified'")
+        raise DescriptionError(file, "[[rows]]", "is empty")
+    joints = tuple(_joint(t, ctx) for t in r.tables("joints"))
+    _check_chain(file, rows, joints)
+    closed_form = r.text("closed_form", DERIVED if rows else _stem(path))
+    if not closed_form:
+        raise DescriptionError(file, "closed_form", "must name a closed form")
     desc = ArmDescription(
-        _text(d, "name", path.name, path.stem),
-        _text(d, "title", path.name, path.stem),
-        _text(d, "paper", path.name, ""),
-        cf_name,
-        convention,
+        r.ident("name", _stem(path)),
+        r.text("title", path.stem),
+        r.text("paper", ""),
+        closed_form,
+        r.choice("convention", ("standard", "modified"), "standard"),
         params,
         rows,
         joints,
         path,
         axes,
-        dict(_table(d, "derive", path.name)),
+        schema.derive_decisions(r.sub("derive", schema.DERIVE)),
     )
     if rows:
         desc.dh_table()  # every row resolves
     return desc
 
 
-def _status(spec, where: str) -> str:
-    status = spec.get("status", "printed") if isinstance(spec, dict) else "printed"
-    if status not in STATUSES:
-        raise ValueError(f"{where}: status {status!r} is not one of {', '.join(STATUSES)}")
-    return status
+class _Context:
+    """Where a description is and which tables its caller replaced."""
+
+    def __init__(self, path: Path, file: str, tables: dict) -> None:
+        self.path, self.file, self.tables = path, file, tables
+
+    def number(self, r: Reader, key: str) -> float:
+        """A number given bare, as ``{ value = ... }`` or read from a table."""
+        spec = r.raw(key)
+        if isinstance(spec, dict):
+            sub = r.sub(key)
+            if "table" in spec:
+                name = spec["table"]
+                where = sub.key("table")
+                path = (Path(self.tables[name]) if name in self.tables else
+                        table_path(name, self.path, self.file, where))  # fmt: skip
+                return table_value(spec, path, self.file, where)
+            if "value" not in spec:
+                raise r.error(key, "needs a value (a number, or a table to read it from)")
+            return sub.number("value")
+        return r.number(key)
 
 
-def _limits(j: dict, key: str, default, where: str, unit: str) -> tuple[float, float]:
-    raw = j.get(key, default)
-    if raw is None:
-        raise ValueError(f"{where}: a prismatic joint needs its stroke, {key} = [lower, upper]")
-    if not isinstance(raw, (list, tuple)) or len(raw) != 2:
-        raise ValueError(f"{where}: {key} = {raw!r} must be two numbers [lower, upper]")
-    if unit == "deg":
-        lo, hi = (_row_angle(v, where, key) for v in raw)
-    else:
-        lo, hi = (validate.length_mm(v, f"{where} {key}") for v in raw)
-    if not lo < hi:
-        raise ValueError(f"{where}: {key} [{lo:g}, {hi:g}] must have lower < upper")
-    return lo, hi
+def _stem(path: Path) -> str:
+    """The file's stem as a name: other characters than letters and digits become single
+    underscores (``my-arm.toml`` is ``my_arm``)."""
+    return "_".join(p for p in re.split(r"[^A-Za-z0-9]+", path.stem) if p) or "arm"
 
 
-def _joint(j: dict, path: Path, base: Path, tables: dict, index: int) -> JointSpec:
-    """One [[joints]] entry (the ``index``-th)."""
-    name = j.get("name")
-    if not isinstance(name, str) or not name:
-        raise ValueError(f"{path.name} joint {index}: needs a name (a string), got {name!r}")
-    where = f"{path.name} joint {name}"
-    if "pulses_per_rev" not in j:
-        raise ValueError(f"{where}: needs pulses_per_rev (a whole number, or a table)")
-    kind = _text(j, "kind", where, "revolute")
-    if kind not in JOINT_KINDS:
-        raise ValueError(f"{where}: kind {kind!r} is not one of {', '.join(JOINT_KINDS)}")
-    ppr = check_pulses_per_rev(_number(j["pulses_per_rev"], base, tables, where), where)
-    pstatus = _status(j["pulses_per_rev"], f"{where} pulses_per_rev")
+def _status(r: Reader, key: str = "status", default: str = "printed") -> str:
+    return r.choice(key, STATUSES, default)
+
+
+def _source(r: Reader) -> str:
+    return r.text("source", r.text("note", ""))
+
+
+def _parameter(params: Reader, key: str, ctx: _Context) -> ParamSpec:
+    """One ``[parameters]`` entry: a length [mm], bare or ``{ value | table, unit, ... }``."""
+    if identifier_problem(key):
+        raise params.error(key, f"{identifier_problem(key)} (a parameter name is "
+                           f"{IDENTIFIER})")  # fmt: skip
+    spec = params.raw(key)
+    if not isinstance(spec, dict):
+        return ParamSpec(key, params.length(key), "mm", "printed", "")
+    r = params.sub(key, schema.PARAMETER)
+    unit = r.choice("unit", tuple(validate.LENGTH_UNITS), "mm")
+    value = ctx.number(params, key)
+    return ParamSpec(key, r.length("value", value, unit), "mm", _status(r), _source(r))
+
+
+def _axis(axes: Reader, key: str) -> AxisSpec:
+    if identifier_problem(key):
+        raise axes.error(key, f"{identifier_problem(key)} (an axis name is {IDENTIFIER})")
+    spec = axes.raw(key)
+    if not isinstance(spec, dict):
+        return AxisSpec(key, axes.vector3(key), "printed", "")
+    r = axes.sub(key, schema.AXIS)
+    return AxisSpec(key, r.vector3("value"), _status(r), r.text("note", r.text("source", "")))
+
+
+def _row(r: Reader, params: dict) -> dict:
+    """One D-H row, as written, its values checked: angles [deg], lengths [mm] or the name
+    of a parameter."""
+    r.check_keys(schema.ROW)
+    r.choice("kind", ("revolute", "prismatic", "fixed"), "revolute")
+    r.label("link")
+    if "joint" in r:
+        r.ident("joint")
+    row = dict(r.data)
+    for key in ("alpha_deg", "theta_offset_deg"):
+        if key in r:
+            row[key] = r.angle_deg(key)
+    for key in ("a", "d"):
+        v = r.raw(key)
+        if isinstance(v, str):
+            if v not in params:
+                raise r.error(key, f"{v!r} is not a parameter (parameters: "
+                              f"{', '.join(params) or 'none'})")  # fmt: skip
+        elif key in r:
+            row[key] = r.length(key)
+    return row
+
+
+def _joint(r: Reader, ctx: _Context) -> JointSpec:
+    """One ``[[joints]]`` entry."""
+    r.check_keys(schema.JOINT)
+    name = r.ident("name")
+    r.where = f"joint {name}"
+    kind = r.choice("kind", JOINT_KINDS, "revolute")
+    if "pulses_per_rev" not in r:
+        raise r.error("pulses_per_rev", "is missing (a whole number, or a table)")
+    pspec = r.sub("pulses_per_rev", schema.NUMBER_SPEC) if isinstance(
+        r.raw("pulses_per_rev"), dict) else None  # fmt: skip
+    if pspec is not None and "resolution_deg" in pspec:
+        pspec.number("resolution_deg", lo=0.0, hi=360.0, unit="deg")
+    try:
+        ppr = validate.pulses_per_rev(ctx.number(r, "pulses_per_rev"), "")
+    except validate.InvalidValue as exc:
+        raise r.error("pulses_per_rev", str(exc).lstrip(" =")) from None
     lead = lead_status = None
     if kind == "revolute":
-        if "limits_mm" in j or "lead_mm" in j:
-            raise ValueError(f"{where}: limits_mm and lead_mm are for prismatic joints")
-        lo, hi = (math.radians(v) for v in _limits(j, "limits_deg", [-180.0, 180.0], where, "deg"))
+        for key in ("limits_mm", "lead_mm"):
+            if key in r:
+                raise r.error(key, "is for a prismatic joint (kind = \"prismatic\")")
+        lo, hi = (math.radians(v) for v in (r.pair("limits_deg", r.angle_deg)
+                                            if "limits_deg" in r else (-180.0, 180.0)))  # fmt: skip
     else:
-        if "limits_deg" in j:
-            raise ValueError(f"{where}: a prismatic joint's stroke is limits_mm, not limits_deg")
-        lo, hi = _limits(j, "limits_mm", None, where, "mm")
-        if "lead_mm" not in j:
-            raise ValueError(
-                f"{where}: a prismatic joint needs lead_mm (travel per motor revolution)"
-            )
-        lead = _number(j["lead_mm"], base, tables, f"{where} lead_mm")
-        lead_status = _status(j["lead_mm"], f"{where} lead_mm")
-        if not lead > 0:
-            raise ValueError(f"{where}: lead_mm = {lead:g} must be > 0 mm")
+        if "limits_deg" in r:
+            raise r.error("limits_deg", "a prismatic joint's stroke is limits_mm")
+        for key in ("limits_mm", "lead_mm"):
+            if key not in r:
+                raise r.error(key, "is missing: a prismatic joint needs its stroke "
+                              "(limits_mm = [lower, upper]) and lead_mm")  # fmt: skip
+        lo, hi = r.pair("limits_mm", r.length)
+        if isinstance(r.raw("lead_mm"), dict):
+            lead_status = _status(r.sub("lead_mm", schema.NUMBER_SPEC))
+        lead = ctx.number(r, "lead_mm")
+        if not lead > 0 or lead > validate.MAX_LENGTH_MM:
+            raise r.error("lead_mm", f"{lead:g} mm must be > 0 mm and at most "
+                          f"{validate.MAX_LENGTH_MM:g} mm")  # fmt: skip
     return JointSpec(
-        name,
-        ppr,
-        lo,
-        hi,
-        _text(j, "limits_status", where, ""),
-        pstatus,
-        kind,
-        lead,
-        lead_status or "",
-        **_motion(j, where, kind, lo, hi),
-    )
+        name, ppr, lo, hi, r.text("limits_status"), _status(pspec) if pspec else "printed",
+        kind, lead, lead_status or "", **_motion(r, kind, lo, hi),
+    )  # fmt: skip
 
 
-def _provenance(spec: dict, where: str) -> tuple[str, str]:
-    status = _status(spec, where)
-    return status, _text(spec, "source", where, _text(spec, "note", where, ""))
-
-
-def _motion(j: dict, where: str, kind: str, lo: float, hi: float) -> dict:
+def _motion(r: Reader, kind: str, lo: float, hi: float) -> dict:
     """The joint's motion limits and homing (``max_velocity``, ``max_acceleration``,
     ``max_jerk``, ``home``), converted to the joint's units (rad | mm) by
-    :mod:`analysis.validate`; absent keys stay None."""
+    :func:`analysis.validate.rate`; absent keys stay None."""
     out: dict = {"sources": {}}
     for order, key in enumerate(RATE_KEYS, start=1):
-        if key not in j:
+        if key not in r:
             continue
-        spec = j[key]
-        if not isinstance(spec, dict) or "value" not in spec or "unit" not in spec:
-            raise ValueError(f"{where}: {key} must be {{ value = ..., unit = ..., status = ..., "
-                             "source = ... }}")  # fmt: skip
-        out[key] = validate.rate(spec["value"], spec["unit"], f"{where} {key}", order=order,
-                                 kind=kind)  # fmt: skip
-        out[f"{key}_status"], out["sources"][key] = _provenance(spec, f"{where} {key}")
-    if "home" in j:
-        spec = j["home"]
-        if not isinstance(spec, dict) or "mode" not in spec or "position" not in spec:
-            raise ValueError(f"{where}: home must be {{ mode = \"switch\" | \"set\", "
-                             "position = ..., status = ..., source = ... }}")  # fmt: skip
-        mode = spec["mode"]
-        if mode not in HOME_MODES:
-            raise ValueError(f"{where} home: mode {mode!r} is not one of {', '.join(HOME_MODES)}")
-        if kind == "revolute":
-            deg = _row_angle(spec["position"], where, "home position")
-            pos = math.radians(deg)
-        else:
-            pos = validate.length_mm(spec["position"], f"{where} home position")
+        s = r.sub(key, schema.RATE)
+        for need in ("value", "unit"):
+            if need not in s:
+                raise s.error(need, f"is missing ({key} = {{ value = ..., unit = ..., "
+                              "status = ..., source = ... }})")  # fmt: skip
+        try:
+            out[key] = validate.rate(s.raw("value"), s.raw("unit"), "", order=order, kind=kind)
+        except ValueError as exc:
+            raise s.error("value", str(exc).lstrip(": =")) from None
+        out[f"{key}_status"], out["sources"][key] = _status(s), _source(s)
+    if "home" in r:
+        s = r.sub("home", schema.HOME)
+        mode = s.choice("mode", HOME_MODES)
+        if "position" not in s:
+            raise s.error("position", "is missing (deg | mm, within the joint's limits)")
+        pos = (math.radians(s.angle_deg("position")) if kind == "revolute" else
+               s.length("position"))  # fmt: skip
         if not lo <= pos <= hi:
-            unit = "deg" if kind == "revolute" else "mm"
-            show = math.degrees if kind == "revolute" else float
-            raise ValueError(
-                f"{where} home: position {show(pos):g} {unit} is outside the joint's limits "
-                f"[{show(lo):g}, {show(hi):g}] {unit}"
-            )
+            unit, show = ("deg", math.degrees) if kind == "revolute" else ("mm", float)
+            raise s.error("position", f"{show(pos):g} {unit} is outside the joint's limits "
+                          f"[{show(lo):g}, {show(hi):g}] {unit}")  # fmt: skip
         out["home_mode"], out["home_position"] = mode, pos
-        out["home_status"], out["sources"]["home"] = _provenance(spec, f"{where} home")
+        out["home_status"], out["sources"]["home"] = _status(s), _source(s)
     return out
+
+
+def _check_chain(file: str, rows: tuple, joints: tuple) -> None:
+    if not joints:
+        raise DescriptionError(file, "[[joints]]", "is missing (one per joint variable)")
+    names = [j.name for j in joints]
+    dup = next((n for n in names if names.count(n) > 1), None)
+    if dup:
+        raise DescriptionError(file, "[[joints]]", f"repeat the name {dup!r} (names: {names})")
+    if not rows:
+        return
+    moving = [r.get("kind", "revolute") for r in rows if r.get("kind", "revolute") != "fixed"]
+    if len(joints) != len(moving):
+        raise DescriptionError(file, "[[joints]]", f"{len(joints)} joints for {len(moving)} "
+                               "moving rows (revolute or prismatic)")  # fmt: skip
+    for j, kind in zip(joints, moving, strict=True):
+        if j.kind != kind:
+            raise DescriptionError(file, f"[[joints]] ({j.name}) kind",
+                                   f"{j.kind!r}, but its D-H row is {kind!r}")  # fmt: skip

@@ -26,7 +26,10 @@ SymPy: the papers are data, not analysis.
 from __future__ import annotations
 
 import csv
+import io
+import keyword
 import re
+import tokenize
 import tomllib
 import warnings
 from collections.abc import Mapping
@@ -59,7 +62,7 @@ REQUIRED: dict[str, tuple[str, ...]] = {
 FUNCTIONS: dict[str, object] = {
     "sin": sp.sin, "cos": sp.cos, "tan": sp.tan, "atan": sp.atan, "atan2": sp.atan2,
     "asin": sp.asin, "acos": sp.acos, "sqrt": sp.sqrt, "Abs": sp.Abs, "exp": sp.exp,
-    "pi": sp.pi, "Piecewise": sp.Piecewise, "Derivative": sp.Derivative, "Eq": sp.Eq,
+    "pi": sp.pi, "Piecewise": sp.Piecewise, "Derivative": sp.Derivative, "Subs": sp.Subs, "Eq": sp.Eq,
 }  # fmt: skip
 """The one set of functions every paper's expressions may use."""
 _META = ("id", "type", "group", "key")
@@ -268,9 +271,33 @@ def _globals() -> dict:
     return g
 
 
+_TOKENS = {"+", "-", "*", "/", "**", "(", ")", ",", "<", ">", "<=", ">=", "~", "&", "|"}
+
+
+def _plain(text: str) -> bool:
+    """Is ``text`` an expression and nothing else: names (no Python keyword), numbers and the
+    operators of :data:`_TOKENS`? (No comment, conditional, lambda, attribute or subscript:
+    Python's parser behind ``parse_expr`` would take ``x # note`` as ``x``.)"""
+    try:
+        toks = list(tokenize.generate_tokens(io.StringIO(text.strip()).readline))
+    except (tokenize.TokenError, IndentationError, SyntaxError):
+        return False
+    for t in toks:
+        if t.type in (tokenize.NEWLINE, tokenize.NL, tokenize.ENDMARKER, tokenize.NUMBER):
+            continue
+        if t.type == tokenize.NAME and not keyword.iskeyword(t.string):
+            continue
+        if t.type == tokenize.OP and t.string in _TOKENS:
+            continue
+        return False
+    return True
+
+
 def parse(text: str, names: Mapping[str, object]) -> sp.Expr:
-    """Parse SymPy ``text`` with ``names`` and :data:`FUNCTIONS` only (ValueError naming it)."""
-    if not isinstance(text, str) or "__" in text or len(text) > 4000:
+    """Parse SymPy ``text`` with ``names`` and :data:`FUNCTIONS` only (ValueError naming it):
+    an expression of names, numbers and arithmetic, comparison and logical operators, nothing
+    else (:func:`_plain`)."""
+    if not isinstance(text, str) or "__" in text or len(text) > 4000 or not _plain(text):
         raise ValueError(f"cannot parse {text!r}: not an expression of the transcription")
     try:
         with warnings.catch_warnings():  # Python's SyntaxWarning for text like "(a)(b)"
@@ -298,6 +325,10 @@ def _symbols(spec: Mapping) -> dict[str, object]:
             out[name] = sp.Symbol(name, **{assumption: True})
     for name in spec.get("functions", ()):
         out[name] = sp.Function(name)
+    for name, same in spec.get("aliases", {}).items():  # a name the paper states equal to another
+        if same not in out:
+            raise ValueError(f"alias {name} = {same}: {same} is not a symbol of the paper")
+        out[name] = out[same]
     return out
 
 

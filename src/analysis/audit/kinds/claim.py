@@ -29,7 +29,7 @@ from analysis.audit.kinds.base import Result, kind
 from analysis.audit.kinds.table import decimals
 from analysis.papers import parse
 
-__all__ = ["evaluate_claim"]
+__all__ = ["body_values", "evaluate_claim", "parse_claim"]
 
 _CLAIM = re.compile(r"^(forall|exists|count|max|min) ([\w-]+): (.+)$", re.S)
 _VALUE = re.compile(r"^(.+?) = (-?\d+(?:\.\d+)?)$", re.S)
@@ -50,19 +50,31 @@ def _values(expr: sp.Basic, domain) -> np.ndarray:
     return out
 
 
-def evaluate_claim(text: str, ctx) -> Result:
+def parse_claim(text: str) -> tuple[str, str, str, str | None]:
+    """``(quantifier, domain, body, number)`` of a claim text (``number`` None for forall and
+    exists); ValueError if the text is not a claim."""
     m = _CLAIM.match(text.strip())
     if not m:
         raise ValueError(f"{text!r} is not '<quantifier> <domain>: <body>'")
     quant, dname, body = m.groups()
-    domain = ctx.domain(dname)
-    names = {k: sp.Symbol(k) for k in domain}
     if quant in ("count", "max", "min"):
         v = _VALUE.match(body)
         if not v:
             raise ValueError(f"{quant} needs '<body> = <number>'")
-        body, number = v.groups()
-    value = _values(parse(body, names), domain)
+        return quant, dname, v[1], v[2]
+    return quant, dname, body, None
+
+
+def body_values(body: str, domain) -> np.ndarray:
+    """The claim's body at every sample of ``domain`` (a mapping name -> array)."""
+    return _values(parse(body, {k: sp.Symbol(k) for k in domain}), domain)
+
+
+def evaluate_claim(text: str, ctx, tol: float | None = None) -> Result:
+    """The claim decided on its domain; a maximum or minimum within ``tol`` of the number
+    stated (default: half a unit of its last decimal)."""
+    quant, dname, body, number = parse_claim(text)
+    value = body_values(body, ctx.domain(dname))
     if quant in ("forall", "exists", "count"):
         if value.dtype != bool:
             raise ValueError("the predicate is not true or false at each sample")
@@ -72,10 +84,10 @@ def evaluate_claim(text: str, ctx) -> Result:
         ok = bool(value.all()) if quant == "forall" else bool(value.any())
         return Result(ok, {"count": n_true, "n": len(value)})
     x = float(np.max(value) if quant == "max" else np.min(value))
-    ok = abs(x - float(number)) <= 0.5 * 10.0 ** -decimals(number) + 1e-12
-    return Result(ok, {"value": x, "n": len(value)})
+    tol = 0.5 * 10.0 ** -decimals(number) + 1e-12 if tol is None else float(tol)
+    return Result(abs(x - float(number)) <= tol, {"value": x, "n": len(value), "tol": tol})
 
 
 @kind("claim")
 def claim(text: str, spec, ctx) -> Result:
-    return evaluate_claim(text, ctx)
+    return evaluate_claim(text, ctx, spec.get("tol"))

@@ -19,7 +19,7 @@ import sympy as sp
 
 from analysis.audit.kinds.base import Result, kind
 
-__all__ = ["equation", "is_zero", "normal_form"]
+__all__ = ["cells", "equation", "is_zero", "normal_form"]
 
 
 def _trig_symbols(expr: sp.Expr) -> list[sp.Symbol]:
@@ -139,7 +139,8 @@ def identity(text: str, spec, ctx) -> Result:
     return Result(ok, {"residual": "0" if ok else sp.sstr(sp.factor(sp.expand(residual)))})
 
 
-def _cells(text: str, n: int) -> list[str]:
+def cells(text: str, n: int) -> list[str]:
+    """The ``n`` cells of a text (';'-, comma- or line-separated; ValueError if not n)."""
     parts = [p.strip() for p in re.split(r"[;\n]|,(?![^()]*\))", text)] if n > 1 else [text.strip()]
     if len(parts) != n or not all(parts):
         raise ValueError(f"{text!r}: {n} cell(s) expected")
@@ -159,20 +160,23 @@ def matrix(text: str, spec, ctx) -> Result:
         ix = [ctx.paper.symbols()[k] for k in ("ix", "iy", "iz")]
         f = ctx.paper.parse(text)
         T = ctx.product([spec["product"][-1]])
+        entries = set().union(*(T[r, c].free_symbols for r in range(3) for c in range(T.shape[1])))
+        if f.free_symbols & entries:  # a function of the column (ix, iy, iz), not of one column
+            return Result(False, {"why": f"names {sorted(map(str, f.free_symbols & entries))}"})
         bad = []
         for j in spec["of_column"]:
             col = dict(zip(ix, (T[0, j - 1], T[1, j - 1], T[2, j - 1]), strict=True))
             if not is_zero(f.subs(col) - M[i, j - 1]):
                 bad.append(j)
         return Result(not bad, {"columns_wrong": bad})
-    cells = spec["cells"]
+    spec_cells = spec["cells"]
     if "label" in spec:  # "t14 = ...": the label must name the cell
         label, _, text = text.partition("=")
-        if label.strip() != "".join([spec["label"], *map(str, cells[0])]):
+        if label.strip() != "".join([spec["label"], *map(str, spec_cells[0])]):
             return Result(False, {"why": f"the label {label.strip()!r} names another cell"})
-    texts = _cells(text, len(cells))
+    texts = cells(text, len(spec_cells))
     wrong = []
-    for (i, j), t in zip(cells, texts, strict=True):
+    for (i, j), t in zip(spec_cells, texts, strict=True):
         d = ctx.paper.parse(t) - M[i - 1, j - 1]
         if not is_zero(d):
             wrong.append((i, j, d))
@@ -184,7 +188,7 @@ def matrix(text: str, spec, ctx) -> Result:
         return sp.sstr(sp.Mul(*(sp.trigsimp(f) if sp.count_ops(f) < 40 else f for f in parts)))
 
     return Result(not wrong, {
-        "derived": lambda: "; ".join(shown(M[i - 1, j - 1]) for i, j in cells),
+        "derived": lambda: "; ".join(shown(M[i - 1, j - 1]) for i, j in spec_cells),
         "difference": lambda: "; ".join(f"[{i},{j}]: {shown(d)}" for i, j, d in wrong),
     })  # fmt: skip
 

@@ -90,23 +90,53 @@ B.matrix("dh_link")(lambda: link_transform_sym(*(_paper().symbols()[k] for k in 
 
 
 # --- predicates -------------------------------------------------------------------------------
+def _nearest_pose(pose: str):
+    """Table 5-3's ``pose`` with its orientation projected to the nearest the arm can take
+    (position unchanged): the pose the corrected joint values must give."""
+    proj, _ = st.project_orientation(st.gr1_arm(), st.thesis_poses())
+    return proj[("start", "end").index(pose)]
+
+
+def _pose_miss(q_deg, want) -> tuple[float, float]:
+    """Position miss [mm] and orientation miss [deg] of joint values ``q_deg`` from pose
+    ``want`` (mm, rad)."""
+    from analysis.kinematics.rpy import matrix_from_rpy, rotation_angle
+
+    T = st.gr1_arm().table.fk(np.radians(q_deg))
+    turn = rotation_angle(matrix_from_rpy(np.asarray(want[3:])), T[:3, :3])
+    return float(np.linalg.norm(T[:3, 3] - want[:3])), float(np.degrees(turn))
+
+
 @B.predicate("reaches")
 def _reaches(text, ctx, pose):
     """Five joint angles [deg] put the hand at Table 5-3's position (0.05 mm: three decimals
-    move it by up to 0.02 mm)."""
+    move it by up to 0.02 mm) in the nearest orientation the arm can take there (0.01 deg):
+    every angle, theta5 too, is decided."""
     v = _tuple(text, 5)
     if v is None:
         return Result(False, {"why": "not five angles"})
     target = st.thesis_poses()[("start", "end").index(pose), :3]
     miss = float(np.linalg.norm(st.gr1_arm().fk(np.radians(v)) - target))
-    return Result(miss <= 0.05, {"miss_mm": miss})
+    _, turn = _pose_miss(v, _nearest_pose(pose))
+    return Result(miss <= 0.05 and turn <= 0.01, {"miss_mm": miss, "turn_deg": turn})
 
 
 @B.predicate("orientation_ok")
-def _orientation_ok(text, ctx):
-    """Six numbers (mm, deg): a pose the 5-DOF arm solves."""
+def _orientation_ok(text, ctx, pose):
+    """Six numbers (mm, deg): Table 5-3's ``pose`` with the orientation the 5-DOF arm can take
+    nearest the printed one: the printed position, a pose the arm solves, within 0.01 deg of
+    the projection (three decimals of the RPY angles)."""
+    from analysis.kinematics.rpy import matrix_from_rpy, rotation_angle
+
     v = _tuple(text, 6)
-    return v is not None and bool(st.gr1_arm().solve(np.array([*v[:3], *np.radians(v[3:])])).ok.any())  # noqa: E501
+    if v is None:
+        return Result(False, {"why": "not six numbers"})
+    want = _nearest_pose(pose)
+    solved = bool(st.gr1_arm().solve(np.array([*v[:3], *np.radians(v[3:])])).ok.any())
+    at = float(np.linalg.norm(np.asarray(v[:3]) - want[:3]))
+    turn = float(np.degrees(rotation_angle(matrix_from_rpy(np.radians(v[3:])),
+                                           matrix_from_rpy(want[3:]))))  # fmt: skip
+    return Result(solved and at <= 1e-9 and turn <= 0.01, {"turn_deg": turn})
 
 
 @B.predicate("format_readable")
@@ -143,10 +173,14 @@ def _end_conditions(text, ctx, acceleration=False):
 
 @B.predicate("schedule")
 def _schedule(text, ctx):
-    """'M1 -> M2 -> ...' (one after another, on/off) or 'M1 + M2 + ...' (together, each on
-    its cubic): does the hand stay within 1 mm of the planned path?"""
+    """'M1 -> M2 -> ...' (one after another, on/off at the motors' speed, sec. 2.3.4) or
+    'M1 + M2 + ...' (together, each on its cubic): the largest distance [mm] of the hand from
+    the planned path (every joint on its cubic, together, eqs. 5.1-5.4), within 1 mm?"""
     m = re.fullmatch(r"M1( -> | \+ )M2\1M3\1M4\1M5", text.strip())
-    return bool(m) and (m[1] == " + " or gl.move_facts()["apart"] <= 1.0)
+    if not m:
+        return Result(False, {"why": "not five motors one after another or together"})
+    apart = gl.move_facts()["apart"] if m[1] == " -> " else gl.move_facts()["apart_together"]
+    return Result(apart <= 1.0, {"apart_mm": apart})
 
 
 @B.predicate("counter_setting")

@@ -296,7 +296,8 @@ def chain_values(arm: Arm, n: int = 200, seed: int = 2007) -> dict[str, np.ndarr
     """Every kinematic symbol of the thesis on ``n`` seeded configurations of ``arm`` (the arm
     hook ``Arm.sample_q`` where it exists, else uniform within the limits) that are front
     solutions of their own pose (atan2(py, px) is their theta1): joint angles, pose, columns
-    n, o, a, RPY angles (phi, theta, psi) and the link lengths."""
+    n, o, a, RPY angles (phi, theta, psi), the link lengths and sec. 4.2's c1, s1 ... c234,
+    s234."""
     from analysis.audit.context import sample_q
 
     rng = np.random.default_rng(seed)
@@ -314,6 +315,8 @@ def chain_values(arm: Arm, n: int = 200, seed: int = 2007) -> dict[str, np.ndarr
     v.update(px=T[:, 0, 3], py=T[:, 1, 3], pz=T[:, 2, 3], phi=rpy[:, 0], theta=rpy[:, 1],
              psi=rpy[:, 2], **{k: float(P[k]) for k in ("a2", "a3", "a4")})  # fmt: skip
     v.update({f"{c}_{x}": T[:, i, k] for k, c in enumerate("noa") for i, x in enumerate("xyz")})
+    for j in ("1", "2", "3", "234"):  # sec. 4.2's c_i, s_i: cos and sin of the joint angle
+        v[f"c{j}"], v[f"s{j}"] = np.cos(v[f"theta{j}"]), np.sin(v[f"theta{j}"])
     return v
 
 
@@ -380,11 +383,13 @@ def relative_move_misses(spread_deg=None, n: int = 200, seed: int = 169) -> dict
 def move_facts() -> dict[str, object]:
     """The numbers the register's evidence cites about the corrected move, the PLC's move
     and the printed Table 5-4 (base height d1 = 0 and the limits assumed)."""
-    from analysis.studies.trajectories import acceleration_jumps
+    from analysis.studies.trajectories import acceleration_jumps, profile
 
     q, names, presets, turn = corrected_move()
     t = st.table5_4().set_index(["pose", "source"])
     fx = st.fx2n_vs_cubic(gr1_arm(), q[0], q[1], samples=1001)  # 1001: path lengths to 0.1 %
+    s = profile("cubic", np.linspace(0.0, 1.0, 1001))[0][:, None]  # all joints together
+    together = gr1_arm().fk(q[0] + (q[1] - q[0]) * s)
     d1 = [np.linalg.norm(gr1_arm().with_(d1=float(h)).fk(st.printed_joints()[0])
                          - st.thesis_poses()[0, :3]) for h in np.linspace(-200, 200, 81)]  # fmt: skip  # noqa: E501
     free = st.workspace_extents(limits=False)
@@ -402,6 +407,7 @@ def move_facts() -> dict[str, object]:
         "speeds": join(fx["speed_deg_s"], "{:g}"), "time_fx2n": fx["time_fx2n_s"],
         "length_fx2n": fx["length_fx2n_mm"], "length_cubic": fx["length_cubic_mm"],
         "apart": fx["max_apart_mm"], "free_radius": free["radius_mm"],
+        "apart_together": float(st.nearest_point_distance(together, fx["p_cubic"]).max()),
         "jumps": join(np.degrees(acceleration_jumps("cubic", q[0], q[1], st.DURATION_S)), "{:.2f}"),
         "reach": gr1_arm().geometry["reach_tool"], "free_span": free["height_span_mm"],
         **st.workspace_extents(),

@@ -141,13 +141,35 @@ def _text(rid: str) -> str:
 
 def _z600():
     """Targets at z = 600 mm (Table 4's plane) from the base axis to the reach: does the printed
-    eq. 19 give the solution's theta2 there?"""
-    rho = np.linspace(1.0, 509.0, 509)
+    eq. 19 give the solution's theta2 there? The line carries ``rho_star``, where eq. 18's
+    denominator changes sign (bisected to 1e-9 mm), and targets 1e-6 mm either side of it."""
+    rho_star = _z600_crossing()
+    rho = np.concatenate([np.linspace(1.0, 509.0, 509), rho_star + np.array([-1e-6, 1e-6])])
     P, th = _gs().front_up(np.stack([rho, np.zeros_like(rho), np.full_like(rho, 600.0)], -1))
     v = _values(P, th)
     printed = np.arctan(v["num"] / v["den"]) - v["theta3"]
     ok = np.abs(wrap_rad(printed - v["theta2"])) < 1e-9
-    return {"rho": P[:, 0], "eq19_ok": ok}
+    return {"rho": P[:, 0], "eq19_ok": ok, "rho_star": np.full(len(ok), rho_star)}
+
+
+def _z600_crossing() -> float:
+    """The distance from the base axis [mm] at which, on z = 600 mm, eq. 18's denominator
+    -(Pz - L1) L2 sin(theta3) + r (L2 cos(theta3) + L3) changes sign (the front-up solution)."""
+
+    def den(r):
+        P, th = _gs().front_up(np.array([[r, 0.0, 600.0]]))
+        return float(_values(P, th)["den"][0])
+
+    lo, hi = 100.0, 500.0  # within the reach of z = 600 mm (93 to 506 mm from the axis)
+    if np.sign(den(lo)) == np.sign(den(hi)):
+        raise ValueError("eq. 18's denominator keeps its sign on z = 600 mm")
+    for _ in range(60):
+        mid = (lo + hi) / 2
+        lo, hi = (mid, hi) if np.sign(den(mid)) == np.sign(den(lo)) else (lo, mid)
+    return (lo + hi) / 2
+
+
+B.fact("z600_crossing")(_z600_crossing)
 
 
 # --- values and facts -------------------------------------------------------------------------

@@ -81,11 +81,14 @@ def _pairs():
 
 @B.domain("r3")
 def _r3():
-    """20 seeded 3-vectors x and a candidate identity e (x + e = x?): the zero vector and a
-    nonzero one."""
-    x = np.random.default_rng(3).normal(size=(20, 3))
-    e = np.array([0.3, -1.2, 2.0])
-    return {"zero_is_identity": np.all(x + 0 == x, -1), "vector_is_identity": np.all(x + e == x, -1)}  # noqa: E501
+    """Candidate identity elements e of (R3, +): the zero vector and five seeded nonzero
+    3-vectors; for each, whether x + e = x at 20 seeded x (``is_identity``) and whether e is
+    the zero vector (``is_zero``)."""
+    rng = np.random.default_rng(3)
+    x = rng.normal(size=(20, 3))
+    e = np.vstack([np.zeros(3), rng.normal(size=(5, 3))])
+    return {"is_identity": np.array([bool(np.all(x + v == x)) for v in e]),
+            "is_zero": np.array([bool(np.all(v == 0)) for v in e])}  # fmt: skip
 
 
 @B.domain("assumed")
@@ -178,9 +181,17 @@ def english_chain(text: str, ctx):
 def mobility(text: str, ctx):
     """'N moving links, M one-dof joints' (the parallel part, frame: the rotating seat): does
     the planar Gruebler count 3 N - 2 M equal the two sliders, so that the passive angles
-    follow from them?"""
-    m = re.fullmatch(r"(?:(?:main \+ secondary chain as listed|with [\w ,'-]+): )?(\d+) moving links, (\d+) one-dof joints", text.strip())  # noqa: E501
+    follow from them? 'main + secondary chain as listed' must count what sec. 3.2 lists: the
+    links of both chains and the platform, the sliders and the passive joints."""
+    m = re.fullmatch(r"(?:(main \+ secondary chain as listed|with [\w ,'-]+): )?(\d+) moving links, (\d+) one-dof joints", text.strip())  # noqa: E501
     if not m:
         return Result(False, {"why": "not 'N moving links, M one-dof joints'"})
-    dof = 3 * int(m[1]) - 2 * int(m[2])
+    n, j = int(m[2]), int(m[3])
+    if m[1] and m[1].startswith("main"):
+        chains, joints = ctx.paper.group("CHAINS"), ctx.paper.group("JOINTS")
+        listed = (len(chains["main"]) + len(chains["secondary"]) + 1,
+                  len(joints["active"]) + len(joints["passive"]))  # fmt: skip
+        if (n, j) != listed:
+            return Result(False, {"why": f"sec. 3.2 lists {listed[0]} links, {listed[1]} joints"})
+    dof = 3 * n - 2 * j
     return Result(dof == len(ctx.paper.group("JOINTS")["active"]), {"mobility": dof})

@@ -1,4 +1,4 @@
-"""Inputs of :mod:`analysis.app.safe_io`: strict CSV tables, whole or in chunks."""
+"""Inputs of :mod:`analysis.safe_io`: strict CSV tables, whole or in chunks."""
 
 from __future__ import annotations
 
@@ -15,7 +15,7 @@ from typing import IO, Any
 import numpy as np
 import numpy.typing as npt
 
-from analysis.app.safe_io._errors import InputError, PathLike
+from analysis.safe_io._errors import InputError, PathLike
 from analysis.validate import number_problem
 
 __all__ = ["DELIMITERS", "Records", "iter_record_chunks", "iter_table_chunks", "read_table"]

@@ -1,4 +1,5 @@
-"""Safe file input and output for the command line: nothing lost, nothing half-written.
+"""Safe file input and output for every layer: nothing lost, nothing half-written, nothing
+read that should not be (the floor below the kinematics: every module may use it).
 
 Outputs
 -------
@@ -26,16 +27,21 @@ lines and newlines inside quoted fields counted) and the column.
 Both error classes derive from :class:`ValueError`, which ``analysis.app.cli.main`` already turns
 into exit status 2 and a one-line message.
 
-The package: ``_write`` (outputs), ``_read`` (inputs), ``_errors`` (both error classes).
+:func:`read_bytes` and :func:`read_text` read a whole input (a description, a table, a
+program) only if it is a regular file, and at most a size limit, enforced while reading.
+
+The package: ``_write`` (outputs), ``_paths`` (the path checks of both), ``_read`` (CSV
+inputs), ``_bounded`` (whole files, bounded), ``_errors`` (both error classes).
 """
 
 from __future__ import annotations
 
-from analysis.app.safe_io._errors import InputError, OutputError
-from analysis.app.safe_io._read import Records, iter_record_chunks, iter_table_chunks, read_table
-from analysis.app.safe_io._write import (
+from analysis.safe_io._bounded import read_bytes, read_text
+from analysis.safe_io._errors import InputError, OutputError
+from analysis.safe_io._paths import check_paths
+from analysis.safe_io._read import Records, iter_record_chunks, iter_table_chunks, read_table
+from analysis.safe_io._write import (
     atomic_writer,
-    check_paths,
     output_stream,
     sweep_stale,
     write_many_atomic,
@@ -51,7 +57,9 @@ __all__ = [
     "iter_record_chunks",
     "iter_table_chunks",
     "output_stream",
+    "read_bytes",
     "read_table",
+    "read_text",
     "sweep_stale",
     "write_many_atomic",
     "write_text_atomic",

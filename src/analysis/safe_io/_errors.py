@@ -1,10 +1,10 @@
-"""The two error classes of :mod:`analysis.app.safe_io`, and what they share."""
+"""The two error classes of :mod:`analysis.safe_io`, and what they share."""
 
 from __future__ import annotations
 
 import os
 
-__all__ = ["InputError", "OutputError", "PathLike"]
+__all__ = ["InputError", "OutputError", "PathLike", "cannot_write"]
 
 PathLike = str | os.PathLike[str]
 
@@ -52,3 +52,9 @@ class InputError(ValueError):
         self.path = os.fspath(path)
         self.line = line
         self.column = column
+
+
+def cannot_write(path: PathLike, exc: OSError) -> OutputError:
+    """``cannot write <path>: <strerror>`` for an OSError of a write."""
+    reason = exc.strerror or str(exc) or type(exc).__name__
+    return OutputError(f"cannot write {os.fspath(path)}: {reason}", path)

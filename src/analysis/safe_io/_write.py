@@ -1,4 +1,4 @@
-"""Outputs of :mod:`analysis.app.safe_io`: atomic replacement of one file or several."""
+"""Outputs of :mod:`analysis.safe_io`: atomic replacement of one file or several."""
 
 from __future__ import annotations
 
@@ -11,11 +11,12 @@ import shutil
 import stat
 import sys
 import tempfile
-from collections.abc import Iterable, Iterator, Mapping, Sequence
+from collections.abc import Iterator, Mapping, Sequence
 from pathlib import Path
 from typing import IO, Any
 
-from analysis.app.safe_io._errors import OutputError, PathLike
+from analysis.safe_io._errors import OutputError, PathLike, cannot_write
+from analysis.safe_io._paths import check_paths, remove_dirs, target_of
 
 __all__ = [
     "atomic_writer",
@@ -35,11 +36,6 @@ _WRITE_ERRNOS = frozenset(
 )
 
 
-def _cannot_write(path: PathLike, exc: OSError) -> OutputError:
-    reason = exc.strerror or str(exc) or type(exc).__name__
-    return OutputError(f"cannot write {os.fspath(path)}: {reason}", path)
-
-
 def _umask() -> int:
     """The process umask, read without changing it where Linux allows."""
     try:
@@ -52,88 +48,6 @@ def _umask() -> int:
     mask = os.umask(0o022)  # elsewhere: set and restore (not thread-safe, but brief)
     os.umask(mask)
     return mask
-
-
-_KINDS = (
-    (stat.S_ISCHR, "a character device"),
-    (stat.S_ISBLK, "a block device"),
-    (stat.S_ISFIFO, "a FIFO (named pipe)"),
-    (stat.S_ISSOCK, "a socket"),
-)
-
-
-def _not_regular(path: PathLike) -> str | None:
-    """What ``path`` is if it exists and is neither a regular file nor a directory (symlinks
-    followed: /dev/stdout is a pipe or a terminal), else None."""
-    try:
-        mode = os.stat(path).st_mode
-    except OSError:
-        return None
-    for test, what in _KINDS:
-        if test(mode):
-            return what
-    return None
-
-
-def _refuse_special(path: PathLike) -> None:
-    what = _not_regular(path)
-    if what:
-        raise OutputError(
-            f"output {os.fspath(path)} is {what}, not a regular file: it would be replaced by "
-            "one; write to '-' (standard output) and redirect instead",
-            path,
-        )
-
-
-def _make_parents(parent: Path, path: PathLike) -> list[Path]:
-    """Create ``parent`` and its missing ancestors; return those created, outermost first."""
-    missing = []
-    d = parent
-    while not d.exists():
-        missing.append(d)
-        if d.parent == d:
-            break
-        d = d.parent
-    created = []
-    try:
-        for d in reversed(missing):
-            d.mkdir()
-            created.append(d)
-    except OSError as exc:
-        _remove_dirs(created)
-        raise _cannot_write(path, exc) from exc
-    return created
-
-
-def _remove_dirs(created: Sequence[Path]) -> None:
-    """Remove directories this process created, innermost first, if they are empty."""
-    for d in reversed(created):
-        with contextlib.suppress(OSError):
-            d.rmdir()
-
-
-def _target(path: PathLike, make_parents: bool, created: list[Path] | None = None) -> Path:
-    """Where ``path`` really is (a symlink is written through), after the output checks.
-
-    Missing parent directories are created with ``make_parents`` (and appended to
-    ``created``, so that a failure can remove them again)."""
-    given = Path(path)
-    target = Path(os.path.realpath(given)) if given.is_symlink() else given
-    if target.is_dir():
-        raise OutputError(f"cannot write {os.fspath(path)}: it is a directory", path)
-    _refuse_special(target)
-    parent = target.parent
-    if not parent.is_dir():
-        if parent.exists():
-            raise OutputError(f"cannot write {os.fspath(path)}: {parent} is not a directory", path)
-        if not make_parents:
-            raise OutputError(
-                f"cannot write {os.fspath(path)}: directory {parent} does not exist", path
-            )
-        made = _make_parents(parent, path)
-        if created is not None:
-            created.extend(made)
-    return target
 
 
 def _mode_for(target: Path) -> int:
@@ -157,7 +71,7 @@ def _mkstemp(target: Path, path: PathLike) -> tuple[int, Path]:
             prefix=f"{_tmp_prefix(target)}{os.getpid()}.", suffix=".tmp", dir=target.parent
         )
     except OSError as exc:
-        raise _cannot_write(path, exc) from exc
+        raise cannot_write(path, exc) from exc
     return fd, Path(tmp)
 
 
@@ -255,7 +169,7 @@ def _staged(
                 yield fh, [tmp]
             except OSError as exc:
                 if exc.errno in _WRITE_ERRNOS and exc.filename is None:
-                    raise _cannot_write(path, exc) from exc
+                    raise cannot_write(path, exc) from exc
                 raise
             try:
                 if fh.closed:  # the block closed it (some writers do): fsync by name
@@ -266,7 +180,7 @@ def _staged(
                     fh.close()
                 os.chmod(tmp, _mode_for(target))
             except OSError as exc:
-                raise _cannot_write(path, exc) from exc
+                raise cannot_write(path, exc) from exc
             done = True
         finally:
             if not fh.closed:
@@ -332,7 +246,7 @@ def atomic_writer(
     if mode not in ("w", "wt", "wb"):
         raise ValueError(f"mode must be 'w', 'wt' or 'wb', not {mode!r}")
     created: list[Path] = []
-    target = _target(path, make_parents, created)
+    target = target_of(path, make_parents, created)
     replaced = False
     try:
         with _staged(path, target, mode, encoding, newline) as (fh, tmp):
@@ -341,13 +255,13 @@ def atomic_writer(
             os.replace(tmp[0], target)
             replaced = True
         except OSError as exc:
-            raise _cannot_write(path, exc) from exc
+            raise cannot_write(path, exc) from exc
         finally:
             if not replaced:
                 _unlink(tmp[0])
     finally:
         if not replaced:
-            _remove_dirs(created)  # no directory left behind by a failed write
+            remove_dirs(created)  # no directory left behind by a failed write
     _fsync_dir(target.parent)
 
 
@@ -454,9 +368,9 @@ def write_many_atomic(
     created: list[Path] = []
     targets = []
     try:
-        targets = [_target(path, make_parents, created) for path in paths]
+        targets = [target_of(path, make_parents, created) for path in paths]
     except BaseException:
-        _remove_dirs(created)
+        remove_dirs(created)
         raise
     staged: list[tuple[PathLike, Path, Path]] = []
     backups: list[Path | None] = []
@@ -472,12 +386,12 @@ def write_many_atomic(
             try:
                 backups.append(_backup(target))
             except OSError as exc:
-                raise _cannot_write(path, exc) from exc
+                raise cannot_write(path, exc) from exc
         for i, (path, target, tmp) in enumerate(staged):
             try:
                 os.replace(tmp, target)
             except OSError as exc:
-                error = _cannot_write(path, exc)
+                error = cannot_write(path, exc)
                 failed = _rollback(staged[:i], backups[:i])
                 if failed:
                     kept = set(failed.values())
@@ -501,7 +415,7 @@ def write_many_atomic(
         for backup in backups:
             _unlink(backup)
         if not done:
-            _remove_dirs(created)
+            remove_dirs(created)
 
 
 def _rollback(
@@ -518,77 +432,6 @@ def _rollback(
         except OSError:
             failed[target] = backup
     return failed
-
-
-def _same_file(a: str, b: str) -> str | None:
-    """How ``a`` and ``b`` are the same file ("" if literally, else a reason), or None."""
-    if os.path.realpath(a) == os.path.realpath(b):
-        return "" if os.path.abspath(a) == os.path.abspath(b) else " (through a symlink)"
-    try:
-        if os.path.samefile(a, b):
-            return " (hard link)"
-    except OSError:  # one of them does not exist (or cannot be examined)
-        pass
-    return None
-
-
-def check_paths(
-    inputs: Iterable[PathLike] = (),
-    outputs: Iterable[PathLike] = (),
-    *,
-    make_parents: bool = False,
-) -> None:
-    """Refuse an output set that would destroy an input or collide with itself.
-
-    Parameters
-    ----------
-    inputs : iterable of path
-        Files the command reads.
-    outputs : iterable of path
-        Files the command writes.
-    make_parents : bool, default False
-        Accept an output whose parent directory is missing (it will be created).
-
-    ``"-"`` (standard input or output) is never checked.
-
-    Raises
-    ------
-    OutputError
-        The first of: an output is a directory; an output exists and is not a regular file
-        (a device, a FIFO, a socket: replacing it with a file would destroy it, and /dev/null
-        with it); an output's parent directory is missing (or
-        not a directory); an output is the same file as an input; two outputs are the same
-        file. "Same file" resolves symlinks and, where both exist, compares device and inode
-        (:func:`os.path.samefile`), so hard links count.
-    """
-    ins = [os.fspath(p) for p in inputs if os.fspath(p) != "-"]
-    outs = [os.fspath(p) for p in outputs if os.fspath(p) != "-"]
-    for out in outs:
-        if os.path.isdir(out):
-            raise OutputError(f"output {out} is a directory; give a file name", out)
-        _refuse_special(out)
-        parent = os.path.dirname(os.path.realpath(out))
-        if not os.path.isdir(parent) and not (make_parents and not os.path.exists(parent)):
-            what = "is not a directory" if os.path.exists(parent) else "does not exist"
-            raise OutputError(f"output {out}: directory {parent} {what}", out)
-    for out in outs:
-        for inp in ins:
-            how = _same_file(out, inp)
-            if how is not None:
-                raise OutputError(
-                    f"output {out} is the same file as input {inp}{how}; writing it would "
-                    "destroy the input, choose another output",
-                    out,
-                )
-    for i, first in enumerate(outs):
-        for second in outs[i + 1 :]:
-            how = _same_file(first, second)
-            if how is not None:
-                raise OutputError(
-                    f"outputs {first} and {second} are the same file{how}; "
-                    "give each output its own file",
-                    second,
-                )
 
 
 @contextlib.contextmanager

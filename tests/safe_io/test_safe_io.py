@@ -1,4 +1,4 @@
-"""analysis.app.safe_io: atomic outputs, path checks, one-line write errors, strict CSV tables."""
+"""analysis.safe_io: atomic outputs, path checks, one-line write errors, strict CSV tables."""
 
 from __future__ import annotations
 
@@ -23,8 +23,8 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from analysis.app import safe_io
-from analysis.app.safe_io import (
+from analysis import safe_io
+from analysis.safe_io import (
     InputError,
     OutputError,
     atomic_writer,
@@ -187,7 +187,7 @@ def test_read_only_directory_gives_permission_denied(tmp_path):
 FSIZE_SCRIPT = textwrap.dedent(
     """
     import json, resource, signal, sys
-    from analysis.app.safe_io import OutputError, write_many_atomic, write_text_atomic
+    from analysis.safe_io import OutputError, write_many_atomic, write_text_atomic
 
     signal.signal(signal.SIGXFSZ, signal.SIG_IGN)   # EFBIG instead of being killed
     resource.setrlimit(resource.RLIMIT_FSIZE, (4096, 4096))
@@ -730,8 +730,53 @@ def test_module_exports():
         "iter_record_chunks",
         "iter_table_chunks",
         "output_stream",
+        "read_bytes",
         "read_table",
+        "read_text",
         "sweep_stale",
         "write_many_atomic",
         "write_text_atomic",
     }
+
+
+# --- bounded reads of whole files ----------------------------------------------------------
+def test_read_bytes_takes_a_regular_file_up_to_its_limit(tmp_path):
+    from analysis.safe_io import InputError, read_bytes, read_text
+
+    f = tmp_path / "a.toml"
+    f.write_bytes(b"\xef\xbb\xbfname = 'x'\n")
+    assert read_text(f, 100) == "name = 'x'\n"
+    assert read_bytes(f, 14) == f.read_bytes()
+    with pytest.raises(InputError, match=r"larger than 13 bytes"):
+        read_bytes(f, 13, "arm description")
+    f.write_bytes(b"name = '\xff'")
+    with pytest.raises(InputError, match=r"not utf-8 text \(byte 8 does not decode\)"):
+        read_text(f, 100)
+
+
+@pytest.mark.parametrize(
+    ("make", "kind"),
+    [
+        (lambda p: os.mkfifo(p), r"a FIFO \(named pipe\)"),
+        (lambda p: p.mkdir(), "a directory"),
+        (lambda p: p.symlink_to("/dev/zero"), "a character device"),
+    ],
+)
+def test_read_bytes_refuses_special_files_without_blocking(tmp_path, make, kind):
+    """A FIFO with no writer (open would block), a directory, a device behind a symlink."""
+    from analysis.safe_io import InputError, read_bytes
+
+    p = tmp_path / "x"
+    make(p)
+    with pytest.raises(InputError, match=f"the table is {kind}; only a regular file is read"):
+        read_bytes(p, 1 << 20, "table")
+
+
+def test_read_bytes_bounds_a_file_that_reports_no_size(tmp_path):
+    """/proc files report st_size 0: the limit is enforced while reading, not from stat."""
+    from analysis.safe_io import InputError, read_bytes
+
+    with pytest.raises(InputError, match="larger than 10 bytes"):
+        read_bytes("/proc/self/status", 10)
+    with pytest.raises(InputError, match="cannot read the file: No such file"):
+        read_bytes(tmp_path / "none", 10)
