@@ -230,21 +230,28 @@ def test_random_arms_float32_model_follows(random_arms, rng):
 
 
 def test_outside_the_families_says_which_rule(tmp_path):
-    """A six-axis arm whose wrist axes miss one point, and one with a wrist of 60 deg twists:
-    refused naming the rule, the description still loads for FK."""
+    """The PUMA 560 with its wrist bent 60 deg instead of 90 (not every orientation
+    reachable), with an offset between axes 4 and 5 (no spherical wrist), with joints 2 and 3
+    not parallel: refused naming the rule; the description still loads (FK needs no IK)."""
     from analysis.kinematics.derive import NotDerivable, derive
     from analysis.kinematics.description import load_description
+    from analysis.paths import data_dir
 
-    base = random_family_arm(np.random.default_rng(1), "6R-wrist", "standard", "user")
-    for text, reason in (
-        (base.replace("alpha_deg = 90.0", "alpha_deg = 60.0", 1)
-         .replace("alpha_deg = -90.0", "alpha_deg = 60.0", 1),
-         "not 90|not parallel|do not meet|passes"),
-    ):  # fmt: skip
+    puma = (data_dir() / "arms" / "puma560.toml").read_text(encoding="utf-8")
+    bend = 'link = "wrist bend"\njoint = "theta5"\nalpha_deg = -90'
+    roll = 'link = "wrist roll"\njoint = "theta4"\nalpha_deg = 90\na = 0'
+    arm2 = 'link = "upper arm"\njoint = "theta2"\nalpha_deg = 0'
+    for old, new, reason in (
+        (bend, bend.replace("-90", "60"), "not 90"),
+        (roll, roll.replace("a = 0", "a = 12.5"), "passes 12.5 mm"),
+        (arm2, arm2.replace("= 0", "= 20"), "2 and 3 of the six are not parallel"),
+    ):
+        assert old in puma
         path = tmp_path / "user.toml"
-        path.write_text(text, encoding="utf-8")
+        path.write_text(puma.replace(old, new), encoding="utf-8")
         with pytest.raises(NotDerivable, match=reason):
             derive(load_description(str(path)))
+        assert np.isfinite(load_arm(str(path)).fk(np.zeros(6))).all()
 
 
 @pytest.mark.slow  # the edge harness draws thousands of targets per arm: make test only
