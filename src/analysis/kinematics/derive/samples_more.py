@@ -153,6 +153,7 @@ def random_family_arm(rng: np.random.Generator, family: str, convention: str,
     ``convention`` ("standard" or "modified"); lengths in mm, of the order of 100-400 mm.
     Raises RuntimeError if :data:`TRIES` draws give no arm of the family."""
     name = "".join(c if c.isalnum() else "_" for c in name)  # an identifier (the schema's)
+    name = name if name[:1].isalpha() else f"arm_{name}"
     for _ in range(TRIES):
         if family.startswith("gantry"):
             spec = _gantry(rng, family)
