@@ -65,7 +65,8 @@ def user_arms(tmp_path_factory):
         for k in range(4):
             rng = np.random.default_rng(7000 + 10 * i + k)
             path = folder / f"{fam}-{conv}-{k}.toml"
-            path.write_text(random_arm(rng, fam, conv, name="arm_" + path.stem.replace("-", "_")), encoding="utf-8")
+            name = "arm_" + path.stem.replace("-", "_")  # an identifier (the schema's rule)
+            path.write_text(random_arm(rng, fam, conv, name=name), encoding="utf-8")
             arms[(fam, conv, k)] = load_arm(str(path))
     return arms
 

@@ -18,6 +18,7 @@ NumPy and the kinematics, not SymPy, pandas or Matplotlib.
 from __future__ import annotations
 
 import argparse
+import errno
 import json
 import math
 import re
@@ -151,7 +152,9 @@ def _common(p: argparse.ArgumentParser) -> None:
         default="grabber",
         metavar="NAME|PATH",
         help="arm: a name (default: grabber, the paper's; list: arms) or the path of a "
-        "description file (*.toml), anywhere on disk",
+        "description file (*.toml), anywhere on disk; a description that names a .py "
+        "closed form (next to it) runs that file's code: load only descriptions you trust "
+        "as you would run their scripts",
     )
     p.add_argument("--params", type=Path, help="a Table 3 CSV instead of data/table3.csv")
 
@@ -409,21 +412,21 @@ def _missing_branches(arm, target, names, sols, args) -> list[dict]:
 
 # --- stl ------------------------------------------------------------------------------------------
 def _cmd_stl(args: argparse.Namespace) -> int:
-    from analysis.safe_io import check_paths, write_many_atomic
     from analysis.plc.dialects import DIALECTS
     from analysis.plc.generate import generate
     from analysis.plc.memmap import MemoryMap
+    from analysis.safe_io import check_paths, write_many_atomic
 
     extra = [p for p in (args.tags, args.gvl) if p]  # the machine's tag table and GVL
     outputs = [args.output, *([args.map] if args.map else []), *extra]
     if str(args.output) == "-" and (args.json or str(args.map) == "-"):
         raise UsageError("-o - writes the program to stdout: --json and --map - cannot share it")
-    check_paths(
-        inputs=[p for p in (args.layout, args.params) if p],
+    arm = _arm(args)
+    check_paths(  # no output may be an input: the description, its tables, --params, --layout
+        inputs=[*arm.input_files, *(p for p in (args.layout, args.params) if p)],
         outputs=outputs,
         make_parents=args.mkdir,
     )
-    arm = _arm(args)
     mmap = _layout(args.layout, MemoryMap) if args.layout else None
     cpu = None
     if args.cpu is not None:
@@ -745,7 +748,8 @@ def _add_arms(sub) -> None:
         "assumed; a description that does not load is listed with the reason.",
     )
     p.add_argument("--arm", action="append", metavar="NAME|PATH", default=[],
-                   help="list this arm (a name or a description file; repeatable) instead")
+                   help="list this arm (a name or a description file; repeatable) instead; "
+                   "a description that names a .py closed form runs that file's code")  # fmt: skip
     p.add_argument("--json", action="store_true", help="machine-readable output")
     p.set_defaults(func=_cmd_arms)
 
@@ -878,24 +882,33 @@ def main(argv: Sequence[str] | None = None) -> int:
     import warnings
 
     args = _parser().parse_args(list(sys.argv[1:] if argv is None else argv))
+    if sys.stdout is None:  # started with standard output closed (>&-): no answer is lost
+        sys.stdout = _ClosedStdout()
     old = _install_signals()
     try:
         with warnings.catch_warnings():
             # a warning goes to stderr, never into stdout or JSON; none is expected from
             # validated input (tests/hostile holds every entry point to that)
             warnings.simplefilter("default")
-            return int(args.func(args) or 0)
+            code = int(args.func(args) or 0)
+            sys.stdout.flush()  # a full disk or a closed descriptor fails here, not at exit
+            return code
     except (ValueError, OSError) as exc:  # UsageError, UnreachableError, OutputError, ...
         if isinstance(exc, BrokenPipeError):
             return _broken_pipe()
         if isinstance(exc, OSError):
-            exc = ValueError(f"{getattr(exc, 'filename', '') or ''}: {exc.strerror or exc}")
+            where = getattr(exc, "filename", None)
+            exc = ValueError(f"{where}: {exc.strerror or exc}" if where else
+                             f"cannot write the answer: {exc.strerror or exc}")  # fmt: skip
         message = " ".join(str(exc).split()) + _hint(exc, args)
-        if getattr(args, "json", False):
+        try:
+            if not getattr(args, "json", False):
+                raise OSError  # the message goes to stderr
             doc = _error_doc(exc, args)
             doc["error"] = message
             print(_json(doc))
-        else:
+            sys.stdout.flush()
+        except OSError:
             print(f"{PROG} {args.command}: error: {message}", file=sys.stderr)
         return 2
     except KeyboardInterrupt:
@@ -908,6 +921,17 @@ def main(argv: Sequence[str] | None = None) -> int:
     finally:
         for sig, handler in old.items():
             signal.signal(sig, handler)
+
+
+class _ClosedStdout:
+    """Standard output when the process started without one: every write fails, so a
+    command whose answer cannot be written exits 2 instead of 0."""
+
+    def write(self, text: str) -> int:
+        raise OSError(errno.EBADF, "standard output is closed")
+
+    def flush(self) -> None:
+        pass
 
 
 def _broken_pipe() -> int:

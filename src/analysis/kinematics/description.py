@@ -232,6 +232,9 @@ class ArmDescription:
     derive: dict = field(default_factory=dict, compare=False)
     """The ``[derive]`` table: decisions for a closed form derived from the rows
     (:mod:`analysis.kinematics.derive.families`)."""
+    files: tuple[Path, ...] = field(default=(), compare=False)
+    """Every file read to build it: the description, then each table it read (resolved
+    paths): an output may be none of them (:func:`analysis.safe_io.check_paths`)."""
 
     @property
     def statuses(self) -> dict[str, str]:
@@ -363,7 +366,8 @@ def _load(name: str, tables: tuple, stamp: tuple) -> ArmDescription:
     except tomllib.TOMLDecodeError as exc:
         raise DescriptionError(file, "", f"not valid TOML ({exc})") from None
     except RecursionError:
-        raise DescriptionError(file, "", "nested deeper than the TOML reader follows") from None
+        raise DescriptionError(file, f"line {_deep_line(text)}", "arrays or tables nested "
+                               "deeper than the TOML reader follows") from None  # fmt: skip
     r = Reader(d, file)
     r.check_keys(schema.TOP)
     ctx = _Context(path, file, dict(tables))
@@ -389,10 +393,23 @@ def _load(name: str, tables: tuple, stamp: tuple) -> ArmDescription:
         path,
         axes,
         schema.derive_decisions(r.sub("derive", schema.DERIVE)),
+        (path.resolve(), *dict.fromkeys(ctx.read)),
     )
     if rows:
         desc.dh_table()  # every row resolves
     return desc
+
+
+def _deep_line(text: str, depth: int = 256) -> int:
+    """The line where brackets first open ``depth`` deep (where a TOML reader's recursion
+    ends), or the last line."""
+    level, n = 0, 1
+    for c in text:
+        level += (c in "[{") - (c in "]}")
+        n += c == "\n"
+        if level > depth:
+            break
+    return n
 
 
 class _Context:
@@ -400,6 +417,7 @@ class _Context:
 
     def __init__(self, path: Path, file: str, tables: dict) -> None:
         self.path, self.file, self.tables = path, file, tables
+        self.read: list[Path] = []
 
     def number(self, r: Reader, key: str) -> float:
         """A number given bare, as ``{ value = ... }`` or read from a table."""
@@ -411,6 +429,7 @@ class _Context:
                 where = sub.key("table")
                 path = (Path(self.tables[name]) if name in self.tables else
                         table_path(name, self.path, self.file, where))  # fmt: skip
+                self.read.append(path.resolve())
                 return table_value(spec, path, self.file, where)
             if "value" not in spec:
                 raise r.error(key, "needs a value (a number, or a table to read it from)")

@@ -34,6 +34,7 @@ import dataclasses
 from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import cached_property
+from pathlib import Path
 
 import numpy as np
 import numpy.typing as npt
@@ -126,6 +127,14 @@ class Arm:
             if self.description.has_rows:
                 consistency.check(self.description, self.closed_form, params)
         return dataclasses.replace(self, params=params)
+
+    @property
+    def input_files(self) -> tuple[Path, ...]:
+        """Every file the arm was built from: the description, the tables it read, and a
+        closed form's ``.py`` file (what no output of a command may overwrite)."""
+        desc = self.description
+        code = (Path(self.closed_form.name),) if desc.closed_form.endswith(".py") else ()
+        return (*desc.files, *code)
 
     @property
     def branches(self) -> tuple[str, ...]:

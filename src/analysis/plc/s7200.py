@@ -286,13 +286,16 @@ class S7200Printer(PlcPrinter):
     # --- the dialect's output ---------------------------------------------------------------------
     @classmethod
     def printer(cls, mmap, work, start, options: Options, arm) -> S7200Printer:
-        """The printer :meth:`generate` prints with: the motion networks of the paper's arm
-        (:mod:`.motion`, Table 2's I/O) unless ``options.motion`` is off."""
-        from analysis.plc.motion import motion_networks
+        """The printer :meth:`generate` prints with: the motion networks of an arm of the
+        grabber's machine (:func:`.motion.supports`: Table 2's I/O) unless ``options.motion``
+        is off."""
+        from analysis.plc.motion import motion_networks, supports
 
-        with_motion = options.motion and arm.name == "grabber"
-        return cls(mmap, work, startup_target=start,
-                   motion=motion_networks(mmap) if with_motion else None)  # fmt: skip
+        with_motion = options.motion and supports(arm)
+        printer = cls(mmap, work, startup_target=start,
+                      motion=motion_networks(arm, mmap, work) if with_motion else None)  # fmt: skip
+        printer.arm = arm
+        return printer
 
     def uses(self) -> tuple[dict[str, str], str | None]:
         """What the program's addresses beyond its I/O and work area are for, and what its
@@ -302,7 +305,7 @@ class S7200Printer(PlcPrinter):
             return uses, None
         from analysis.plc.motion import MOTION_STARTUP, motion_uses
 
-        return {**uses, **motion_uses()}, MOTION_STARTUP
+        return {**uses, **motion_uses(self.arm, self.mmap, self.work)}, MOTION_STARTUP
 
     @classmethod
     def generate(cls, arm, program, options: Options) -> Generated:
@@ -319,6 +322,10 @@ class S7200Printer(PlcPrinter):
         uses, motion = printer.uses()
         doc = s7_document(arm, program, text, mmap, work, start, where=printer.startup_where,
                           uses=uses, motion=motion)  # fmt: skip
+        if printer.motion:
+            from analysis.plc.motion import machine_document
+
+            doc["machine"] = machine_document(arm, mmap)
         return Generated(text, json.dumps(doc, indent=2, ensure_ascii=False) + "\n")
 
     @classmethod
