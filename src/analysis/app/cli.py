@@ -28,6 +28,8 @@ import time
 from collections.abc import Sequence
 from pathlib import Path
 
+from analysis.escape import terminal
+
 __all__ = ["build_parser", "main"]
 
 PROG = "python -m analysis"
@@ -474,8 +476,10 @@ def _cmd_stl(args: argparse.Namespace) -> int:
     else:
         also = f" and {args.map}" if args.map else " (no MAP.json: --map FILE writes it)"
         print(
-            f"wrote {args.output} ({args.dialect}, {arm.name} {doc['branch']}, "
-            f"{doc['lines']} lines){also}",
+            terminal(
+                f"wrote {args.output} ({args.dialect}, {arm.name} {doc['branch']}, "
+                f"{doc['lines']} lines){also}"
+            ),
             file=sys.stderr if str(args.output) == "-" else sys.stdout,
         )
     return 0
@@ -551,13 +555,13 @@ def _cmd_arms(args: argparse.Namespace) -> int:
         return 0
     for d in docs:
         if "error" in d:
-            print(f"{d['name']:<11} not loadable: {d['error']}")
+            print(terminal(f"{d['name']:<11} not loadable: {d['error']}"))
             continue
         params = ", ".join(
             f"{k} = {v['value']:g} {v['unit']}" + (" (assumed)" if v["status"] == "assumed" else "")
             for k, v in d["parameters"].items()
         )
-        print(f"{d['name']:<11} {d['title']} ({len(d['joints'])} joints): {params}")
+        print(terminal(f"{d['name']:<11} {d['title']} ({len(d['joints'])} joints): {params}"))
     return 0
 
 
