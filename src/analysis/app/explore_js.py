@@ -31,10 +31,10 @@ and at the reach shells.
 
 from __future__ import annotations
 
-import json
 import math
 from typing import ClassVar
 
+from analysis.escape import js_comment, js_json
 from analysis.kinematics.dh import chain_frames
 from analysis.kinematics.printing import INFIX, ExpressionPrinter
 from analysis.kinematics.pulses import pulse_count
@@ -102,8 +102,8 @@ def graph_js(graph: Graph, arg: str = "a") -> str:
         else:
             expr = JS.doprint(n.op, *map(ref, n.args))
         name = graph.names.get(n.index)
-        lines.append(f"  const v{n.index} = {expr};" + (f"  // {name}" if name else ""))
-    outs = ", ".join(f"{json.dumps(k)}: {ref(v)}" for k, v in graph.outputs.items())
+        lines.append(f"  const v{n.index} = {expr};" + (f"  // {js_comment(name)}" if name else ""))
+    outs = ", ".join(f"{js_json(k)}: {ref(v)}" for k, v in graph.outputs.items())
     lines.append(f"  return {{{outs}}};")
     return "\n".join(lines)
 
@@ -188,13 +188,17 @@ def _module(arm) -> str:
     solve_call = "raw_solve_axis(p.concat([theta1]))" if on_axis else "raw_solve(p)"
     return (
         "(function () {\n"
-        f"// {arm.name}: printed by analysis.app.explore_js from the closed form "
-        f"'{arm.cf.name}' and the D-H chain of data/arms; do not edit\n"
+        "// "
+        + js_comment(
+            f"{arm.name}: printed by analysis.app.explore_js from the closed form "
+            f"'{arm.cf.name}' and the D-H chain of data/arms; do not edit"
+        )
+        + "\n"
         "const raw_solve = function (a) {\n" + graph_js(solve_graph(arm)) + "\n};\n"
         "const raw_frames = function (a) {\n" + graph_js(frames_graph(arm)) + "\n};\n"
         "const raw_pulses = function (a) {\n" + graph_js(pulses_graph(arm)) + "\n};\n"
         + axis_solve
-        + f"const arm = {json.dumps(meta, ensure_ascii=False)};\n"
+        + f"const arm = {js_json(meta)};\n"
         "arm.solve = function (p, theta1) {\n"
         "  const r = (theta1 === undefined || theta1 === null) ? raw_solve(p)\n"
         f"    : {solve_call};\n"

@@ -94,9 +94,10 @@ def default_target(arm: Arm, *, seed: int = 0) -> npt.NDArray[np.float64]:
     """A target the arm reaches on its first branch, to start the explorer at.
 
     What :func:`target_from_joints` gives for the first joint vector that solves with
-    status "ok" on the default branch, trying the middle of each joint's range with the
-    inner joints bent by +-30, +-60 deg, then 256 seeded draws within the joint limits;
-    coordinates cleaned of round-off below 1 nm.
+    status "ok" on the default branch, with the tool not below the base where one does,
+    trying the middle of each joint's range with the inner joints bent by +-30, +-60 deg,
+    then 256 seeded draws within the joint limits; coordinates cleaned of round-off below
+    1 nm.
     """
     lim = arm.bounds
     mid = lim.mean(axis=1)
@@ -113,7 +114,11 @@ def default_target(arm: Arm, *, seed: int = 0) -> npt.NDArray[np.float64]:
             f"arm {arm.name}: inputs {arm.inputs} are not a point (px, py, pz) or a pose "
             f"with RPY angles {RPY_INPUTS}; give the explorer a target"
         )
-    good = np.flatnonzero(arm.solve(p, arm.branches[:1]).ok[:, 0])
+    ok = arm.solve(p, arm.branches[:1]).ok[:, 0]
+    # first a pose whose tool is not below the base (the palletizer's middle of its ranges
+    # hung its gripper under the base, a small folded arm at the bottom of its box)
+    above = ok & (arm.fk(q)[:, 2] >= 0.0)
+    good = np.flatnonzero(above if above.any() else ok)
     return np.round(p[good[0] if good.size else 0], 9) + 0.0
 
 

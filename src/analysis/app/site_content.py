@@ -252,6 +252,7 @@ def static_explorer_html(name: str, arms: Iterable[str] | None = None) -> str:
 
     from analysis.app.explore_js import arm_module_js
     from analysis.app.explore_logic import available_arms, default_target
+    from analysis.escape import js_json
     from analysis.kinematics.arm import load_arm
 
     names = list(arms) if arms is not None else list(available_arms()[0])
@@ -259,7 +260,7 @@ def static_explorer_html(name: str, arms: Iterable[str] | None = None) -> str:
     for arm_name in names:
         arm = load_arm(arm_name)
         try:
-            scripts.append(f"analysisArms[{json.dumps(arm_name)}] = {arm_module_js(arm)};")
+            scripts.append(f"analysisArms[{js_json(arm_name)}] = {arm_module_js(arm)};")
         except (ValueError, TypeError, AttributeError) as exc:  # not a D-H chain
             left[arm_name] = (
                 f"left out of this page ({exc}; the page prints D-H chains only); "

@@ -19,6 +19,7 @@ from __future__ import annotations
 import json
 from typing import ClassVar
 
+from analysis.escape import one_line
 from analysis.plc.instr import CMP, Program, Subroutine, flatten
 from analysis.plc.mapdoc import s7_document, startup_values
 from analysis.plc.memmap import MemoryMap, default_map
@@ -100,6 +101,7 @@ class S7200Printer(PlcPrinter):
     # --- lines ------------------------------------------------------------------------------------
     def network(self, title: str = "") -> None:
         self.net += 1
+        title = self.text(title)
         self.lines.append(f"Network {self.net}" + (f" // {title}" if title else ""))
         self.power = False
         self.empty = True
@@ -119,8 +121,13 @@ class S7200Printer(PlcPrinter):
         self.ins(op, arg)
         self.power = False
 
+    def text(self, text: str) -> str:
+        """Text in a title or a comment: one line (an S7 comment or title ends with its
+        line; :func:`analysis.escape.one_line`)."""
+        return one_line(text)
+
     def comment(self, text: str) -> str:
-        return f"// {text}"
+        return f"// {self.text(text)}"
 
     def label(self, name: str) -> None:
         """A jump target: ``LBL n`` begins a network of its own."""
@@ -147,7 +154,7 @@ class S7200Printer(PlcPrinter):
 
     def header(self, program: Program) -> list[str]:
         return [
-            f"TITLE={program.title}",
+            f"TITLE={self.text(program.title)}",
             *(self.comment(n) for n in program.notes),
             self.comment(self.generated_by()),
         ]
@@ -173,7 +180,10 @@ class S7200Printer(PlcPrinter):
 
     def subroutine_block(self, sub: Subroutine) -> None:
         self.block(sub)
-        self.lines += [f"SUBROUTINE_BLOCK {sub.name}:SBR{sub.number}", f"TITLE={sub.title}"]
+        self.lines += [
+            f"SUBROUTINE_BLOCK {sub.name}:SBR{sub.number}",
+            f"TITLE={self.text(sub.title)}",
+        ]
         for kw, names in (("VAR_INPUT", sub.inputs), ("VAR_OUTPUT", sub.outputs),
                           ("VAR", sub.temps)):  # fmt: skip
             self.lines += [kw, *(f"{n}:REAL;" for n in names), "END_VAR"]
