@@ -40,6 +40,7 @@ from pathlib import Path
 import numpy as np
 
 from analysis import validate
+from analysis.app.explain import batch_reasons
 from analysis.kinematics.arm import Arm
 from analysis.kinematics.status import STATUS_TEXT, Status
 from analysis.safe_io import InputError, check_paths, iter_record_chunks, output_stream
@@ -72,6 +73,17 @@ def input_columns(arm: Arm) -> tuple[str, ...]:
         point.get(name) or f"{name}_{unit}"
         for name, unit in zip(arm.inputs, arm.user_units, strict=True)
     )
+
+
+def input_aliases(columns: tuple[str, ...]) -> dict[str, tuple[str, ...]]:
+    """Other names a header may give the input ``columns``: the name without its unit
+    (``x`` for ``x_mm``, ``alpha`` for ``alpha_deg``), read as that column where the header
+    has it and not the full name.
+
+    >>> input_aliases(("x_mm", "y_mm", "z_mm"))
+    {'x_mm': ('x',), 'y_mm': ('y',), 'z_mm': ('z',)}
+    """
+    return {c: (c.rsplit("_", 1)[0],) for c in columns if "_" in c}
 
 
 def output_columns(arm: Arm) -> list[str]:
@@ -164,8 +176,10 @@ def solve_csv(
     bad number), ``OutputError`` (cannot write, or the output is an input, a device or a
     FIFO) or ``ValueError`` (bad options); the output is then untouched.
     """
-    if isinstance(chunk_rows, bool) or not isinstance(chunk_rows, int) or not (
-        1 <= chunk_rows <= 10_000_000
+    if (
+        isinstance(chunk_rows, bool)
+        or not isinstance(chunk_rows, int)
+        or not (1 <= chunk_rows <= 10_000_000)
     ):
         raise ValueError(f"--chunk-rows {chunk_rows!r} must be a whole number in 1 .. 10,000,000")
     tol = validate.tolerance_mm(tol, "--tol")
@@ -182,6 +196,7 @@ def solve_csv(
         chunk_rows=chunk_rows,
         delimiter=delimiter,
         bad_numbers="raise" if strict else "mark",
+        aliases=input_aliases(columns),
     )
     status_text = np.array([STATUS_TEXT[Status(s)] for s in range(len(Status))], dtype=object)
     counts: Counter = Counter()
@@ -209,6 +224,7 @@ def solve_csv(
                 theta = np.full((k, nb, nj), np.nan)
                 ok = np.zeros((k, nb), dtype=bool)
                 status = np.full(k, int(Status.INVALID), dtype=np.int64)
+                outside = np.zeros(k)
                 row_status = np.full((k, nb), int(Status.INVALID), dtype=np.int64)
                 if valid.any():
                     sol = arm.solve(
@@ -220,6 +236,7 @@ def solve_csv(
                     theta[valid], ok[valid] = sol.theta, sol.ok
                     status[valid] = sol.status
                     row_status[valid] = sol.branch_status  # each branch's own reason
+                    outside[valid] = sol.outside_mm
                 counts.update(status_text[status].tolist())
                 total += k
                 solved += int(ok.any(axis=-1).sum())
@@ -241,8 +258,10 @@ def solve_csv(
                 for j in range(nj):
                     given = zip(pulses[:, j].tolist(), flat_ok.tolist(), strict=True)
                     out.append([str(c) if good else "" for c, good in given])
-                out.append(status_text[row_status].tolist())
-                out.append([r or "" for r in reason for _ in range(nb)])
+                words = status_text[row_status].tolist()
+                out.append(words)
+                said = batch_reasons(words, np.repeat(outside, nb), list(names) * k)
+                out.append([r or said[i * nb + j] for i, r in enumerate(reason) for j in range(nb)])
                 writer.writerows(zip(*out, strict=True))
                 if progress is not None:
                     progress(total)
