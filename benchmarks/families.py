@@ -86,6 +86,10 @@ def sixaxis(n: int = 200_000, n_peer: int = 20_000, rounds: int = 3, seed: int =
         t0 = time.perf_counter()
         arm.solve(p[:10], limits=False, backend="compiled")
         first = time.perf_counter() - t0
+        c = arm.solve(p[:n_peer], limits=False, backend="compiled")
+        r = arm.solve(p[:n_peer], limits=False)
+        same = {"statuses_equal": bool((c.status == r.status).all() and (c.ok == r.ok).all()),
+                "max_angle_diff_rad": float(np.nanmax(np.abs(c.theta - r.theta)))}  # fmt: skip
         cases = {
             "compiled": (n, lambda: arm.solve(p, limits=False, backend="compiled")),
             "numpy": (n_peer, lambda: arm.solve(p[:n_peer], limits=False)),
@@ -112,6 +116,7 @@ def sixaxis(n: int = 200_000, n_peer: int = 20_000, rounds: int = 3, seed: int =
             "compiled / ikgeo": rate["compiled"] / rate["ikgeo"] if "ikgeo" in rate else None,
             "compiled / numpy": rate["compiled"] / rate["numpy"],
             "first_compiled_call_s": first,
+            "compiled = numpy": same,
             "threads": threads,
         }
     return out

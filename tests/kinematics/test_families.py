@@ -299,3 +299,25 @@ def test_alpha_of_any_size_is_read_by_its_sine_and_cosine(published):
     many[3] += 20 * math.pi
     a, b = arm.solve(p[None]), arm.solve(many[None])
     assert np.allclose(a.theta, b.theta, atol=1e-9)
+
+
+def test_the_closed_forms_are_formulas_too(published):
+    """The same derived closed forms evaluated as SymPy expressions (the audit's backend,
+    analysis.kinematics.symbolic) equal the numpy solution (angles modulo a turn: SymPy's
+    wrap is the identity): the 2R planar arm and the SCARA, one branch each, at a target."""
+    import sympy as sp
+
+    from analysis.kinematics.symbolic import sympy_ops
+
+    for name in ("planar2r", "cobra600"):
+        arm = published[name]
+        cf = arm.closed_form
+        syms = sp.symbols(" ".join(arm.inputs), real=True)
+        P = {k: sp.Float(v) for k, v in arm.params.items()}
+        q = cf.ik(sympy_ops, syms, P, tol=sp.Float(1e-6))["branches"][arm.branches[0]]
+        x = arm.target(arm.sample_q(np.random.default_rng(4), 1, branch=arm.branches[0])[0])
+        got = [float(sp.N(e.subs(dict(zip(syms, x, strict=True))))) for e in q]
+        want = arm.solve(x[None]).theta[0, 0]
+        rev = np.array([u == "rad" for u in arm.joint_units])
+        d = np.subtract(got, want)  # SymPy's wrap is the identity: angles modulo a turn
+        assert np.abs(np.where(rev, _wrap(d), d)).max() < 1e-9, (name, got, want)
