@@ -164,6 +164,14 @@ def test_a_ur5_in_ros_frames(folder, rng):
     path.write_text(ur5_ros_style(), encoding="utf-8")
     arm = _assert_fk_equal(path, 10_000, rng)
     assert read_urdf(path).tool == "tool0"
+    # the side frame first in the file: still tool0 (not the first leaf found)
+    text = ur5_ros_style()
+    side = text[text.index('<joint name="wrist_3-ft_frame"'):text.index("</joint>",
+                text.index('<joint name="wrist_3-ft_frame"')) + len("</joint>")]  # fmt: skip
+    first = text.replace(side, "").replace('<joint name="wrist_3-flange"',
+                                           side + '\n<joint name="wrist_3-flange"')  # fmt: skip
+    (folder / "ur5_side_first.urdf").write_text(first, encoding="utf-8")
+    assert read_urdf(folder / "ur5_side_first.urdf").tool == "tool0"
     assert arm.closed_form.family == "6R-parallel" and len(arm.branches) == 8
     q = rng.uniform(-np.pi, np.pi, (300, 6))
     T = arm.table.fk(q)
