@@ -301,6 +301,7 @@ def test_alpha_of_any_size_is_read_by_its_sine_and_cosine(published):
     assert np.allclose(a.theta, b.theta, atol=1e-9)
 
 
+@pytest.mark.slow
 def test_the_closed_forms_are_formulas_too(published):
     """The same derived closed forms evaluated as SymPy expressions (the audit's backend,
     analysis.kinematics.symbolic) equal the numpy solution (angles modulo a turn: SymPy's

@@ -59,6 +59,7 @@ def test_batch_every_branch(name, tmp_path, rng):
     assert all(r["status"] in ("ok", "joint-limits", "degenerate", "out-of-reach") for r in rows)
 
 
+@pytest.mark.slow  # 25 programs, the six-axis ones recorded from eight-branch closed forms
 @pytest.mark.parametrize("dialect", sorted(DIALECTS))
 @pytest.mark.parametrize("name", ARMS)
 def test_stl_every_dialect(name, dialect, tmp_path):

@@ -75,6 +75,7 @@ def test_counts_fit_a_real(name):
     assert (np.abs(arm.pulse_values(hi[None])) <= 2**24).all()
 
 
+@pytest.mark.slow
 def test_what_an_s7_200_cannot_hold():
     """The six-axis IK block is printed for the S7-200 too (its REAL instructions and the
     ATAN2/ACOS subroutines), but the S7-200 has two pulse-train outputs (Q0.0, Q0.1 on a CPU
