@@ -88,3 +88,27 @@ def test_what_an_s7_200_cannot_hold():
         text, map_text = generate(load_arm(name), "s7-200")
         assert "SBR" in text or "CALL" in text
         assert '"dialect": "s7-200"' in map_text
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", ["puma560", "planar2r", "gantry"])
+def test_machine_program_with_six_axes(name):
+    """The machine program (analysis.plc.machine: PLCopen motion blocks beside the IK block)
+    of the six-axis PUMA 560 and of the planar arm and the gantry through every scenario
+    on the ST engine, held to the scenarios' own checks."""
+    from analysis.plc.generate import generate
+    from analysis.plc.machine.program import machine_name
+    from analysis.plc.machine.run import run_scenario
+    from analysis.plc.machine.scenarios import check, scenarios
+    from analysis.plc.machine.spec import machine_spec
+
+    try:
+        st_engine.machine_engine_path()
+    except st_engine.EngineMissing as exc:
+        pytest.skip(str(exc))
+    arm = load_arm(name)
+    spec = machine_spec(arm)
+    text, _ = generate(arm, "st")
+    for key, sc in scenarios(arm).items():
+        tr = run_scenario(text, machine_name(spec), spec, sc.rows)
+        assert check(sc, tr, spec) == [], (name, key)
