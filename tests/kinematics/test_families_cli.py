@@ -79,3 +79,23 @@ def test_urdf(name, tmp_path):
     assert main(["urdf", "--arm", name, "-o", str(out)]) == 0
     model = pin.buildModelFromUrdf(str(out))
     assert model.nq >= load_arm(name).n_joints
+
+
+def test_readme_published_arms_commands(tmp_path, monkeypatch, capsys):
+    """The README's published-arm commands, literally (its ``bash`` block in "One source per
+    arm"): PUMA 560's eight branches, a UR5 through its own URDF, the Cobra's ST program."""
+    from pathlib import Path
+
+    readme = (Path(__file__).parents[2] / "README.md").read_text(encoding="utf-8")
+    section = readme.split("## One source per arm (and how to add one)")[1].split("\n## ")[0]
+    (block,) = [b.split("\n", 1)[1] for b in section.split("```")[1::2] if b.startswith("bash")]
+    monkeypatch.chdir(tmp_path)
+    for line in block.strip().splitlines():
+        for command in line.split("&&"):
+            argv = command.split()
+            assert argv[:3] == ["python", "-m", "analysis"], line
+            assert main(argv[3:]) == 0, (line, capsys.readouterr().err)
+    out = capsys.readouterr().out
+    assert "puma560 has 8 branches; 8 of the 8 requested solve this target" in out
+    assert "RPY = (-90.000, 0.000, 90.000) deg" in out  # UR5 at (0, -90, 90, 0, 90, 0) deg
+    assert (tmp_path / "cobra.st").stat().st_size > 1000
