@@ -12,6 +12,7 @@ axes; revolute, continuous, prismatic and fixed joints).
 
 from __future__ import annotations
 
+import json
 import math
 
 import numpy as np
@@ -268,3 +269,49 @@ def test_cli_takes_a_urdf(folder, capsys):
     assert "FUNCTION_BLOCK" in out.read_text()
     assert main(["ik", "0", "0", "0", "0", "0", "0", "--arm", str(path)]) == 2
     assert Status.INSIDE_REACH  # the refusal's words are the CLI's (exit 2, one line)
+
+
+def _eight_branch_ros_ur5(path, rng) -> np.ndarray:
+    """A configuration of the ROS-frames UR5 whose pose has all eight branches within the
+    joint ranges (sampled, seeded)."""
+    arm = load_arm(str(path))
+    q = rng.uniform(-np.pi / 2, np.pi / 2, (200, 6))
+    sol = arm.solve(arm.target(q))
+    return q[np.flatnonzero(sol.ok.all(axis=1))[0]]
+
+
+@pytest.mark.parametrize("source", ["puma560", "ur5", "puma560.urdf", "ur5_ros.urdf"])
+def test_done_when_eight_branches_through_the_cli(source, folder, capsys, rng):
+    """Issue 32's bar, from a shell's point of view: the PUMA 560 and the UR5 from their
+    published D-H tables and from a URDF (the writer's PUMA; a UR5 in ROS-Industrial's
+    frames), ``ik POSE --arm ... --branch all --json``: eight branches, each one's joint values
+    (as printed) reaching the pose within 1e-6 mm and 1e-9 rad by Pinocchio's FK of a URDF of
+    the arm (the one loaded, or the writer's for a D-H table) and by the D-H rows' FK."""
+    from analysis.app.cli import main
+    from analysis.kinematics.rpy import transform_from_pose
+    from analysis.kinematics.urdf import arm_urdf
+
+    from .test_families import UR5_POSE, _rotation_error
+
+    name = source.split(".")[0].removesuffix("_ros")
+    path = folder / f"{name}_done.urdf"
+    path.write_text(ur5_ros_style() if source == "ur5_ros.urdf" else arm_urdf(name), "utf-8")
+    chain = read_urdf(path)
+    kinds = [j.kind for j in chain.joints if j.kind != "fixed"]
+    arm_arg = str(path) if source.endswith(".urdf") else name
+    if source == "ur5_ros.urdf":  # its base is not the D-H table's: a pose of its own
+        q0 = _eight_branch_ros_ur5(path, rng)
+        assert main(["fk", *map(repr, np.degrees(q0).tolist()), "--arm", arm_arg, "--json"]) == 0
+        pose = json.loads(capsys.readouterr().out)["target"]
+    else:
+        pose = PUMA_POSE if name == "puma560" else UR5_POSE
+    assert main(["ik", *map(repr, map(float, pose)), "--arm", arm_arg, "--branch", "all",
+                 "--json"]) == 0  # fmt: skip
+    doc = json.loads(capsys.readouterr().out)
+    assert [s["branch"] for s in doc["solutions"]] == list(load_arm(arm_arg).branches)
+    q = np.radians([s["theta_deg"] for s in doc["solutions"]])
+    assert q.shape == (8, 6) and len({tuple(np.round(x, 6)) for x in q}) == 8
+    want = transform_from_pose(np.r_[pose[:3], np.radians(pose[3:])])
+    for T in (_pinocchio_fk(path, chain.tool, q, kinds), load_arm(arm_arg).table.fk(q)):
+        assert np.abs(T[:, :3, 3] - want[:3, 3]).max() < 1e-6
+        assert _rotation_error(T[:, :3, :3], want[:3, :3]).max() < 1e-9
