@@ -40,10 +40,35 @@ def engine():
         pytest.skip(str(exc))
 
 
-@pytest.fixture(scope="module", params=ARMS)
-def case(request):
-    arm = load_arm(request.param)
+@pytest.fixture(scope="module", params=[*ARMS, "puma560.urdf", "ur5_ros.urdf"])
+def case(request, tmp_path_factory):
+    """A published arm by name, or loaded from a URDF (the writer's PUMA 560; a UR5 in
+    ROS-Industrial's frames, tests/kinematics/test_families_urdf.py), and its sweep."""
+    source = request.param
+    if source.endswith(".urdf"):
+        from analysis.kinematics.urdf import arm_urdf
+
+        from .test_families_urdf import ur5_ros_style
+
+        path = tmp_path_factory.mktemp("urdf") / source
+        path.write_text(ur5_ros_style() if source.startswith("ur5") else arm_urdf("puma560"),
+                        encoding="utf-8")  # fmt: skip
+        source = str(path)
+    arm = load_arm(source)
     return arm, sweep_targets(arm)
+
+
+@pytest.mark.slow  # builds the sweeps the next test runs
+def test_the_sweep_has_the_seed_arms_kinds(case):
+    """Every arm's sweep has the seed arms' kinds: half pulses, wrap cuts, a reach boundary
+    (out of reach or a joint's stroke, 1e-3 .. 1 mm either side), and the six-axis arms'
+    singular sets (the wrist flip: position and orientation rays)."""
+    arm, targets = case
+    kinds = set(targets["kind"])
+    assert {"config", "box", "half-pulse", "cut", "bad", "huge"} <= kinds, kinds
+    assert kinds & {"out-of-reach-1mm", "joint-limits-1mm"}, kinds
+    if arm.n_joints == 6:
+        assert {"flip-1mm", "flip-tol"} <= kinds and kinds & {"out-of-reach-1mm"}, kinds
 
 
 @pytest.mark.slow  # a sweep of about 1,100 targets per arm on the engine: make test only
