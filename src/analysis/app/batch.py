@@ -40,9 +40,9 @@ from pathlib import Path
 import numpy as np
 
 from analysis import validate
-from analysis.safe_io import InputError, check_paths, iter_record_chunks, output_stream
 from analysis.kinematics.arm import Arm
 from analysis.kinematics.status import STATUS_TEXT, Status
+from analysis.safe_io import InputError, check_paths, iter_record_chunks, output_stream
 
 __all__ = [
     "INPUT_COLUMNS",

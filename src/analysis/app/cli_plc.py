@@ -273,8 +273,8 @@ def _cmd_stl_run(args: argparse.Namespace) -> int:
 
 def _cmd_stl_run_st(args: argparse.Namespace) -> int:
     """``--dialect st|plcopen-xml`` (:mod:`analysis.plc.machine.offline`)."""
-    from analysis.safe_io import check_paths, read_table, write_text_atomic
     from analysis.plc.machine import offline
+    from analysis.safe_io import check_paths, read_table, write_text_atomic
 
     if args.cpu is not None:
         raise ValueError(f"--cpu applies to --dialect s7-200 (a {args.dialect} program names "
