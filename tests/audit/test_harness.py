@@ -2,10 +2,11 @@
 
 Per paper: tautologies, unrelated true statements, comments appended and single edits of the
 correction (sign, index, digit, symbol, sin/cos, threshold), each held against the correction
-with SymPy first, must fail ``verify``; for a ``holds`` row and for every printed record whose own check passes
-the same edits of the printed text must fail the check itself; every cause's demonstration must
-fail once its corrections are printed. The counts are written to build/audit-harness/<paper>.json (and printed by
-``python -m analysis.audit.harness``): 0 tautologies and 0 non-equivalent texts accepted.
+with SymPy first, must fail ``verify``; for a ``holds`` row and for every printed record whose
+own check passes, the same edits of the printed text must fail the check itself; every cause's
+demonstration must fail once its corrections are printed. The counts are written to
+build/audit-harness/<paper>.json (and printed by ``python -m analysis.audit.harness``): 0
+tautologies and 0 non-equivalent texts accepted.
 """
 
 from __future__ import annotations

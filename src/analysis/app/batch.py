@@ -169,8 +169,8 @@ def solve_csv(
     ):
         raise ValueError(f"--chunk-rows {chunk_rows!r} must be a whole number in 1 .. 10,000,000")
     tol = validate.tolerance_mm(tol, "--tol")
-    check_paths(inputs=[p for p in (input_path, params) if p], outputs=[output_path],
-                make_parents=make_dirs)  # fmt: skip
+    check_paths(inputs=[*arm.input_files, *(p for p in (input_path, params) if p)],
+                outputs=[output_path], make_parents=make_dirs)  # fmt: skip
     names = arm.branch_names(branch or arm.branches[0])
     nb, nj = len(names), arm.n_joints
     columns = input_columns(arm)

@@ -346,13 +346,18 @@ def add_stl_run(sub, parser_class=None, formatter_class=None) -> None:
         help="run a PLC program offline (S7-200 STL on the evaluator, S7-300 AWL on awlsim)",
         description="Run a PLC program file: write --set values, run --scans scans, print "
         "the --read values. S7-200 STL (STEP 7-Micro/WIN text form) runs on the project's "
-        "S7-200 evaluator, S7-300 AWL on awlsim.",
+        "S7-200 evaluator, S7-300 AWL on awlsim; IEC 61131-3 ST (and the ST in a PLCopen XML "
+        "file) on pyplcopen's ST engine, one scan or, with --scenario, cycle by cycle with "
+        "one simulated axis per joint into a --trace.",
         epilog="examples:\n"
         "  python -m analysis stl --dialect s7-200 -o ik.awl --map ik.json\n"
         "  python -m analysis stl-run ik.awl --dialect s7-200 --set VD0=100.0 --set VD4=100.0"
         " --set VD8=600.0 --read VD100:DINT --read V112.0:BOOL --json\n"
         "  python -m analysis stl-run pal.awl --dialect s7-300 --set MD0=250.0 --set MD4=0.0"
-        " --set MD8=100.0 --read MD100:DINT",
+        " --set MD8=100.0 --read MD100:DINT\n"
+        "  python -m analysis stl --dialect st --arm gr1 -o gr1.st --map gr1.json\n"
+        "  python -m analysis stl-run gr1.st --dialect st --map gr1.json --scenario s.csv"
+        " --trace t.csv   # s.csv: t_s,name,value (0,Enable,TRUE ...)",
         **({"formatter_class": formatter_class} if formatter_class else {}),
     )
     p.add_argument("program", help="program file (- reads standard input)")
