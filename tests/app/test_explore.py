@@ -27,6 +27,7 @@ from analysis.app.explore import (
     pose_report,
     target_from_joints,
 )
+from analysis.app.explore_logic import FK_CAPTION, IK_CAPTION
 from analysis.kinematics.arm import BRANCHES, BaseAxisError, UnreachableError, load_arm
 from analysis.kinematics.params import data_dir
 from analysis.kinematics.status import STATUS_TEXT, Status
@@ -115,9 +116,33 @@ def test_row8_unreachable_uses_library_message(arm, table4):
     with pytest.raises(UnreachableError) as exc:
         arm.ik(p)
     assert rep.message == str(exc.value) and "31.849 mm beyond" in rep.message
-    assert rep.table.empty and rep.to_html() == ""
+    assert rep.table.empty
+    # the explorer keeps its table's place: every branch, no number, the target's status
+    html = rep.to_html("every branch for this target")
+    assert html.count("<tr") == 1 + len(arm.branches) and html.count(">out-of-reach<") == 4
+    assert ">every branch for this target</caption>" in html and "nan" not in html.lower()
     with pytest.raises(KeyError):
         rep.row()
+
+
+def test_row8_explained_with_the_nearest_reachable_target(arm, table4):
+    """The explorer's sentence (analysis.app.explain): the distance beyond the reach and the
+    reachable target nearest row 8 on the line from the shoulder, which is on the shell."""
+    from analysis.app.explain import explain
+
+    p = _target(table4, "8")
+    rep = pose_report(arm, p)
+    e = explain(arm, p, rep.status, rep.outside_mm, "front-up")
+    assert e.word == "out-of-reach" and "is 31.849 mm beyond the reach" in e.sentence
+    assert plain_message(rep) == str(e)
+    n = np.asarray(e.nearest)
+    shoulder = np.array([0.0, 0.0, arm.params.L1])
+    reach = arm.params.L2 + arm.params.L3
+    assert np.linalg.norm(n - shoulder) == pytest.approx(reach, abs=1e-6)
+    direction = (np.asarray(p) - shoulder) / np.linalg.norm(np.asarray(p) - shoulder)
+    np.testing.assert_allclose(n, shoulder + reach * direction, atol=1e-6)
+    assert arm.solve(n, ("front-up",)).ok[0]
+    assert e.sentence.endswith(f": ({n[0]:.3f}, {n[1]:.3f}, {n[2]:.3f}) mm")
 
 
 def test_inside_inner_reach(arm):
@@ -179,7 +204,7 @@ def test_plain_message_names_no_python_argument_or_flag(arm):
         text = plain_message(rep)
         assert text.startswith(STATUS_TEXT[rep.status] + " — ")
         assert "theta1_on_axis" not in text and "--" not in text and "-0.0" not in text
-    assert 'Tick "allow θ1 on the base axis"' in plain_message(pose_report(arm, [0, 0, 800]))
+    assert "tick “allow θ1 on the base axis”" in plain_message(pose_report(arm, [0, 0, 800]))
 
 
 def test_palletizer_generic(table4):
@@ -262,12 +287,14 @@ def test_explorer_sliders_update_message_table_plot(arm):
     x.value, y.value = 200.0, 500.0  # Table 4 row 8
     assert "31.849 mm beyond the reach" in ex.message.value
     assert "out-of-reach" in ex.message.value
-    assert ex.table.value == "" and _tip(ex) is None
+    assert "nearest reachable on the line" in ex.message.value
+    # no layout shift: the table keeps its rows, without numbers
+    assert ex.table.value.count(">out-of-reach<") == len(arm.branches) and _tip(ex) is None
     assert "nan" not in ex.message.value.lower()
     x.value, y.value, z.value = 0.0, 0.0, 800.0
     assert "base axis" in ex.message.value and "allow θ1 on the base axis" in ex.message.value
     assert "theta1_on_axis" not in ex.message.value and "--" not in ex.message.value
-    assert ex.table.value == "" and _tip(ex) is None
+    assert ex.table.value.count(">base-axis<") == len(arm.branches) and _tip(ex) is None
     ex.on_axis.value = True  # the check box supplies theta1 from its slider
     assert ex.on_axis_deg.layout.display is None
     ex.on_axis_deg.value = 30.0
@@ -278,7 +305,7 @@ def test_explorer_sliders_update_message_table_plot(arm):
     assert ex.report.row()["c1"] == 500 and _tip(ex) == pytest.approx([300, 300, 600], abs=1e-3)
     ex.branch.value = "back-down"
     assert ex.message.value.count("back-down:") == 1 and "&#9654; back-down" in ex.table.value
-    assert ex.table.value == pose_report(arm, [300, 300, 600], "back-down").to_html()
+    assert ex.table.value == pose_report(arm, [300, 300, 600], "back-down").to_html(IK_CAPTION)
 
 
 def test_explorer_fk_mode(arm):
@@ -289,16 +316,19 @@ def test_explorer_fk_mode(arm):
     assert (t1.value, t2.value, t3.value) == (45.0, 10.21, -155.13)
     t1.value, t2.value, t3.value = 30.0, 20.0, -60.0
     p = arm.dh_table().fk(np.radians([30.0, 20.0, -60.0]))[:3, 3]
-    assert "FK: gripper at (" + ", ".join(f"{v:.2f}" for v in p) + ") mm" in ex.message.value
+    assert "tool at (" + ", ".join(f"{v:.2f}" for v in p) + ") mm" in ex.message.value
+    assert "FK: joints (30.00°, 20.00°, -60.00°) → pulses (333, 222, -667)" in ex.message.value
+    assert ex.message.value.endswith("branch: front-up</div>")
+    assert f">{FK_CAPTION}</caption>" in ex.table.value
     np.testing.assert_allclose(ex.report.target, p, atol=FK_TOL_MM)
     np.testing.assert_allclose(ex.report.angles_deg(), [30.0, 20.0, -60.0], atol=1e-9)
     # straight up the base axis: theta1 comes from the slider, never a NaN or an error
     t2.value, t3.value = 90.0, 0.0
     assert ex.report.reachable and "nan" not in ex.table.value.lower()
     assert ex.report.row()["theta1_deg"] == pytest.approx(30.0, abs=1e-9)
-    # the stretched arm: margin 0, printed as 0.0 (never "-0.0 mm")
+    # the stretched arm: on the reach shell, never "-0.00"
     t1.value, t2.value, t3.value = 0.0, 0.0, 0.0
-    assert "reach margin 0.0 mm" in ex.message.value
+    assert "tool at (510.00, 0.00, 660.00) mm" in ex.message.value
     assert "-0.0" not in ex.message.value and "-0.00" not in ex.table.value
     t1.value, t2.value, t3.value = 30.0, 20.0, -60.0
     ex.fk_mode.value = False  # back to IK: the target sliders take the FK point
@@ -381,4 +411,5 @@ def test_explorer_takes_a_pose_arm():
     ex.fk_mode.value = False
     assert ex.report.reachable
     ex.target_sliders[3].value = 40.0  # an orientation out of the arm plane
-    assert ex.report.status_text == "orientation" and ex.table.value == ""
+    assert ex.report.status_text == "orientation"
+    assert ex.table.value.count(">orientation<") == len(gr1.branches)

@@ -26,6 +26,9 @@ SHOTS = Path(
 
 ARM_RGB = (0x1F, 0x77, 0xB4)
 """The arm's line colour (``analysis.app.arm3d._arm_traces``: ``#1f77b4``, 9 px wide)."""
+STALE_RGB = (0x8F, 0x96, 0x9E)
+"""The line colour of a pose kept, greyed, while the target has no solution
+(``js/arm3d_view.js``: ``STALE``)."""
 COLOUR_TOL = 40  # max |channel difference| of an arm pixel (anti-aliased edges, none needed)
 WINDOW = 2  # px each side of a sample point searched for the arm's colour (its half width: 4)
 AWAY_PX = 14  # an old sample counts as vacated only this far from every new link [px]
@@ -84,19 +87,21 @@ def _distance_to_segments(p: np.ndarray, a: np.ndarray, b: np.ndarray) -> np.nda
     return np.linalg.norm(p[:, None, :] - nearest, axis=2).min(axis=1)
 
 
-def _arm_coloured(img: np.ndarray, x: float, y: float) -> bool:
+def _arm_coloured(img: np.ndarray, x: float, y: float, rgb=ARM_RGB) -> bool:
     h, w, _ = img.shape
     i, j = round(y), round(x)
     patch = img[
         max(i - WINDOW, 0) : min(i + WINDOW + 1, h), max(j - WINDOW, 0) : min(j + WINDOW + 1, w)
     ]
-    return bool((np.abs(patch.astype(int) - ARM_RGB).max(axis=-1) <= COLOUR_TOL).any())
+    return bool((np.abs(patch.astype(int) - rgb).max(axis=-1) <= COLOUR_TOL).any())
 
 
-def assert_arm_on_screen(page, selector: str, frames, previous=None) -> None:
-    """The arm through ``frames`` [mm] (None: no arm) is on screen in the plot ``selector``; if
-    ``previous`` (the frames drawn before the change) is given, the arm has left the places
-    of the old links that no new link covers. Raises AssertionError naming the points."""
+def assert_arm_on_screen(page, selector: str, frames, previous=None, rgb=ARM_RGB) -> None:
+    """The arm through ``frames`` [mm] (None: no arm) is on screen in the plot ``selector``,
+    in colour ``rgb`` (:data:`STALE_RGB`: the pose kept, greyed, for a target without a
+    solution); if ``previous`` (the frames drawn before the change) is given, the arm has
+    left the places of the old links that no new link covers. Raises AssertionError naming
+    the points."""
     from PIL import Image
 
     f = np.asarray(frames if frames is not None else [], dtype=float).reshape(-1, 3)
@@ -109,7 +114,7 @@ def assert_arm_on_screen(page, selector: str, frames, previous=None) -> None:
     joints, xy_new, xy_old = xy[: len(f)], xy[len(f) : len(f) + len(new)], xy[len(f) + len(new) :]
     shot = page.screenshot(clip={"x": left, "y": top, "width": width, "height": height})
     img = np.asarray(Image.open(io.BytesIO(shot)).convert("RGB"))
-    missing = [_px(p) for p in xy_new if not _arm_coloured(img, *p)]
+    missing = [_px(p) for p in xy_new if not _arm_coloured(img, *p, rgb=rgb)]
     if missing:
         _keep(img, xy_new, "missing")
     assert not missing, (

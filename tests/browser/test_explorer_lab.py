@@ -38,12 +38,13 @@ from urllib.parse import urlsplit
 import nbformat
 import pytest
 
+from analysis.app.explore_logic import FK_CAPTION, fk_line, plain_message, pose_report
 from analysis.app.lab import command as lab_command
 from analysis.app.lab import prepare
 from analysis.app.report import CHROMIUM_FLAGS, NB_BACKEND
 
 from .conftest import LOCAL_HOSTS, PROJECT
-from .screen import assert_arm_on_screen
+from .screen import STALE_RGB, assert_arm_on_screen
 from .screen import close as _close
 
 NOTEBOOK = PROJECT / "notebooks" / "09_explore.ipynb"
@@ -464,10 +465,26 @@ def test_explorer_in_jupyterlab(lab, lab_page, shots):
     )
 
     step("1 typed")
-    # 2. a slider moved with the mouse: the message changes, the arm follows the readouts
+    # 2. a slider dragged with the mouse: the arm follows during the drag (drawn in the browser
+    # from the printed kinematics at each move, before the button is released), then the
+    # kernel's message and pose follow
     before = _message(page)
     handle = x.locator(".noUi-handle")
-    _drag(page, handle.bounding_box(), -40, 0)
+    box = handle.bounding_box()
+    hx, hy = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+    n0 = page.evaluate("() => document.querySelector('.arm3d-widget').arm3dDraws.length")
+    page.mouse.move(hx, hy)
+    page.mouse.down()
+    for k in range(1, 9):
+        page.mouse.move(hx - 5 * k, hy)
+        page.wait_for_timeout(60)
+    during = page.evaluate(
+        """n => document.querySelector('.arm3d-widget').arm3dDraws.slice(n)
+        .filter(d => d.source === 'local').length""",
+        n0,
+    )
+    page.mouse.up()
+    assert during >= 3, f"the arm was redrawn {during} times during the drag"
     page.wait_for_function(
         "old => document.querySelector('.explorer-message').innerText !== old", arg=before
     )
@@ -492,16 +509,19 @@ def test_explorer_in_jupyterlab(lab, lab_page, shots):
         "() => document.querySelector('.explorer-message').innerText.includes('31.849 mm beyond')"
     )
     row8 = _message(page)
-    assert row8.startswith("out-of-reach — target (200, 500, 600) mm"), row8
-    assert page.locator(".explorer-table").count() == 0  # no numbers for a bad target
+    assert row8 == plain_message(pose_report(arm, [200, 500, 600])), row8  # as the site says
+    assert "nearest reachable on the line" in row8
+    rows = page.locator(".explorer-table tbody tr").all_inner_texts()  # kept, no numbers
+    assert len(rows) == 4 and all(r.split()[-1] == "out-of-reach" for r in rows), rows
     page.wait_for_function(
-        "() => !document.querySelector('.arm3d-widget .js-plotly-plot')"
-        "._fullData.find(t => t.name === 'arm').x?.length"
+        "() => document.querySelector('.arm3d-widget .js-plotly-plot')._fullLayout.title.text"
+        ".includes('no solution')"
     )
     drawn = _drawn(page)
-    assert drawn["arm"] == [] and _close(drawn["target"], [[200, 500, 600]])
-    assert "no solution" in drawn["title"]
-    assert_arm_on_screen(page, PLOT, None, previous=_fk_pose(arm, [200, 100, 600], "front-up"))
+    kept = _fk_pose(arm, [200, 100, 600], "front-up")  # the last pose, kept and greyed
+    assert _close(drawn["arm"], kept) and _close(drawn["target"], [[200, 500, 600]]), drawn
+    plot.scroll_into_view_if_needed()
+    assert_arm_on_screen(page, PLOT, kept, rgb=STALE_RGB)
     page.screenshot(path=shots / "lab-explorer-row8.png", full_page=False)
 
     step("4 row 8")
@@ -539,6 +559,14 @@ def test_explorer_in_jupyterlab(lab, lab_page, shots):
     assert _close(drawn["arm"], arm.frames(q)), drawn
     assert "FK" in drawn["title"]
     assert_arm_on_screen(page, PLOT, arm.frames(q), previous=row1)
+    # the FK line: the joints set, their pulses, the tool and the branch they belong to
+    page.wait_for_function(
+        "() => document.querySelector('.explorer-message').innerText.startsWith("
+        "'FK: joints (30.00°')"
+    )
+    rep = pose_report(arm, arm.fk(q), "front-up", theta1_on_axis=float(q[0]))
+    assert _message(page) == fk_line(arm, q, rep), _message(page)
+    assert page.locator(".explorer-table caption").first.inner_text() == FK_CAPTION
 
     assert not page.blocked or all("127.0.0.1" not in u for u in page.blocked)
     step("6 FK")

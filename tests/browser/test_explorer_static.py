@@ -20,10 +20,16 @@ import time
 import numpy as np
 import pytest
 
-from analysis.app.explore_logic import available_arms, target_from_joints
+from analysis.app.explore_logic import (
+    available_arms,
+    fk_line,
+    plain_message,
+    pose_report,
+    target_from_joints,
+)
 from analysis.kinematics.arm import load_arm, paper_arm
 
-from .screen import assert_arm_on_screen
+from .screen import STALE_RGB, assert_arm_on_screen
 from .screen import close as _close
 
 PATH = "notebooks/09_explore.html"
@@ -59,6 +65,13 @@ def explorer_page(context, site_url, site_dir, blocked):
     page.close()
 
 
+# where the 3D view and the table are on the page, and how tall the message and table are
+_LAYOUT = """() => { const q = s => document.querySelector('.static-explorer ' + s)
+    .getBoundingClientRect();
+    return [q('.explorer-plot').top + scrollY, q('.explorer-message').height,
+            q('.explorer-table-wrap').height]; }"""
+
+
 def _change(page, label: str, value: float) -> tuple[dict, float]:
     """Type ``value`` into the number box of slider ``label`` (a change event, as a user's
     Enter); return what is drawn next and the ms from the change to it on screen."""
@@ -74,6 +87,14 @@ def _change(page, label: str, value: float) -> tuple[dict, float]:
         ".find(d => d.t > window.changeAt); return [d.t - window.changeAt, d.path]; }"
     )
     return page.evaluate(_DRAWN) | {"path": path}, ms
+
+
+def _set(page, label: str, value: float) -> None:
+    """Type ``value`` into slider ``label``'s box (a change event), whether or not it moves the
+    arm (the same value again draws nothing new)."""
+    box = page.locator(f".static-explorer .explorer-number[aria-label='{label}']").first
+    box.fill(f"{value:g}")
+    box.dispatch_event("change")
 
 
 def _pose(arm, target, branch="front-up"):
@@ -157,14 +178,21 @@ def test_the_drawn_arm_follows_every_change(explorer_page, shots):
     assert _close(drawn["arm"], _pose(arm, target, "back-down")), drawn
     assert_arm_on_screen(page, PLOT, _pose(arm, target, "back-down"), previous=before)
     page.locator(".static-explorer .explorer-branch input[value='front-up']").check()
-    # Table 4 row 8: out of reach, no arm drawn, the target still shown
+    # Table 4 row 8: out of reach; the last pose stays, greyed, the target shown, the sentence
+    # and the nearest reachable target as the Lab explorer says them; nothing moves on the page
     _change(page, "x [mm]", 200)
     _change(page, "z [mm]", 600)
+    kept = _pose(arm, [200, 50, 600])
+    where = page.evaluate(_LAYOUT)
     drawn, _ = _change(page, "y [mm]", 500)
-    assert drawn["path"] == "in-place", drawn  # no solution: the arm taken off the scene
-    assert drawn["arm"] == [] and _close(drawn["target"], [[200, 500, 600]]), drawn
-    assert drawn["message"].startswith("out-of-reach") and "31.849 mm" in drawn["message"]
-    assert_arm_on_screen(page, PLOT, None, previous=_pose(arm, [200, 100, 600]))  # arm gone
+    assert drawn["path"] == "in-place", drawn
+    assert _close(drawn["arm"], kept) and _close(drawn["target"], [[200, 500, 600]]), drawn
+    assert drawn["message"] == plain_message(pose_report(arm, [200, 500, 600])), drawn
+    assert "31.849 mm beyond the reach" in drawn["message"]
+    assert page.evaluate(_LAYOUT) == where, "the page moved for a target without a solution"
+    rows = page.locator(".static-explorer .explorer-table tbody tr").all_inner_texts()
+    assert len(rows) == 4 and all(r.split()[-1] == "out-of-reach" for r in rows), rows
+    assert_arm_on_screen(page, PLOT, kept, rgb=STALE_RGB)  # greyed, where it was
     page.screenshot(path=shots / "site-explorer-row8.png")
     # FK mode: the joint sliders drive it
     _change(page, "y [mm]", 100)
@@ -191,3 +219,54 @@ def test_the_drawn_arm_follows_every_change(explorer_page, shots):
     print(f"static explorer: change -> pose on screen {report}")
     # the time is recorded, not asserted (a timed test fails on a loaded machine): make bench
     # measures it against Plotly.update (benchmarks/explorer_redraw.py)
+
+
+def _select_arm(page, name: str) -> None:
+    page.select_option(".static-explorer .explorer-arm", name)
+    page.wait_for_function(
+        "n => document.querySelector('.static-explorer').explorer.arm.name === n", arg=name
+    )
+
+
+def test_base_axis_offers_theta1_and_fk_says_which_branch(explorer_page, shots):
+    """A target on the base axis: the page says so as the Lab explorer does and offers the
+    waist angle (the box and its slider), with which the arm is drawn where Python puts it;
+    FK mode's line (joints, pulses, tool, branch) equals Python's, the palletizer's pose with
+    its wrist set off the IK's level (the issue's example) belongs to no branch."""
+    page = explorer_page
+    arm = paper_arm()
+    _select_arm(page, "grabber")
+    page.locator(".static-explorer .explorer-fk").uncheck()
+    for label, v in (("x [mm]", 0), ("y [mm]", 0)):
+        _change(page, label, v)
+    drawn, _ = _change(page, "z [mm]", 800)
+    assert drawn["message"] == plain_message(pose_report(arm, [0, 0, 800]))
+    assert "allow θ1 on the base axis" in drawn["message"]
+    page.locator(".static-explorer .explorer-axis").check()
+    drawn, _ = _change(page, "θ1 on the axis [°]", 30)
+    sol = arm.solve([0, 0, 800], ("front-up",), theta1_on_axis=np.radians(30.0))
+    assert sol.ok[0] and _close(drawn["arm"], arm.frames(sol.theta[0])), drawn
+    assert drawn["message"].startswith("ok — front-up: θ = (30.00,"), drawn
+    page.locator(".static-explorer .explorer-axis").uncheck()
+    # FK: the palletizer at (180, 0, 100, -147.62) deg
+    pal = load_arm("palletizer")
+    _select_arm(page, "palletizer")
+    page.locator(".static-explorer .explorer-fk").check()
+    q_deg = [180.0, 0.0, 100.0, -147.62]
+    for k, v in enumerate(q_deg[:-1]):
+        _set(page, f"θ{k + 1} [°]", v)
+    drawn, _ = _change(page, "θ4 [°]", q_deg[-1])
+    q = np.radians(q_deg)
+    rep = pose_report(pal, target_from_joints(pal, q), theta1_on_axis=float(q[0]))
+    assert drawn["message"] == fk_line(pal, q, rep), drawn["message"]
+    assert "branch: none (" in drawn["message"]
+    caption = page.locator(".static-explorer .explorer-table caption").inner_text()
+    assert caption == "other solutions for this point"
+    np.testing.assert_allclose(drawn["arm"], pal.frames(q), atol=2e-3)  # all frames, as drawn
+    page.locator(".static-explorer").scroll_into_view_if_needed()
+    page.screenshot(path=shots / "site-explorer-fk-palletizer.png")
+    # an arm the page cannot print is named, with the reason
+    note = page.locator(".static-explorer .explorer-left-out").inner_text()
+    assert note.startswith("picker: left out of this page") and "make lab" in note
+    page.locator(".static-explorer .explorer-fk").uncheck()
+    _select_arm(page, "grabber")

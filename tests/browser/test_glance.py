@@ -56,7 +56,8 @@ def test_the_four_verdicts_fill_the_first_screen(context, site_url, shots):
             })"""
         )
         first = page.evaluate(  # the block right after the title holds the table
-            "() => { const n = document.querySelector('.bd-article section > h1').nextElementSibling;"
+            "() => { const h = document.querySelector('.bd-article section > h1');"
+            " const n = h.nextElementSibling;"
             " return Boolean(n && n.querySelector('table.glance')); }"
         )
     finally:

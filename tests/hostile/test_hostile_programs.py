@@ -104,6 +104,7 @@ def test_a_scan_that_never_ends_stops_at_the_watchdog_naming_the_jump(case):
     assert str(cpu.fault) == msg
 
 
+@pytest.mark.slow  # three scans of a million statements (about 2 s)
 def test_the_issue_reproductions_stop_on_the_command_line(tmp_path):
     """Issue 27's three: LBL 0 / LD SM0.0 / JMP 0; a FOR whose body resets its index; nested
     FOR loops (21 minutes a scan before). The default watchdog, through stl-run."""
@@ -150,6 +151,7 @@ def test_a_pointer_nested_deep_is_refused_in_one_line(depth, where):
     assert "a pointer to a pointer is no S7-200 operand" in msg
 
 
+@pytest.mark.slow  # parses 65,537 statements
 def test_programs_no_s7200_could_hold_are_refused_before_they_take_the_memory(tmp_path):
     """Past :data:`MAX_STATEMENTS` statements: refused at the statement past the limit;
     past :data:`MAX_PROGRAM_CHARS` characters: refused before the text is split."""

@@ -65,7 +65,8 @@ def user_arms(tmp_path_factory):
         for k in range(4):
             rng = np.random.default_rng(7000 + 10 * i + k)
             path = folder / f"{fam}-{conv}-{k}.toml"
-            path.write_text(random_arm(rng, fam, conv, name="arm_" + path.stem.replace("-", "_")), encoding="utf-8")
+            name = "arm_" + path.stem.replace("-", "_")  # an identifier (the schema's rule)
+            path.write_text(random_arm(rng, fam, conv, name=name), encoding="utf-8")
             arms[(fam, conv, k)] = load_arm(str(path))
     return arms
 
@@ -178,9 +179,11 @@ def test_random_arms_backends_agree(user_arms, rng):
 
 # --------------------------------------------------------------------------- refusals
 OUTSIDE = {
-    "six joints": ([(90, 0, 300, 0)] + [(90, 50, 0, 0)] * 5, "6 joint"),
+    "seven joints": ([(90, 0, 300, 0)] + [(90, 50, 0, 0)] * 6, "7 joint"),
+    "six joints, 2 across 3": ([(90, 0, 300, 0)] + [(90, 50, 0, 0)] * 5, "2 and 3 of the six"),
     "axes 2, 3 not parallel": ([(90, 0, 300, 0), (35, 250, 0, 0), (0, 200, 0, 0)], "not parallel"),
-    "planar": ([(0, 100, 0, 0), (0, 250, 0, 0), (0, 200, 0, 0)], "joints 1 and 2 are parallel"),
+    "planar, then across": ([(0, 100, 0, 0), (0, 250, 0, 0), (90, 200, 0, 0), (0, 100, 0, 0)],
+                            "joints 1 and 2 are parallel"),
     "two joints": ([(90, 0, 300, 0), (0, 250, 0, 0)], "2 joint"),
     "4R without keep": ([(90, 0, 300, 0), (0, 250, 0, 0), (0, 200, 0, 0), (90, 50, 0, 0)], "keep"),
 }  # fmt: skip

@@ -93,7 +93,7 @@ def test_values_converted_to_joint_units(tmp_path):
         ('home = { mode = "set", position = 180.0 }', "", "outside the joint's limits"),
         ("", 'home = { mode = "set", position = -1.0 }', "outside the joint's limits"),
         ('home = { mode = "set" }', "", "home position: is missing"),
-        ('max_velocity = { value = 1.0, unit = "deg/s", sorce = "x" }', "", "did you mean 'source'"),
+        ('max_velocity = { value = 1.0, unit = "deg/s", sorce = "x" }', "", "mean 'source'"),
         ('max_velocity = { value = 1.0, unit = "deg/s", status = "guessed" }', "", "status"),
     ],
 )

@@ -136,7 +136,9 @@ def test_urdf_command_line(tmp_path, capsys):
     text = capsys.readouterr().out
     assert text.startswith("<?xml") and '<robot name="gr1">' in text
     out = tmp_path / "sub" / "g.urdf"
-    assert main(["urdf", "--arm", "gr1", "-o", str(out), "--json"]) == 0
+    assert main(["urdf", "--arm", "gr1", "-o", str(out)]) == 2  # no directory made unasked
+    assert "--mkdir creates it" in capsys.readouterr().err and not out.parent.exists()
+    assert main(["urdf", "--arm", "gr1", "-o", str(out), "--json", "--mkdir"]) == 0
     assert '"joints": 5' in capsys.readouterr().out and out.read_text("utf-8") == text
     assert main(["urdf", "--arm", "no-such-arm"]) == 2
     assert "no arm 'no-such-arm'" in capsys.readouterr().err

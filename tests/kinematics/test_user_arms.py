@@ -319,7 +319,7 @@ def test_planar_2r_through_every_path(planar, tmp_path, capsys):
     ex = Explorer(str(planar))
     assert len(ex.target_sliders) == 2 and "ok" in ex.message.value
     ex.fk_mode.value = True
-    assert "FK: gripper at" in ex.message.value
+    assert "FK: joints (" in ex.message.value
     src, out = tmp_path / "t.csv", tmp_path / "o.csv"
     src.write_text("x_mm,y_mm\n300,100\n900,0\n")
     assert main(["ik", "--arm", str(planar), "--input", str(src), "--output", str(out)]) == 0

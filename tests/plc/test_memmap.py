@@ -43,27 +43,29 @@ def test_the_gr1_map_gives_its_angles_in_radians_and_every_status(dialect):
 
 
 def test_the_grabber_map_lists_its_motion_memory():
-    """VB120, VD124..VD156, I0.0/I0.1, Q0.x, SMB67/SMB77 (an HMI tag there breaks the
-    motion logic: the map must say they are taken)."""
+    """VB120-VB180, the profile tables, I0.0/I0.1, Q0.x, SMB67/SMB77 (an HMI tag there breaks
+    the motion logic: the map must say they are taken); nothing is left unnamed."""
     d = _doc("s7-200")
     ranges = {m["range"]: m["use"] for m in d["memory"]}
     for need in (
         "VB120",
         "V121.0",
-        "VD124",
-        "VD144",
-        "VD156",
+        "VW124",
+        "VD128",
+        "VD172",
+        "VW180",
         "I0.0",
         "I0.1",
         "Q0.0",
         "Q0.7",
         "SMB67",
         "SMB77",
-        "SMD72",
-        "SMD82",
+        "SMW168",
+        "SM76.7",
         "AC0",
     ):
         assert need in ranges, need
+    assert not [r for r, use in ranges.items() if use == "program-internal"]
     assert ranges["VB0-VB11"] == "inputs: px, py, pz" and ranges["VB200-VB291"].startswith("work:")
     assert ranges["LB0-LB43"].startswith("subroutine parameters")  # ATAN2: 11 REALs
     # no two ranges share a byte (every byte the program uses has one owner)
@@ -78,7 +80,7 @@ def test_the_grabber_map_lists_its_motion_memory():
 
 def test_the_startup_is_stated():
     d = _doc("s7-200")
-    assert "not written" in d["startup"]["inputs"] and "zero pose" in d["startup"]["motion"]
+    assert "not written" in d["startup"]["inputs"] and "not homed" in d["startup"]["motion"]
     d = _doc("s7-300", startup_target="paper")
     assert "OB100" in d["startup"]["inputs"] and "overwritten" in d["startup"]["inputs"]
 

@@ -48,7 +48,7 @@ def test_golden_s7200_has_paper_structure():
         "SUBROUTINE_BLOCK ATAN2:SBR1",
         "SUBROUTINE_BLOCK ACOS:SBR2",
         "ROUND  ",
-        "MOVB   16#85, SMB67",
+        "MOVB   16#A0, SMB67",
         "PLS    1",
     ):
         assert needle in text

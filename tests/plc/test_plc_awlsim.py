@@ -23,7 +23,7 @@ from analysis.plc.memmap import default_map
 from analysis.plc.paper_listings import figure_text, run_paper_listings
 from analysis.plc.runner import AwlRunner, sweep
 from analysis.plc.sweep import SweepSizes, sweep_targets
-from analysis.plc.translate import I_BASE, PLS_LOG, Q_BASE, SM_BASE, translate_s7200
+from analysis.plc.translate import translate_s7200
 from analysis.plc.verify import compare, table4_targets
 
 pytestmark = pytest.mark.slow  # seconds per test: run first (tests/conftest.py)
@@ -165,44 +165,6 @@ def test_first_scan_keeps_the_hmi_inputs(dialect):
     r = AwlRunner(src, default_map(dialect))  # runs the first scan
     assert [r.read_real(b) for b in (0, 4, 8)] == [100.0, 100.0, 600.0]
     assert [r.read_dint(b) for b in (100, 104, 108)] == [500, 113, -1724]
-
-
-def test_motion_sequence_on_two_pto_channels():
-    text, _ = generate(ARM, "s7-200")
-    r = AwlRunner(translate_s7200(text).awl, default_map("s7-200"))
-    r.solve([[100.0, 100.0, 600.0]])  # the HMI's target (Table 4 row 1)
-    for ch in (0, 1):
-        r.write_bit(SM_BASE + 66 + 10 * ch, 7, True)  # both PTO idle
-
-    def q(bit):
-        return r.read_bit(Q_BASE, bit)
-
-    r.write_bit(I_BASE, 0, True)  # SB1
-    r.cycle()
-    assert r.mem[120] == 1 and q(3) and not q(4)  # phase A, KM1 routes PTO1 to the shoulder
-    assert r.read_dint(PLS_LOG) == 500 and r.read_dint(PLS_LOG + 4) == 113
-    assert q(2) and q(5) and not q(7)  # waist +, shoulder +, elbow - (c3 = -1724)
-    r.cycle()
-    assert r.mem[120] == 1  # waits while the trains run (idle bits cleared by PLS)
-    r.write_bit(SM_BASE + 66, 7, True)
-    r.write_bit(SM_BASE + 76, 7, True)
-    r.cycle()
-    assert r.mem[120] == 2 and q(4) and not q(3) and r.read_dint(PLS_LOG + 4) == 1724
-    r.write_bit(SM_BASE + 76, 7, True)
-    r.cycle()
-    assert r.mem[120] == 0 and not q(3) and not q(4)
-    assert [r.read_dint(b) for b in (124, 128, 132)] == [500, 113, -1724]
-    r.cycle()  # SB1 still pressed: no new edge, no new move
-    assert r.mem[120] == 0
-
-
-def test_unreachable_target_blocks_motion():
-    text, _ = generate(ARM, "s7-200")
-    r = AwlRunner(translate_s7200(text).awl, default_map("s7-200"))
-    r.solve([[200.0, 500.0, 600.0]])
-    r.write_bit(I_BASE, 0, True)
-    r.cycle()
-    assert r.mem[120] == 0 and not r.read_bit(112, 0)
 
 
 def test_paper_figures_3_4_compute_wrong_c1():

@@ -546,7 +546,7 @@ def test_extra_columns_only_when_allowed_and_returned_as_text(tmp_path):
 def test_missing_file_and_directory_are_input_errors(tmp_path):
     with pytest.raises(InputError, match=r"nope\.csv: cannot read: No such file or directory$"):
         read_table(tmp_path / "nope.csv", required=XYZ)
-    with pytest.raises(InputError, match=r"cannot read: Is a directory$"):
+    with pytest.raises(InputError, match=r"is a directory, not a file of rows$"):
         read_table(tmp_path, required=XYZ)
 
 

@@ -183,7 +183,9 @@ def _layout(arm, title: str, box: Box, height: int) -> dict:
     ratio = span / span.max()
     # no filled back planes: in a browser without a GPU (headless Chromium renders WebGL in
     # software) they cost half the time of every redraw; the grid lines stay
-    axis = {"showbackground": False, "gridcolor": "#c8ccd0"}
+    # five ticks an axis at most: where the x and y axes meet, their end labels ("-600" of one,
+    # "600" of the other) no longer print over each other
+    axis = {"showbackground": False, "gridcolor": "#c8ccd0", "nticks": 5}
     scene = {
         f"{k}axis": axis | {"title": {"text": f"{k} [mm]"}, "range": [box.lo[i], box.hi[i]]}
         for i, k in enumerate("xyz")
@@ -204,7 +206,8 @@ def _layout(arm, title: str, box: Box, height: int) -> dict:
         | {
             "aspectmode": "manual",
             "aspectratio": dict(zip("xyz", _round(ratio), strict=True)),
-            "camera": {"eye": {"x": 1.25, "y": -1.35, "z": 0.7}},
+            # a step further back than plotly's default: the axis titles stay inside the view
+            "camera": {"eye": {"x": 1.45, "y": -1.55, "z": 0.8}},
             "uirevision": arm.name,
         },
     }

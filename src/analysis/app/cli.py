@@ -18,6 +18,7 @@ NumPy and the kinematics, not SymPy, pandas or Matplotlib.
 from __future__ import annotations
 
 import argparse
+import errno
 import json
 import math
 import re
@@ -26,6 +27,8 @@ import sys
 import time
 from collections.abc import Sequence
 from pathlib import Path
+
+from analysis.escape import terminal
 
 __all__ = ["build_parser", "main"]
 
@@ -151,7 +154,9 @@ def _common(p: argparse.ArgumentParser) -> None:
         default="grabber",
         metavar="NAME|PATH",
         help="arm: a name (default: grabber, the paper's; list: arms) or the path of a "
-        "description file (*.toml), anywhere on disk",
+        "description file (*.toml), anywhere on disk; a description that names a .py "
+        "closed form (next to it) runs that file's code: load only descriptions you trust "
+        "as you would run their scripts",
     )
     p.add_argument("--params", type=Path, help="a Table 3 CSV instead of data/table3.csv")
 
@@ -171,7 +176,6 @@ def _mkdir_flag(p: argparse.ArgumentParser) -> None:
 
 # --- fk --------------------------------------------------------------------------------------
 def _cmd_fk(args: argparse.Namespace) -> int:
-    import numpy as np
 
     from analysis.kinematics.arm import MAX_JOINT_DEG
 
@@ -199,19 +203,10 @@ def _cmd_fk(args: argparse.Namespace) -> int:
         hint = _radians_hint(args.angles)
         if hint:
             print(f"{PROG} fk: note: {hint}", file=sys.stderr)
-    p = arm.fk(arm.joints_from_user(args.angles))
-    p = np.where(p == 0, 0.0, p)  # no "-0.000"
-    if set(units) == {"deg"}:
-        doc = {"arm": arm.name, "theta_deg": list(args.angles)}
-        given = f"theta = ({', '.join(f'{t:.2f}' for t in args.angles)}) deg"
-    else:  # prismatic joints too: each value in its own unit
-        doc = {"arm": arm.name, "joint_values": list(args.angles), "joint_units": list(units)}
-        given = "q = (" + ", ".join(
-            f"{n} {t:.2f} {u}" for n, t, u in zip(arm.joint_names, args.angles, units, strict=True)
-        ) + ")"  # fmt: skip
-    doc["position_mm"] = p.tolist()
-    text = f"{given} -> P = ({', '.join(f'{v:.3f}' for v in p)}) mm"
-    _emit(args, doc, text)
+    from analysis.kinematics.pose import fk_document, fk_sentence
+
+    doc = fk_document(arm, args.angles)  # the full pose: the explorer's FK line shows it too
+    _emit(args, doc, fk_sentence(doc))
     return 0
 
 
@@ -418,12 +413,12 @@ def _cmd_stl(args: argparse.Namespace) -> int:
     outputs = [args.output, *([args.map] if args.map else []), *extra]
     if str(args.output) == "-" and (args.json or str(args.map) == "-"):
         raise UsageError("-o - writes the program to stdout: --json and --map - cannot share it")
-    check_paths(
-        inputs=[p for p in (args.layout, args.params) if p],
+    arm = _arm(args)
+    check_paths(  # no output may be an input: the description, its tables, --params, --layout
+        inputs=[*arm.input_files, *(p for p in (args.layout, args.params) if p)],
         outputs=outputs,
         make_parents=args.mkdir,
     )
-    arm = _arm(args)
     mmap = _layout(args.layout, MemoryMap) if args.layout else None
     cpu = None
     if args.cpu is not None:
@@ -471,8 +466,10 @@ def _cmd_stl(args: argparse.Namespace) -> int:
     else:
         also = f" and {args.map}" if args.map else " (no MAP.json: --map FILE writes it)"
         print(
-            f"wrote {args.output} ({args.dialect}, {arm.name} {doc['branch']}, "
-            f"{doc['lines']} lines){also}",
+            terminal(
+                f"wrote {args.output} ({args.dialect}, {arm.name} {doc['branch']}, "
+                f"{doc['lines']} lines){also}"
+            ),
             file=sys.stderr if str(args.output) == "-" else sys.stdout,
         )
     return 0
@@ -561,13 +558,13 @@ def _cmd_arms(args: argparse.Namespace) -> int:
         return 0
     for d in docs:
         if "error" in d:
-            print(f"{d['name']:<11} not loadable: {d['error']}")
+            print(terminal(f"{d['name']:<11} not loadable: {d['error']}"))
             continue
         params = ", ".join(
             f"{k} = {v['value']:g} {v['unit']}" + (" (assumed)" if v["status"] == "assumed" else "")
             for k, v in d["parameters"].items()
         )
-        print(f"{d['name']:<11} {d['title']} ({len(d['joints'])} joints): {params}")
+        print(terminal(f"{d['name']:<11} {d['title']} ({len(d['joints'])} joints): {params}"))
     return 0
 
 
@@ -584,14 +581,19 @@ def _add_fk(sub) -> None:
     """``fk``: joint angles -> end point."""
     p = sub.add_parser(
         "fk",
-        help="joint angles (deg) -> end point (mm)",
-        description="Forward kinematics: the end point of the chain (the paper's eq. 2).",
-        epilog="example:\n  python -m analysis fk 45 10.21 -155.13 --json",
+        help="joint values (deg | mm) -> the tool's full pose",
+        description="Forward kinematics from the arm's chain (its D-H rows, any serial chain; "
+        "a closed chain's closed form): the tool point [mm] and orientation (RPY [deg] in the "
+        "convention ik takes; --json adds the rotation matrix), every joint (a closed "
+        "chain's passive ones too: joint_states) and the target ik takes for this pose.",
+        epilog="examples:\n  python -m analysis fk 45 10.21 -155.13 --json\n"
+        "  python -m analysis fk 30 40 -60 -70 10 --arm gr1",
         formatter_class=_Help,
     )
     p.add_argument(
-        "angles", nargs="+", type=_finite, metavar="DEG",
-        help="joint angles [deg] (a note on stderr when they look like radians)",
+        "angles", nargs="+", type=_finite, metavar="VALUE",
+        help="joint values [deg, or mm for a prismatic joint] (a note on stderr when angles "
+        "look like radians)",
     )  # fmt: skip
     p.add_argument("--json", action="store_true", help="machine-readable output")
     _common(p)
@@ -766,7 +768,8 @@ def _add_arms(sub) -> None:
         "assumed; a description that does not load is listed with the reason.",
     )
     p.add_argument("--arm", action="append", metavar="NAME|PATH", default=[],
-                   help="list this arm (a name or a description file; repeatable) instead")
+                   help="list this arm (a name or a description file; repeatable) instead; "
+                   "a description that names a .py closed form runs that file's code")  # fmt: skip
     p.add_argument("--json", action="store_true", help="machine-readable output")
     p.set_defaults(func=_cmd_arms)
 
@@ -899,24 +902,33 @@ def main(argv: Sequence[str] | None = None) -> int:
     import warnings
 
     args = _parser().parse_args(list(sys.argv[1:] if argv is None else argv))
+    if sys.stdout is None:  # started with standard output closed (>&-): no answer is lost
+        sys.stdout = _ClosedStdout()
     old = _install_signals()
     try:
         with warnings.catch_warnings():
             # a warning goes to stderr, never into stdout or JSON; none is expected from
             # validated input (tests/hostile holds every entry point to that)
             warnings.simplefilter("default")
-            return int(args.func(args) or 0)
+            code = int(args.func(args) or 0)
+            sys.stdout.flush()  # a full disk or a closed descriptor fails here, not at exit
+            return code
     except (ValueError, OSError) as exc:  # UsageError, UnreachableError, OutputError, ...
         if isinstance(exc, BrokenPipeError):
             return _broken_pipe()
         if isinstance(exc, OSError):
-            exc = ValueError(f"{getattr(exc, 'filename', '') or ''}: {exc.strerror or exc}")
+            where = getattr(exc, "filename", None)
+            exc = ValueError(f"{where}: {exc.strerror or exc}" if where else
+                             f"cannot write the answer: {exc.strerror or exc}")  # fmt: skip
         message = " ".join(str(exc).split()) + _hint(exc, args)
-        if getattr(args, "json", False):
+        try:
+            if not getattr(args, "json", False):
+                raise OSError  # the message goes to stderr
             doc = _error_doc(exc, args)
             doc["error"] = message
             print(_json(doc))
-        else:
+            sys.stdout.flush()
+        except OSError:
             print(f"{PROG} {args.command}: error: {message}", file=sys.stderr)
         return 2
     except KeyboardInterrupt:
@@ -929,6 +941,17 @@ def main(argv: Sequence[str] | None = None) -> int:
     finally:
         for sig, handler in old.items():
             signal.signal(sig, handler)
+
+
+class _ClosedStdout:
+    """Standard output when the process started without one: every write fails, so a
+    command whose answer cannot be written exits 2 instead of 0."""
+
+    def write(self, text: str) -> int:
+        raise OSError(errno.EBADF, "standard output is closed")
+
+    def flush(self) -> None:
+        pass
 
 
 def _broken_pipe() -> int:

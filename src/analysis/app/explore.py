@@ -40,19 +40,22 @@ import numpy.typing as npt
 
 from analysis.app.arm3d import Arm3DWidget, arm_figure, figure_bundle, workspace_box
 from analysis.app.explore_js import arm_module_js
-
-# the ``X as X`` imports: the logic's other public names, importable from here as before
-from analysis.app.explore_logic import MANIPULABILITY_UNIT as MANIPULABILITY_UNIT
 from analysis.app.explore_logic import (
+    FK_CAPTION,
+    IK_CAPTION,
     POSITION_INPUTS,
     PoseReport,
     available_arms,
     default_target,
+    fk_line,
     num,
     plain_message,
     pose_report,
     target_from_joints,
 )
+
+# the ``X as X`` imports: the logic's other public names, importable from here as before
+from analysis.app.explore_logic import MANIPULABILITY_UNIT as MANIPULABILITY_UNIT
 from analysis.app.explore_logic import RPY_INPUTS as RPY_INPUTS
 from analysis.app.explore_logic import greek as _greek
 from analysis.kinematics.arm import Arm, as_points, load_arm
@@ -100,6 +103,7 @@ class Explorer(W.VBox):
         if arm.name not in self.arms:  # an arm built from a changed description
             self.arms = {arm.name: arm.description.title} | self.arms
         self._syncing = False
+        self._last_q = None  # the last pose drawn with a solution [rad | mm]
         self._pose: tuple = (None, None, "")  # q [rad] or None, target, title: the drawn pose
         self.view = Arm3DWidget(layout={"width": "100%"})
         self.arm_picker = W.Dropdown(
@@ -121,7 +125,7 @@ class Explorer(W.VBox):
                                   indent=False, layout={"width": "240px"})  # fmt: skip
         self.on_axis_deg = W.FloatSlider(
             value=0.0, min=-180.0, max=180.0, step=0.01, description="θ1 on the axis [°]",
-            readout_format=".2f", continuous_update=False, layout=self.SLIDER_LAYOUT,
+            readout_format=".2f", continuous_update=True, layout=self.SLIDER_LAYOUT,
             style=self.SLIDER_STYLE,
         )  # fmt: skip
         self.message = W.HTML(layout={"width": "100%"})
@@ -149,9 +153,13 @@ class Explorer(W.VBox):
 
     # --- building ----------------------------------------------------------------------
     def _slider(self, value: float, lo: float, hi: float, label: str, step: float, fmt: str):
+        # continuous_update: the value reaches the browser's model at every move of a drag,
+        # where the 3D view draws it at once from the printed kinematics (arm3d_widget.js);
+        # the kernel gets the moves ipywidgets lets through (one message in flight at a
+        # time) and confirms the pose it computes for the latest
         s = W.FloatSlider(
             value=float(np.clip(value, lo, hi)), min=lo, max=hi, step=step,
-            description=label, readout_format=fmt, continuous_update=False,
+            description=label, readout_format=fmt, continuous_update=True,
             layout=self.SLIDER_LAYOUT, style=self.SLIDER_STYLE,
         )  # fmt: skip
         s.observe(self._on_change, names="value")
@@ -160,6 +168,7 @@ class Explorer(W.VBox):
     def _set_arm(self, arm: Arm, target: npt.ArrayLike | None) -> None:
         """Sliders for ``arm``'s inputs and joints, its branches, and the first target."""
         self.arm = arm
+        self._last_q = None
         self.box = workspace_box(arm)
         p = default_target(arm) if target is None else as_points(target, inputs=arm.inputs)
         sliders = []
@@ -229,7 +238,14 @@ class Explorer(W.VBox):
         return np.array(vals)
 
     def _joints_from_report(self, rep: PoseReport) -> None:
-        q = rep.angles_deg() if rep.branch_ok else np.zeros(len(self.joint_sliders))
+        """The joint sliders at the report's chosen branch, or, for a target without a
+        solution there, at the last pose drawn (the one shown greyed): the arm stays put."""
+        if rep.branch_ok:
+            q = rep.angles_deg()
+        elif self._last_q is not None:
+            q = self.arm.joints_to_user(self._last_q)
+        else:
+            q = np.zeros(len(self.joint_sliders))
         for s, v in zip(self.joint_sliders, q, strict=True):
             s.value = float(np.clip(round(float(v), 2), s.min, s.max))
 
@@ -265,8 +281,11 @@ class Explorer(W.VBox):
         ]
 
     def _draw(self, q, target, title: str) -> None:
-        """Send the pose to the 3D view: the frame origins at ``q`` [rad] (None: no arm)."""
+        """Send the pose to the 3D view: the frame origins at ``q`` [rad] (None: no solution;
+        the view keeps the last pose, greyed)."""
         self._pose = (q, target, title)
+        if q is not None:
+            self._last_q = np.asarray(q, dtype=float)
         frames = None if q is None else self.arm.frames(q)
         t = None if target is None else np.asarray(target, dtype=float)[:3]
         self.view.pose = {
@@ -304,40 +323,34 @@ class Explorer(W.VBox):
 
     def refresh(self) -> None:
         """Recompute from the controls: the 3D view's pose first (what the eye follows),
-        then the report, message and table."""
+        then the report, message and table (the table keeps its place for a target without
+        a solution: no layout shift)."""
         arm = self.arm
         axis = self.on_axis.value and not self.fk_mode.value
         self.on_axis_deg.layout.display = None if axis else "none"
+        t1 = math.radians(self.on_axis_deg.value) if axis else None
         if self.fk_mode.value:
             q = self.arm.joints_from_user([s.value for s in self.joint_sliders])
-            point = arm.fk(q)
-            self._draw(q, point, self._title(q))
-            where = ", ".join(num(v, 2) for v in point)
-            head = f"FK: gripper at ({where}) mm. "
+            self._draw(q, arm.fk(q), self._title(q))
             target = target_from_joints(arm, q)
+            rep = None
             if target is not None:
                 rep = pose_report(arm, target, self.branch.value, theta1_on_axis=float(q[0]))
-            else:  # an input FK cannot give: no IK table
-                rep, target = None, point
+            text, bad, caption = fk_line(arm, q, rep), False, FK_CAPTION
         else:
             target = self._target()
-            t1 = math.radians(self.on_axis_deg.value) if axis else None
             sol = arm.solve(target, (self.branch.value,), theta1_on_axis=t1)
             q = sol.theta[0] if sol.ok[0] else None
             self._draw(q, target, self._title(q))
             rep = pose_report(arm, target, self.branch.value, theta1_on_axis=t1)
-            head = ""
+            text, bad, caption = plain_message(rep, t1), not rep.branch_ok, IK_CAPTION
         self.report = rep
-        if rep is None:
-            text, bad = head + f"(the IK of {arm.name} takes {', '.join(arm.inputs)})", False
-        else:
-            text, bad = head + plain_message(rep), not rep.branch_ok
         colour = "#b00020" if bad else "#1b5e20"
         self.message.value = (
-            f'<div class="explorer-message" style="color:{colour};white-space:normal">'
-            f"<b>{html.escape(text)}</b></div>"
+            f'<div class="explorer-message" style="color:{colour};white-space:normal;'
+            f'min-height:4.5em">{html.escape(text)}</div>'
         )
-        self.table.value = rep.to_html() if rep is not None else ""
+        self.table.value = rep.to_html(caption) if rep is not None else ""
 
     def _repr_mimebundle_(self, **kwargs):
         """The widget, with a plain-text line for readers without a kernel (the stored

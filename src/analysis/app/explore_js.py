@@ -31,10 +31,10 @@ and at the reach shells.
 
 from __future__ import annotations
 
-import json
 import math
 from typing import ClassVar
 
+from analysis.escape import js_comment, js_json
 from analysis.kinematics.dh import chain_frames
 from analysis.kinematics.printing import INFIX, ExpressionPrinter
 from analysis.kinematics.pulses import pulse_count
@@ -42,7 +42,9 @@ from analysis.kinematics.solution import DEFAULT_TOL_MM, solve_body
 from analysis.kinematics.status import STATUS_TEXT
 from analysis.kinematics.trace import Graph, Node, TraceOps
 
-__all__ = ["JsPrinter", "arm_module_js", "frames_graph", "graph_js", "solve_graph"]
+__all__ = [
+    "JsPrinter", "arm_module_js", "frames_graph", "graph_js", "pulses_graph", "solve_graph",
+]  # fmt: skip
 
 
 class JsPrinter(ExpressionPrinter):
@@ -100,21 +102,25 @@ def graph_js(graph: Graph, arg: str = "a") -> str:
         else:
             expr = JS.doprint(n.op, *map(ref, n.args))
         name = graph.names.get(n.index)
-        lines.append(f"  const v{n.index} = {expr};" + (f"  // {name}" if name else ""))
-    outs = ", ".join(f"{json.dumps(k)}: {ref(v)}" for k, v in graph.outputs.items())
+        lines.append(f"  const v{n.index} = {expr};" + (f"  // {js_comment(name)}" if name else ""))
+    outs = ", ".join(f"{js_json(k)}: {ref(v)}" for k, v in graph.outputs.items())
     lines.append(f"  return {{{outs}}};")
     return "\n".join(lines)
 
 
-def solve_graph(arm, tol: float = DEFAULT_TOL_MM) -> Graph:
+def solve_graph(arm, tol: float = DEFAULT_TOL_MM, *, on_axis: bool = False) -> Graph:
     """:func:`solve_body` of ``arm`` (every branch, its joint limits, tolerance ``tol``)
     recorded with the arm's parameters as constants, plus each branch's whole pulses
-    ``c:<branch>:<j>`` (eqs. 20-22; NaN where the branch has no solution)."""
+    ``c:<branch>:<j>`` (eqs. 20-22; NaN where the branch has no solution). ``on_axis``: the
+    waist angle on the base axis is one more input, ``theta1_on_axis`` [rad], last (only for
+    an arm whose closed form takes it)."""
     g = Graph()
     m = TraceOps(g)
     p = tuple(g.input(k) for k in arm.inputs)
+    opts = {"theta1_on_axis": g.input("theta1_on_axis")} if on_axis else {}
     out = solve_body(
-        m, arm.closed_form, p, dict(arm.params), arm.branches, tol=tol, limits=arm.limits
+        m, arm.closed_form, p, dict(arm.params), arm.branches, tol=tol, limits=arm.limits,
+        **opts,
     )
     for b in arm.branches:
         for j, ppr in enumerate(arm.params.pulses_per_rev):
@@ -134,8 +140,26 @@ def frames_graph(arm) -> Graph:
     return g
 
 
+def pulses_graph(arm) -> Graph:
+    """The whole pulses of joint values ``q0 .. q<n-1>`` [rad | mm] (eqs. 20-22,
+    :func:`~analysis.kinematics.pulses.pulse_count`), outputs ``c<j>``."""
+    g = Graph()
+    m = TraceOps(g)
+    q = [g.input(f"q{j}") for j in range(arm.n_joints)]
+    g.outputs = {
+        f"c{j}": pulse_count(m, q[j], float(ppr))
+        for j, ppr in enumerate(arm.params.pulses_per_rev)
+    }
+    return g
+
+
 def _module(arm) -> str:
+    from analysis.app.explain import CHOOSE_THETA1, ROUNDS, SCAN, TEMPLATES, reach_sphere
+    from analysis.app.explore_logic import FK_CAPTION, IK_CAPTION
+
     n_frames = len(frames_graph(arm).outputs) // 3
+    center, reach = reach_sphere(arm)
+    on_axis = "theta1_on_axis" in arm.closed_form.options
     meta = {
         "name": arm.name,
         "title": arm.description.title,
@@ -147,24 +171,52 @@ def _module(arm) -> str:
         "pulses_per_rev": list(arm.params.pulses_per_rev),
         "status_text": {int(k): v for k, v in STATUS_TEXT.items()},
         "n_frames": n_frames,
+        "joint_units": list(arm.joint_user_units),
+        "center": list(center),
+        "reach": reach,
+        "on_axis": on_axis,
+        "explain": {"templates": TEMPLATES, "choose": CHOOSE_THETA1, "scan": SCAN,
+                    "rounds": ROUNDS, "captions": {"ik": IK_CAPTION, "fk": FK_CAPTION}},
     }
+    axis_solve = (
+        "const raw_solve_axis = function (a) {\n"
+        + graph_js(solve_graph(arm, on_axis=True))
+        + "\n};\n"
+        if on_axis
+        else ""
+    )
+    solve_call = "raw_solve_axis(p.concat([theta1]))" if on_axis else "raw_solve(p)"
     return (
         "(function () {\n"
-        f"// {arm.name}: printed by analysis.app.explore_js from the closed form "
-        f"'{arm.cf.name}' and the D-H chain of data/arms; do not edit\n"
+        "// "
+        + js_comment(
+            f"{arm.name}: printed by analysis.app.explore_js from the closed form "
+            f"'{arm.cf.name}' and the D-H chain of data/arms; do not edit"
+        )
+        + "\n"
         "const raw_solve = function (a) {\n" + graph_js(solve_graph(arm)) + "\n};\n"
         "const raw_frames = function (a) {\n" + graph_js(frames_graph(arm)) + "\n};\n"
-        f"const arm = {json.dumps(meta, ensure_ascii=False)};\n"
-        "arm.solve = function (p) {\n"
-        "  const r = raw_solve(p), out = {status: r.status, outside: r.outside, branches: {}};\n"
+        "const raw_pulses = function (a) {\n" + graph_js(pulses_graph(arm)) + "\n};\n"
+        + axis_solve
+        + f"const arm = {js_json(meta)};\n"
+        "arm.solve = function (p, theta1) {\n"
+        "  const r = (theta1 === undefined || theta1 === null) ? raw_solve(p)\n"
+        f"    : {solve_call};\n"
+        "  const out = {status: r.status, outside: r.outside, branches: {}};\n"
         "  for (const b of arm.branches) {\n"
         "    const q = [], c = [];\n"
         "    for (let j = 0; j < arm.joints.length; j++) {\n"
         "      q.push(r['q:' + b + ':' + j]); c.push(r['c:' + b + ':' + j]);\n"
         "    }\n"
-        "    out.branches[b] = {ok: r['ok:' + b], q: q, c: c};\n"
+        "    out.branches[b] = {ok: r['ok:' + b], status: r['status:' + b], q: q, c: c};"
+        "\n"
         "  }\n"
         "  return out;\n"
+        "};\n"
+        "arm.pulses = function (q) {\n"
+        "  const r = raw_pulses(q), c = [];\n"
+        "  for (let j = 0; j < arm.joints.length; j++) c.push(r['c' + j]);\n"
+        "  return c;\n"
         "};\n"
         "arm.frames = function (q) {\n"
         "  const r = raw_frames(q), pts = [];\n"
@@ -180,11 +232,17 @@ def _module(arm) -> str:
 def arm_module_js(arm) -> str:
     """A JavaScript expression whose value is the arm: ``name``, ``title``, ``inputs`` (with
     ``units``: "mm" or "rad"), ``branches``, ``joints``, ``limits`` [rad], ``pulses_per_rev``,
-    ``status_text`` (code -> word), and two functions printed from the closed form:
+    ``status_text`` (code -> word), ``center`` and ``reach`` (the reach centre and largest
+    radius, for the nearest reachable target), ``on_axis`` and ``explain`` (the sentences
+    of :mod:`analysis.app.explain` and its search's constants), and three functions printed
+    from the closed form:
 
-    * ``solve(p)``: ``{status, outside, branches: {name: {ok, q: [rad], c: [pulses]}}}`` for
-      one target ``p`` (the inputs' values, angles in rad), as :meth:`Arm.solve` (NaN angles
-      and pulses where a branch has no solution);
+    * ``solve(p, theta1)``: ``{status, outside, branches: {name: {ok, status, q: [rad],
+      c: [pulses]}}}`` for one target ``p`` (the inputs' values, angles in rad), as
+      :meth:`Arm.solve` (NaN angles and pulses where a branch has no solution; a branch's
+      ``status`` its own, as solved alone); ``theta1`` the waist angle on the base axis
+      [rad] (an arm that takes it), as ``theta1_on_axis``;
+    * ``pulses(q)``: the whole pulses of joint values ``q`` (eqs. 20-22);
     * ``frames(q)``: the frame origins [[x, y, z], ...] [mm] for joint angles ``q`` [rad], as
       :meth:`Arm.frames`.
 

@@ -9,7 +9,7 @@ importable from :mod:`analysis.app.explore` too."""
 from __future__ import annotations
 
 import html
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 import numpy.typing as npt
@@ -21,6 +21,10 @@ from analysis.kinematics.status import STATUS_TEXT, Status
 POSITION_INPUTS = {"px": "x", "py": "y", "pz": "z"}
 """Closed-form inputs that are coordinates of the target point [mm]; every other input of an
 arm (e.g. an orientation angle of a pose) is an angle [rad], shown in degrees."""
+IK_CAPTION = "every branch for this target"
+FK_CAPTION = "other solutions for this point"
+"""The captions of the explorer's table: in IK mode the target's branches; in FK mode the IK
+solutions of the point the set joints reach (the set joints may be one of them, or none)."""
 MANIPULABILITY_UNIT = 1e6
 """The table shows the manipulability in 10^6 mm^3/rad^3 (the paper's arm: ~3.7 at Table 4
 row 1, at most ~9.5 where the elbow is square)."""
@@ -90,9 +94,10 @@ def default_target(arm: Arm, *, seed: int = 0) -> npt.NDArray[np.float64]:
     """A target the arm reaches on its first branch, to start the explorer at.
 
     What :func:`target_from_joints` gives for the first joint vector that solves with
-    status "ok" on the default branch, trying the middle of each joint's range with the
-    inner joints bent by +-30, +-60 deg, then 256 seeded draws within the joint limits;
-    coordinates cleaned of round-off below 1 nm.
+    status "ok" on the default branch, with the tool not below the base where one does,
+    trying the middle of each joint's range with the inner joints bent by +-30, +-60 deg,
+    then 256 seeded draws within the joint limits; coordinates cleaned of round-off below
+    1 nm.
     """
     lim = arm.bounds
     mid = lim.mean(axis=1)
@@ -109,7 +114,11 @@ def default_target(arm: Arm, *, seed: int = 0) -> npt.NDArray[np.float64]:
             f"arm {arm.name}: inputs {arm.inputs} are not a point (px, py, pz) or a pose "
             f"with RPY angles {RPY_INPUTS}; give the explorer a target"
         )
-    good = np.flatnonzero(arm.solve(p, arm.branches[:1]).ok[:, 0])
+    ok = arm.solve(p, arm.branches[:1]).ok[:, 0]
+    # first a pose whose tool is not below the base (the palletizer's middle of its ranges
+    # hung its gripper under the base, a small folded arm at the bottom of its box)
+    above = ok & (arm.fk(q)[:, 2] >= 0.0)
+    good = np.flatnonzero(above if above.any() else ok)
     return np.round(p[good[0] if good.size else 0], 9) + 0.0
 
 
@@ -156,6 +165,8 @@ class PoseReport:
     table: pd.DataFrame
     status: Status = Status.OK
     arm: str = ""
+    model: Arm | None = field(default=None, repr=False, compare=False)
+    """The arm itself (what :func:`plain_message` explains with)."""
 
     @property
     def status_text(self) -> str:
@@ -183,11 +194,22 @@ class PoseReport:
         angles [deg], a prismatic joint's value [mm] (``Arm.joint_user_units``)."""
         return self.row()[self.joint_columns()].to_numpy(float)
 
+    def _shown(self) -> pd.DataFrame:
+        """:attr:`table`, or for a bad target every branch of the arm with no numbers and the
+        target's status (the explorer keeps its table's place: no layout shift)."""
+        if not self.table.empty or self.model is None:
+            return self.table
+        t = pd.DataFrame(np.nan, index=pd.Index(self.model.branches, name="branch"),
+                         columns=self.table.columns)  # fmt: skip
+        t["status"] = self.status_text
+        return t
+
     def formatted(self) -> pd.DataFrame:
         """The table for people: column names with units, numbers as text (angles to
         0.01 deg, the pulse error to 1 um, the manipulability in 10^6 mm^3/rad^3; never
-        "-0.00"), "—" where a branch has no solution. Empty for a bad target."""
-        t = self.table
+        "-0.00"), "—" where a branch has no solution; for a bad target every branch with
+        "—" and the target's status."""
+        t = self._shown()
         joints = self.joint_columns()
         ok = (t["status"] == "ok").to_numpy()
 
@@ -208,10 +230,10 @@ class PoseReport:
         out["status"] = list(t["status"])
         return pd.DataFrame(out, index=t.index)
 
-    def to_html(self) -> str:
+    def to_html(self, caption: str = "") -> str:
         """:meth:`formatted` as HTML, one line per branch (no wrapping), the chosen branch
-        marked and bold, numbers right-aligned; "" for a bad target."""
-        if self.table.empty:
+        marked and bold, numbers right-aligned, ``caption`` above it."""
+        if self._shown().empty:
             return ""
         f = self.formatted()
         pad = "padding:2px 10px"
@@ -230,9 +252,11 @@ class PoseReport:
             )
             style = ' style="font-weight:bold"' if b == self.branch else ""
             rows.append(f"<tr{style}>{tds}</tr>")
+        cap = (f'<caption style="caption-side:top;text-align:left;padding:2px 10px">'
+               f"{html.escape(caption)}</caption>") if caption else ""  # fmt: skip
         return (
             '<table class="explorer-table" style="white-space:nowrap;border-collapse:'
-            'collapse;font-variant-numeric:tabular-nums">'
+            f'collapse;font-variant-numeric:tabular-nums">{cap}'
             f"<thead><tr>{th}</tr></thead><tbody>{''.join(rows)}</tbody></table>"
         )
 
@@ -309,7 +333,9 @@ def pose_report(
         else:  # raise_for raises for every status but OK
             raise AssertionError(f"status {status!r} without a refusal for target {key}")
         empty = pd.DataFrame(columns=cols, index=pd.Index([], name="branch"))
-        return PoseReport(key, branch, False, outside, message, error, empty, status, arm.name)
+        return PoseReport(
+            key, branch, False, outside, message, error, empty, status, arm.name, arm
+        )
     ok = sol.ok
     q = np.where(ok[:, None], sol.theta, 0.0)  # (B, n) rad; 0 stands in where no solution
     c = arm.pulses(q)
@@ -349,25 +375,79 @@ def pose_report(
             f"{num(r['error_mm'], 3)} mm off the target; reach margin "
             f"{num(max(-outside, 0.0), 1)} mm (the largest over the branches' wrists)"
         )
-    return PoseReport(key, branch, True, outside, message, None, table, status, arm.name)
+    return PoseReport(key, branch, True, outside, message, None, table, status, arm.name, arm)
 
 
-def plain_message(rep: PoseReport) -> str:
+def plain_message(rep: PoseReport, theta1_on_axis: float | None = None) -> str:
     """What the explorer says about a report: its status word, then one plain sentence.
 
-    The library's messages are kept, except on the base axis, where it names the Python
-    argument that supplies theta1: the explorer offers a check box for it instead.
+    For a target without a solution, or whose chosen branch has none, the sentence of
+    :func:`analysis.app.explain.explain` (the static page's, from the same templates), with
+    the nearest reachable target; else the report's message.
 
     >>> from analysis.kinematics.arm import paper_arm
-    >>> print(plain_message(pose_report(paper_arm(), [0, 0, 800])))  # doctest: +ELLIPSIS
-    base-axis — target (0, 0, 800) mm lies on the base axis, where ... θ1 on the base axis" ...
-    """
-    if rep.status == Status.BASE_AXIS:
-        where = ", ".join(f"{v:g}" for v in rep.target)
-        text = (
-            f"target ({where}) mm lies on the base axis, where the waist angle θ1 is "
-            'undefined. Tick "allow θ1 on the base axis" to choose it.'
-        )
-    else:
-        text = rep.message
-    return f"{rep.status_text} — {text}"
+    >>> print(plain_message(pose_report(paper_arm(), [0, 0, 800])))
+    base-axis — target (0, 0, 800) mm lies on the base axis, where the waist angle θ1 is undefined: tick “allow θ1 on the base axis” to choose it
+    """  # noqa: E501
+    from analysis.app.explain import explain
+
+    arm = rep.model
+    if (rep.status == Status.OK and rep.branch_ok) or arm is None:
+        return f"{rep.status_text} — {rep.message}"
+    why = rep.table.loc[rep.branch, "status"] if rep.status == Status.OK else ""
+    return str(explain(arm, rep.target, rep.status, rep.outside_mm, rep.branch, why=why,
+                       theta1_on_axis=theta1_on_axis))  # fmt: skip
+
+
+def branch_of(arm: Arm, q: npt.ArrayLike, rep: PoseReport, tol_rad: float = 1e-6) -> tuple:
+    """Which IK branch gives joint values ``q`` (n,) [rad | mm] back for the point they reach
+    (``rep``: its :func:`pose_report`): ``(name, "")``, or ``(None, why)`` naming the nearest
+    branch and the joint that differs (the palletizer's IK holds its tool level, so a wrist
+    set otherwise belongs to no branch)."""
+    q = np.asarray(q, dtype=float)
+    t = rep.table
+    if t.empty:
+        return None, f"the point has no IK solution ({rep.status_text})"
+    user = arm.joints_to_user(q)
+    cols = rep.joint_columns()
+    best, worst_j, diff = None, 0, np.inf
+    for b, row in t.iterrows():
+        if row["status"] != "ok":
+            continue
+        got = row[cols].to_numpy(float)
+        d = np.abs((got - user + 180.0) % 360.0 - 180.0)
+        d = np.where(np.asarray(arm.joint_user_units) == "deg", d, np.abs(got - user))
+        if d.max() <= np.degrees(tol_rad):
+            return b, ""
+        if d.max() < diff:
+            best, worst_j, diff = b, int(np.argmax(d)), float(d.max())
+    if best is None:
+        return None, "no branch solves the point"
+    label = cols[worst_j].rsplit("_", 1)
+    unit = "°" if label[1] == "deg" else f" {label[1]}"
+    set_v, ik_v = user[worst_j], t.loc[best, cols[worst_j]]
+    return None, (f"the nearest, {best}, has {greek(label[0])} = {num(ik_v, 2)}{unit} where it "
+                  f"is set to {num(set_v, 2)}{unit}")  # fmt: skip
+
+
+def fk_line(arm: Arm, q: npt.ArrayLike, rep: PoseReport | None) -> str:
+    """The explorer's FK line for joint values ``q`` [rad | mm]: the joints and their whole
+    pulses, where the tool is (and its RPY for an arm whose IK takes a pose), and the branch
+    they belong to (:func:`branch_of`)."""
+    q = np.asarray(q, dtype=float)
+    user = arm.joints_to_user(q)
+    joints = ", ".join(
+        num(v, 2) + ("°" if u == "deg" else f" {u}")
+        for v, u in zip(user, arm.joint_user_units, strict=True)
+    )
+    pulses = ", ".join(str(int(c)) for c in arm.pulses(q))
+    point = ", ".join(num(v, 2) for v in arm.fk(q))
+    text = f"FK: joints ({joints}) → pulses ({pulses}); tool at ({point}) mm"
+    if set(RPY_INPUTS) <= set(arm.inputs):
+        t = arm.target(q)
+        rpy = [t[arm.inputs.index(k)] for k in RPY_INPUTS]
+        text += ", RPY (" + ", ".join(num(np.degrees(v), 2) for v in rpy) + ")°"
+    if rep is not None:
+        b, why = branch_of(arm, q, rep)
+        text += f"; branch: {b}" if b else f"; branch: none ({why})"
+    return text

@@ -252,22 +252,27 @@ def static_explorer_html(name: str, arms: Iterable[str] | None = None) -> str:
 
     from analysis.app.explore_js import arm_module_js
     from analysis.app.explore_logic import available_arms, default_target
+    from analysis.escape import js_json
     from analysis.kinematics.arm import load_arm
 
     names = list(arms) if arms is not None else list(available_arms()[0])
-    scripts, figures, start = [], {}, {}
+    scripts, figures, start, left = [], {}, {}, {}
     for arm_name in names:
         arm = load_arm(arm_name)
         try:
-            scripts.append(f"analysisArms[{json.dumps(arm_name)}] = {arm_module_js(arm)};")
-        except (ValueError, TypeError, AttributeError):  # not a D-H chain: no page explorer
+            scripts.append(f"analysisArms[{js_json(arm_name)}] = {arm_module_js(arm)};")
+        except (ValueError, TypeError, AttributeError) as exc:  # not a D-H chain
+            left[arm_name] = (
+                f"left out of this page ({exc}; the page prints D-H chains only); "
+                f"make lab, notebooks/{name} explores it with a kernel"
+            )
             continue
         t = [100.0, 100.0, 600.0] if arm_name == "grabber" else default_target(arm).tolist()
         figures[arm_name] = explorer_figure(arm)
         start[arm_name] = [float(np.round(v, 9)) for v in t]
     first = "grabber" if "grabber" in figures else next(iter(figures))
     cfg = {"id": hashlib.sha1(name.encode()).hexdigest()[:8], "arm": first,
-           "arms": list(figures), "figures": figures, "start": start}
+           "arms": list(figures), "figures": figures, "start": start, "left": left}
     return (
         f'<p class="explorer-note">{_html(EXPLORER_NOTE.format(name=name))}</p>\n'
         f"<div class=\"static-explorer\" data-explorer='{_html(json.dumps(cfg))}'>"

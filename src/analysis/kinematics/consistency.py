@@ -116,7 +116,7 @@ def _check(desc, cf, items: tuple) -> None:
     if not set(cf.inputs) <= set(POSITION_INPUTS + RPY_INPUTS):
         return
     P = dict(items)
-    where = f"{desc.path.name if desc.path else desc.name}: closed form {cf.name!r}"
+    where = f"closed form {cf.name!r}"
     rng = np.random.default_rng(20270101)
     b = joint_bounds(desc)
     if cf.propose is not None:

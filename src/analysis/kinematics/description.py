@@ -64,6 +64,7 @@ from analysis.kinematics import schema
 from analysis.kinematics.dh import DHRow, DHTable
 from analysis.kinematics.schema import IDENTIFIER, DescriptionError, Reader, identifier_problem
 from analysis.kinematics.tables import table_path, table_value
+from analysis.kinematics.urdf_in import description_text as urdf_description_text
 from analysis.paths import data_dir
 from analysis.safe_io import read_text
 
@@ -231,6 +232,9 @@ class ArmDescription:
     derive: dict = field(default_factory=dict, compare=False)
     """The ``[derive]`` table: decisions for a closed form derived from the rows
     (:mod:`analysis.kinematics.derive.families`)."""
+    files: tuple[Path, ...] = field(default=(), compare=False)
+    """Every file read to build it: the description, then each table it read (resolved
+    paths): an output may be none of them (:func:`analysis.safe_io.check_paths`)."""
 
     @property
     def statuses(self) -> dict[str, str]:
@@ -292,12 +296,14 @@ def _resolve(v, values: dict, arm: str):
 def description_path(name: str | Path) -> Path:
     """The file of arm ``name``: ``data/arms/<name>.toml`` for a name, or ``name`` itself
     for the path of a description file (anything ending in ``.toml`` or holding a folder
-    separator), anywhere on disk.
+    separator) or of a URDF (``.urdf``: its serial chain, :mod:`analysis.kinematics.urdf_in`),
+    anywhere on disk.
 
     Raises ValueError naming the arms that exist, or the file that does not.
     """
     text = str(name)
-    if isinstance(name, Path) or text.endswith(".toml") or "/" in text or "\\" in text:
+    urdf = text.lower().endswith(".urdf")  # a URDF's chain (analysis.kinematics.urdf_in)
+    if isinstance(name, Path) or text.endswith(".toml") or urdf or "/" in text or "\\" in text:
         path = Path(text).expanduser()
         if not path.exists():
             raise ValueError(f"no arm description {text!r}: no such file")
@@ -351,13 +357,17 @@ def _load(name: str, tables: tuple, stamp: tuple) -> ArmDescription:
     """
     path = Path(name)
     file = path.name
-    text = read_text(path, MAX_DESCRIPTION_BYTES, "arm description")
+    if path.suffix.lower() == ".urdf":  # a URDF's serial chain, converted (bounded, no DTD)
+        text = urdf_description_text(path)
+    else:
+        text = read_text(path, MAX_DESCRIPTION_BYTES, "arm description")
     try:
         d = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise DescriptionError(file, "", f"not valid TOML ({exc})") from None
     except RecursionError:
-        raise DescriptionError(file, "", "nested deeper than the TOML reader follows") from None
+        raise DescriptionError(file, f"line {_deep_line(text)}", "arrays or tables nested "
+                               "deeper than the TOML reader follows") from None  # fmt: skip
     r = Reader(d, file)
     r.check_keys(schema.TOP)
     ctx = _Context(path, file, dict(tables))
@@ -383,10 +393,23 @@ def _load(name: str, tables: tuple, stamp: tuple) -> ArmDescription:
         path,
         axes,
         schema.derive_decisions(r.sub("derive", schema.DERIVE)),
+        (path.resolve(), *dict.fromkeys(ctx.read)),
     )
     if rows:
         desc.dh_table()  # every row resolves
     return desc
+
+
+def _deep_line(text: str, depth: int = 256) -> int:
+    """The line where brackets first open ``depth`` deep (where a TOML reader's recursion
+    ends), or the last line."""
+    level, n = 0, 1
+    for c in text:
+        level += (c in "[{") - (c in "]}")
+        n += c == "\n"
+        if level > depth:
+            break
+    return n
 
 
 class _Context:
@@ -394,6 +417,7 @@ class _Context:
 
     def __init__(self, path: Path, file: str, tables: dict) -> None:
         self.path, self.file, self.tables = path, file, tables
+        self.read: list[Path] = []
 
     def number(self, r: Reader, key: str) -> float:
         """A number given bare, as ``{ value = ... }`` or read from a table."""
@@ -405,6 +429,7 @@ class _Context:
                 where = sub.key("table")
                 path = (Path(self.tables[name]) if name in self.tables else
                         table_path(name, self.path, self.file, where))  # fmt: skip
+                self.read.append(path.resolve())
                 return table_value(spec, path, self.file, where)
             if "value" not in spec:
                 raise r.error(key, "needs a value (a number, or a table to read it from)")

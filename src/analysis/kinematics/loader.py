@@ -24,6 +24,7 @@ programs, the URDF and the explorer take it from the arm.
 
 from __future__ import annotations
 
+import contextlib
 from functools import lru_cache
 from pathlib import Path
 
@@ -33,6 +34,7 @@ from analysis.kinematics.derive import NotDerivable, derive
 from analysis.kinematics.description import DERIVED, ArmDescription, load_description
 from analysis.kinematics.model import Arm
 from analysis.kinematics.params import Params
+from analysis.kinematics.schema import DescriptionError
 
 __all__ = ["arm_of", "closed_form_file", "closed_form_of", "derived_arm", "load_arm",
            "paper_arm"]  # fmt: skip
@@ -61,26 +63,48 @@ def derived_arm(desc: ArmDescription | str | Path) -> Arm:
 @lru_cache(maxsize=256)
 def arm_of(desc: ArmDescription, *, derived: bool = False) -> Arm:
     """The arm of a loaded description (steps 2-4 of the module docstring), once per
-    description object (:func:`load_description` returns one per file version)."""
-    cf, reason = closed_form_of(desc, derived=derived)
-    where = desc.path.name if desc.path else desc.name
+    description object (:func:`load_description` returns one per file version).
+
+    Every refusal is one line naming the description's file and the key it is about
+    (:class:`~analysis.kinematics.schema.DescriptionError`): ``closed_form`` for the closed
+    form's own errors (a user's code failing included), ``parameters`` for the values its
+    ``check`` refuses, the rows for a closed form that does not solve them."""
+    file = desc.path.name if desc.path else desc.name
+    with _stage(file, "closed_form"):
+        cf, reason = closed_form_of(desc, derived=derived)
     if not desc.has_rows and (cf is None or cf.fk is None):
-        raise ValueError(
-            f"{where}: the description has no [[rows]] and its closed form "
-            f"{desc.closed_form!r} gives no fk: no forward kinematics"
-        )
+        raise DescriptionError(file, "closed_form", "the description has no [[rows]] and "
+                               f"{desc.closed_form!r} gives no fk: no forward kinematics")
     if desc.has_rows and cf is not None and cf.fk is not None:
-        raise ValueError(
-            f"{where}: both D-H [[rows]] and closed form {cf.name!r} with its own fk describe "
-            "the chain; keep one"
-        )
+        raise DescriptionError(file, "closed_form", f"both D-H [[rows]] and {cf.name!r} with "
+                               "its own fk describe the chain; keep one")  # fmt: skip
     params = Params(desc.values, tuple(j.pulses_per_rev for j in desc.joints))
     if cf is not None:
-        cf.check(params)
-        _probe(cf, tuple(params), len(desc.joints))
+        with _stage(file, "parameters"):
+            cf.check(params)
+        with _stage(file, "closed_form"):
+            _probe(cf, tuple(params), len(desc.joints))
         if desc.has_rows:
-            consistency.check(desc, cf, params)
+            with _stage(file, "[[rows]]"):
+                consistency.check(desc, cf, params)
     return Arm(desc, cf, params, reason)
+
+
+@contextlib.contextmanager
+def _stage(file: str, key: str):
+    """Report what a stage of loading raises as one line naming ``file`` and ``key``; an
+    exception other than ValueError (a user's closed form failing) with its type."""
+    try:
+        yield
+    except DescriptionError:
+        raise
+    except ValueError as exc:
+        text = str(exc)
+        rule = text[len(file) + 2 :] if text.startswith(f"{file}: ") else text
+        raise DescriptionError(file, key, rule) from None
+    except Exception as exc:  # the user's code (a .py closed form): reported, not a traceback
+        raise DescriptionError(file, key, f"the closed form raised {type(exc).__name__}: "
+                               f"{exc}") from None  # fmt: skip
 
 
 @lru_cache(maxsize=256)

@@ -14,6 +14,7 @@ needs, and :func:`ArmParams` builds the grabber's parameters from numbers.
 
 from __future__ import annotations
 
+import io
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -22,6 +23,7 @@ from pathlib import Path
 
 from analysis import validate
 from analysis.paths import data_dir
+from analysis.safe_io import read_text
 
 __all__ = ["ArmParams", "Params", "data_dir", "load_table3", "paper_params"]
 
@@ -97,6 +99,8 @@ class Params(Mapping):
         return Params({**self.data, **changes}, ppr, self.extra)
 
 
+MAX_TABLE3_BYTES = 1 << 16
+"""Largest Table 3 file read [bytes] (64 KiB: the paper's is 500 bytes)."""
 TABLE3_COLUMNS = (
     "link",
     "alpha_deg",
@@ -137,11 +141,11 @@ def load_table3(path: str | Path | None = None) -> Params:
     0, 0 deg; a_1 = 0; d_2 = d_3 = 0) and that the printed cos/sin columns agree with
     alpha; raises ``ValueError`` naming the file, row and column otherwise.
     """
-    path = (Path(path) if path is not None else data_dir() / "table3.csv").resolve()
+    path = (Path(path) if path is not None else data_dir() / "table3.csv").absolute()
     try:
         st = path.stat()
-    except FileNotFoundError:
-        raise ValueError(f"{path}: no such file") from None
+    except OSError as exc:
+        raise ValueError(f"{path}: {exc.strerror or 'cannot read'}") from None
     return _load_table3(path, st.st_mtime_ns, st.st_size)
 
 
@@ -153,12 +157,12 @@ def _load_table3(path: Path, mtime_ns: int, size: int) -> Params:
     and the column."""
     import csv
 
+    text = read_text(path, MAX_TABLE3_BYTES, "Table 3 file")  # regular, bounded, UTF-8
     try:
-        with path.open(newline="", encoding="utf-8-sig") as fh:
-            reader = csv.reader(fh, strict=True)
-            header = next(reader, None)
-            body = [(reader.line_num, row) for row in reader if row]
-    except (OSError, UnicodeDecodeError, csv.Error) as exc:
+        reader = csv.reader(io.StringIO(text, newline=""), strict=True)
+        header = next(reader, None)
+        body = [(reader.line_num, row) for row in reader if row]
+    except csv.Error as exc:
         raise ValueError(f"{path}: cannot read as CSV ({exc})") from None
     header = [h.strip() for h in header or ()]
     missing = [c for c in TABLE3_COLUMNS if c not in header]

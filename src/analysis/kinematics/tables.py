@@ -19,7 +19,7 @@ from pathlib import Path
 from analysis import validate
 from analysis.kinematics.schema import DescriptionError
 from analysis.paths import data_dir
-from analysis.safe_io import read_text
+from analysis.safe_io import InputError, read_text
 
 __all__ = ["MAX_TABLE_BYTES", "TABLE_NAME", "table_path", "table_value"]
 
@@ -51,7 +51,11 @@ def table_path(name: object, desc_path: Path, file: str, key: str) -> Path:
 def table_value(spec: dict, path: Path, file: str, key: str) -> float:
     """The number in column ``spec["column"]`` of the one row of CSV ``path`` whose columns
     equal ``spec["match"]`` (parsed by :func:`analysis.validate.parse_real`)."""
-    text = read_text(path, MAX_TABLE_BYTES, "table")
+    try:
+        text = read_text(path, MAX_TABLE_BYTES, "table")
+    except InputError as exc:  # the reason (a FIFO, a device, too large), not the contents
+        rule = str(exc).split(": ", 1)[-1]
+        raise DescriptionError(file, key, f"table {path.name}: {rule}") from None
     col, match = spec.get("column"), spec.get("match", {})
     plain = isinstance(match, dict) and all(
         isinstance(v, (str, int, float)) and not isinstance(v, bool) for v in match.values()

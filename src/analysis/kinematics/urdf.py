@@ -45,6 +45,7 @@ from pathlib import Path
 
 import numpy as np
 
+from analysis.escape import xml_chars, xml_comment
 from analysis.kinematics.dh import exact_cos_sin
 from analysis.kinematics.loader import load_arm
 from analysis.kinematics.model import Arm
@@ -80,8 +81,18 @@ class UrdfJoint:
 
 
 def _clean(text: str) -> str:
-    """Text a comment can hold (no ``--``, no line breaks)."""
-    return " ".join(str(text).replace("--", "- -").split())
+    """Text a comment can hold (:func:`analysis.escape.xml_comment`: one line, XML
+    characters only, no ``--``)."""
+    return xml_comment(text)
+
+
+def _unique(kind: str, names) -> None:
+    """Refuse two links or two joints of one name (a URDF names each once)."""
+    seen: set[str] = set()
+    for n in names:
+        if n in seen:
+            raise ValueError(f"URDF: two {kind}s are named {n!r}; each needs its own name")
+        seen.add(n)
 
 
 def _num(v: float) -> str:
@@ -104,7 +115,10 @@ def _origin(T: np.ndarray) -> dict:
 
 def to_xml(robot: str, header: list[str], links: list[str], joints: list[UrdfJoint]) -> str:
     """The URDF text of a tree (``<robot>`` with ``header`` comments first)."""
-    root = ET.Element("robot", name=robot)
+    links = [xml_chars(n) for n in links]  # ElementTree escapes markup, not these
+    _unique("link", links)
+    _unique("joint", [xml_chars(j.name) for j in joints])
+    root = ET.Element("robot", name=xml_chars(robot))
     for line in header:
         root.append(ET.Comment(f" {_clean(line)} "))
     for name in links:
@@ -112,9 +126,9 @@ def to_xml(robot: str, header: list[str], links: list[str], joints: list[UrdfJoi
     for j in joints:
         for line in j.comments:
             root.append(ET.Comment(f" {_clean(line)} "))
-        el = ET.SubElement(root, "joint", name=j.name, type=j.kind)
-        ET.SubElement(el, "parent", link=j.parent)
-        ET.SubElement(el, "child", link=j.child)
+        el = ET.SubElement(root, "joint", name=xml_chars(j.name), type=j.kind)
+        ET.SubElement(el, "parent", link=xml_chars(j.parent))
+        ET.SubElement(el, "child", link=xml_chars(j.child))
         ET.SubElement(el, "origin", **_origin(j.origin))
         if j.kind != "fixed":
             ET.SubElement(el, "axis", xyz=" ".join(_num(v) for v in j.axis))

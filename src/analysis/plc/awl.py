@@ -67,7 +67,7 @@ class AwlPrinter(S7200Printer):
     def network(self, title: str = "") -> None:
         if not self.first:
             self.lines.append("")
-        self.lines += ["NETWORK", f"TITLE = {title}"]
+        self.lines += ["NETWORK", f"TITLE = {self.text(title)}"]
         self.first = False
 
     def ins(self, op: str, arg: str = "") -> None:
@@ -89,7 +89,7 @@ class AwlPrinter(S7200Printer):
 
     def subroutine_block(self, sub: Subroutine) -> None:
         self.block(sub)
-        self.lines += [f"FUNCTION FC {sub.number} : VOID", f"TITLE = {sub.title}"]
+        self.lines += [f"FUNCTION FC {sub.number} : VOID", f"TITLE = {self.text(sub.title)}"]
         for kw, names in (("VAR_INPUT", sub.inputs), ("VAR_OUTPUT", sub.outputs),
                           ("VAR_TEMP", sub.temps)):  # fmt: skip
             self.lines += [kw, *(f"  {n} : REAL;" for n in names), "END_VAR"]
@@ -112,7 +112,7 @@ class AwlPrinter(S7200Printer):
 
     def main_block(self, program: Program) -> None:
         self.block(None)
-        self.lines += ["ORGANIZATION_BLOCK OB 1", f"TITLE = {program.title}", "BEGIN"]
+        self.lines += ["ORGANIZATION_BLOCK OB 1", f"TITLE = {self.text(program.title)}", "BEGIN"]
         self.body(program.body)
         self.lines += [*(self.extra_ob1 or ()), "END_ORGANIZATION_BLOCK", ""]
 

@@ -58,13 +58,23 @@ def figure_text(
     target=(100, 100, 600),
     real_inputs: bool = False,
     vdd0: dict[str, str] | None = None,
+    degrees: bool = False,
 ) -> str:
     """One figure's transcribed STL with the target and the VDD0 reading substituted.
 
     See :func:`paper_program` for the parameters. Figure 3's three ``MOVD n, VDx`` get
     the target's coordinates (as printed: integers; or ``MOVR x`` with ``real_inputs``).
+    ``degrees`` repairs Figure 4's unit only (the register's grabber-stl-degrees and
+    grabber-stl-vd12): its ``/R 360.0, VD12`` dropped, ``VD16`` scaled by 57.29578 deg/rad
+    before ``/R 360.0, VD16``, so that c1 is theta1 / 360 x 4000 and the figure's other
+    defects stand apart.
     """
     text = _figure(figure)
+    if degrees and figure == 4:
+        lines = [ln for ln in text.splitlines() if not re.match(r"/R\s+360\.0,\s*VD12", ln)]
+        i = next(k for k, ln in enumerate(lines) if re.match(r"MOVR\s+VD12,\s*VD16", ln))
+        text = "\n".join([*lines[: i + 1], "*R     57.29578, VD16", "/R     360.0, VD16",
+                          *lines[i + 1 :]])  # fmt: skip
     if figure == 3:
         vals = iter(target)
 
@@ -91,6 +101,7 @@ def paper_program(
     figures=(3, 4),
     real_inputs: bool = False,
     vdd0: dict[str, str] | None = None,
+    degrees: bool = False,
 ) -> str:
     """S7-200 text of the paper's figures in one OB1 plus the generated subroutines.
 
@@ -105,6 +116,8 @@ def paper_program(
     vdd0 : dict, optional
         How to read Figure 6's ``VDD0``, by instruction, e.g.
         ``{"COS": "VD12", "SIN": "VD12", "*R": "VD0", "MOVR": "VD0"}``.
+    degrees : bool
+        Repair Figure 4's unit only (:func:`figure_text`).
     """
     lines = [
         "ORGANIZATION_BLOCK MAIN:OB1",
@@ -113,7 +126,7 @@ def paper_program(
     ]
     for k, f in enumerate(figures, 1):
         lines.append(f"Network {k} // Figure {f}")
-        lines += figure_text(f, target, real_inputs, vdd0).splitlines()
+        lines += figure_text(f, target, real_inputs, vdd0, degrees).splitlines()
     lines.append("END_ORGANIZATION_BLOCK")
     subs = [atan2_subroutine(1), _arctan_subroutine(3), acos_subroutine(2), _arccos_subroutine(4)]
     return "\r\n".join(lines) + "\r\n" + emit_s7200_subroutines(subs)

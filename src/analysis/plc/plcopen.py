@@ -13,6 +13,7 @@ from __future__ import annotations
 import dataclasses
 from typing import ClassVar
 
+from analysis.escape import xml_attr, xml_text
 from analysis.plc.instr import Program
 from analysis.plc.st import Pou, StPrinter, block_name
 
@@ -20,11 +21,6 @@ __all__ = ["PlcopenXmlPrinter", "validate_plcopen"]
 
 _TC6 = "http://www.plcopen.org/xml/tc6_0201"
 _XHTML = "http://www.w3.org/1999/xhtml"
-
-
-def escape(text: str) -> str:
-    """``&``, ``<`` and ``>`` as XML entities (character data)."""
-    return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
 
 
 class PlcopenXmlPrinter(StPrinter):
@@ -45,11 +41,11 @@ class PlcopenXmlPrinter(StPrinter):
 
     def variable(self, name: str, typ: str, doc: str = "") -> str:
         d = (
-            f'<documentation><xhtml xmlns="{_XHTML}">{escape(doc)}</xhtml></documentation>'
+            f'<documentation><xhtml xmlns="{_XHTML}">{xml_text(doc)}</xhtml></documentation>'
             if doc
             else ""
         )
-        return f'<variable name="{name}"><type><{typ}/></type>{d}</variable>'
+        return f'<variable name="{xml_attr(name)}"><type><{typ}/></type>{d}</variable>'
 
     def interface(self, pou: Pou) -> str:
         parts = ["<returnType><REAL/></returnType>"] if pou.kind == "function" else []
@@ -62,8 +58,8 @@ class PlcopenXmlPrinter(StPrinter):
     def print_pou(self, pou: Pou) -> str:
         body = "\n".join(pou.body).strip("\n") + "\n"
         return (
-            f'<pou name="{pou.name}" pouType="{pou.kind}">{self.interface(pou)}'
-            f'<body><ST><xhtml xmlns="{_XHTML}">{escape(body)}</xhtml></ST></body>'
+            f'<pou name="{xml_attr(pou.name)}" pouType="{pou.kind}">{self.interface(pou)}'
+            f'<body><ST><xhtml xmlns="{_XHTML}">{xml_text(body)}</xhtml></ST></body>'
             "</pou>\n"
         )
 
@@ -75,7 +71,7 @@ class PlcopenXmlPrinter(StPrinter):
             f'<project xmlns="{_TC6}">\n'
             '<fileHeader companyName="analysis" productName="analysis.plc" productVersion="0.1.0" '
             'creationDateTime="2016-05-01T00:00:00"/>\n'
-            f'<contentHeader name="{fb}"><coordinateInfo>'
+            f'<contentHeader name="{xml_attr(fb)}"><coordinateInfo>'
             '<fbd><scaling x="1" y="1"/></fbd><ld><scaling x="1" y="1"/></ld>'
             '<sfc><scaling x="1" y="1"/></sfc></coordinateInfo></contentHeader>\n'
             f"<types><dataTypes/><pous>\n{pous}</pous></types>\n"

@@ -19,6 +19,7 @@ from __future__ import annotations
 import json
 from typing import ClassVar
 
+from analysis.escape import one_line
 from analysis.plc.instr import CMP, Program, Subroutine, flatten
 from analysis.plc.mapdoc import s7_document, startup_values
 from analysis.plc.memmap import MemoryMap, default_map
@@ -100,6 +101,7 @@ class S7200Printer(PlcPrinter):
     # --- lines ------------------------------------------------------------------------------------
     def network(self, title: str = "") -> None:
         self.net += 1
+        title = self.text(title)
         self.lines.append(f"Network {self.net}" + (f" // {title}" if title else ""))
         self.power = False
         self.empty = True
@@ -119,8 +121,13 @@ class S7200Printer(PlcPrinter):
         self.ins(op, arg)
         self.power = False
 
+    def text(self, text: str) -> str:
+        """Text in a title or a comment: one line (an S7 comment or title ends with its
+        line; :func:`analysis.escape.one_line`)."""
+        return one_line(text)
+
     def comment(self, text: str) -> str:
-        return f"// {text}"
+        return f"// {self.text(text)}"
 
     def label(self, name: str) -> None:
         """A jump target: ``LBL n`` begins a network of its own."""
@@ -147,7 +154,7 @@ class S7200Printer(PlcPrinter):
 
     def header(self, program: Program) -> list[str]:
         return [
-            f"TITLE={program.title}",
+            f"TITLE={self.text(program.title)}",
             *(self.comment(n) for n in program.notes),
             self.comment(self.generated_by()),
         ]
@@ -173,7 +180,10 @@ class S7200Printer(PlcPrinter):
 
     def subroutine_block(self, sub: Subroutine) -> None:
         self.block(sub)
-        self.lines += [f"SUBROUTINE_BLOCK {sub.name}:SBR{sub.number}", f"TITLE={sub.title}"]
+        self.lines += [
+            f"SUBROUTINE_BLOCK {sub.name}:SBR{sub.number}",
+            f"TITLE={self.text(sub.title)}",
+        ]
         for kw, names in (("VAR_INPUT", sub.inputs), ("VAR_OUTPUT", sub.outputs),
                           ("VAR", sub.temps)):  # fmt: skip
             self.lines += [kw, *(f"{n}:REAL;" for n in names), "END_VAR"]
@@ -286,13 +296,16 @@ class S7200Printer(PlcPrinter):
     # --- the dialect's output ---------------------------------------------------------------------
     @classmethod
     def printer(cls, mmap, work, start, options: Options, arm) -> S7200Printer:
-        """The printer :meth:`generate` prints with: the motion networks of the paper's arm
-        (:mod:`.motion`, Table 2's I/O) unless ``options.motion`` is off."""
-        from analysis.plc.motion import motion_networks
+        """The printer :meth:`generate` prints with: the motion networks of an arm of the
+        grabber's machine (:func:`.motion.supports`: Table 2's I/O) unless ``options.motion``
+        is off."""
+        from analysis.plc.motion import motion_networks, supports
 
-        with_motion = options.motion and arm.name == "grabber"
-        return cls(mmap, work, startup_target=start,
-                   motion=motion_networks(mmap) if with_motion else None)  # fmt: skip
+        with_motion = options.motion and supports(arm)
+        printer = cls(mmap, work, startup_target=start,
+                      motion=motion_networks(arm, mmap, work) if with_motion else None)  # fmt: skip
+        printer.arm = arm
+        return printer
 
     def uses(self) -> tuple[dict[str, str], str | None]:
         """What the program's addresses beyond its I/O and work area are for, and what its
@@ -302,7 +315,7 @@ class S7200Printer(PlcPrinter):
             return uses, None
         from analysis.plc.motion import MOTION_STARTUP, motion_uses
 
-        return {**uses, **motion_uses()}, MOTION_STARTUP
+        return {**uses, **motion_uses(self.arm, self.mmap, self.work)}, MOTION_STARTUP
 
     @classmethod
     def generate(cls, arm, program, options: Options) -> Generated:
@@ -319,6 +332,10 @@ class S7200Printer(PlcPrinter):
         uses, motion = printer.uses()
         doc = s7_document(arm, program, text, mmap, work, start, where=printer.startup_where,
                           uses=uses, motion=motion)  # fmt: skip
+        if printer.motion:
+            from analysis.plc.motion import machine_document
+
+            doc["machine"] = machine_document(arm, mmap)
         return Generated(text, json.dumps(doc, indent=2, ensure_ascii=False) + "\n")
 
     @classmethod

@@ -55,6 +55,7 @@ import re
 from dataclasses import dataclass
 from typing import ClassVar
 
+from analysis.escape import iec_identifier, plc_comment
 from analysis.kinematics.status import Status
 from analysis.plc.instr import CMP_OF, Cond, Instr, Program, Subroutine
 from analysis.plc.mapdoc import interface_document
@@ -74,25 +75,12 @@ __all__ = [
 REAL_MAX = "3.40282347E+38"
 """The largest finite REAL (binary32), printed."""
 
-# words a variable may not be called in IEC 61131-3 ST or SCL (keywords, type names and
-# literal prefixes that collide with the closed forms' short names); such a name gets "v_"
-_RESERVED = frozenset(
-    """ABS ACOS AND ANY ARRAY AT ATAN BOOL BY BYTE CASE CONSTANT COS D DATE DINT DO DT DWORD
-    ELSE ELSIF END_CASE END_FOR END_FUNCTION END_FUNCTION_BLOCK END_IF END_PROGRAM
-    END_REPEAT END_STRUCT END_TYPE END_VAR END_WHILE EXIT EXP FALSE FOR FUNCTION
-    FUNCTION_BLOCK IF INT L LD LINT LN LOG LREAL LT LTOD LWORD MOD NOT OF ON OR PROGRAM REAL
-    REPEAT RETAIN RETURN S SIN SINT SQRT STRING STRUCT T TAN THEN TIME TO TOD TRUE TYPE UDINT
-    UINT ULINT UNTIL USINT VAR VAR_INPUT VAR_IN_OUT VAR_OUTPUT VAR_TEMP VOID WHILE WORD
-    XOR""".split()
-)
-
-
 def block_name(program: Program, default_branch: str | None = None) -> str:
     """``IK_<ARM>`` for the arm's default branch, ``IK_<ARM>_<BRANCH>`` for another."""
-    name = "IK_" + re.sub(r"\W", "_", program.arm).upper()
+    name = f"IK_{program.arm}"
     if default_branch is not None and program.branch != default_branch:
-        name += "_" + re.sub(r"\W", "_", program.branch).upper()
-    return name
+        name += f"_{program.branch}"
+    return iec_identifier(name).upper()  # IEC 61131-3 (analysis.escape): IK_ keeps it one
 
 
 @dataclass(frozen=True)
@@ -154,16 +142,17 @@ class StPrinter(PlcPrinter):
 
     # --- names and operands -------------------------------------------------------------------
     def ident(self, name: str) -> str:
-        """The declared name of a variable (reserved words get ``v_``)."""
+        """The declared name of a variable (:meth:`declare`)."""
         return self.names.get(name, name)
 
     def declare(self, names) -> None:
-        """Register the variables of one POU: reserved words renamed, no two names equal but
-        for case (ST is case-insensitive)."""
+        """Register the variables of one POU: each name as an IEC 61131-3 identifier
+        (:func:`analysis.escape.iec_identifier`: reserved words get ``v_``), no two equal
+        but for case (ST is case-insensitive)."""
         self.names = {}
         seen: set[str] = set()
         for n in names:
-            out = f"v_{n}" if n.upper() in _RESERVED else n
+            out = iec_identifier(n)  # IEC 61131-3 identifier rule (analysis.escape)
             while out.upper() in seen:
                 out = f"v_{out}"
             seen.add(out.upper())
@@ -196,9 +185,14 @@ class StPrinter(PlcPrinter):
         binds = ", ".join(f"{p} := {self.o(a)}" for p, a in zip(sub.inputs, args, strict=True))
         return f"{self.function_names[name]}({binds})"
 
+    def text(self, text: str) -> str:
+        """Text in a comment or a title: one line, no comment delimiter
+        (:func:`analysis.escape.plc_comment`)."""
+        return plc_comment(text)
+
     def comment(self, text: str) -> str:
-        """A comment line (ST: ``(* *)``; the text never holds ``*)``)."""
-        return f"(* {text.replace('*)', '* )')} *)"
+        """A comment line (ST: ``(* *)``)."""
+        return f"(* {self.text(text)} *)"
 
     def assign(self, dst: str, expr: str) -> str:
         return f"{self.var(dst)} := {expr};"
@@ -398,7 +392,7 @@ class StPrinter(PlcPrinter):
 
     def comment_block(self, lines) -> list[str]:
         """A comment of several lines (ST: one ``(* ... *)`` around them)."""
-        return ["(*", *(f"   {n.replace('*)', '* )')}" for n in lines), "*)"]
+        return ["(*", *(f"   {self.text(n)}" for n in lines), "*)"]
 
     def doprint_program(self, program: Program, *, units, default_branch=None) -> str:
         """The whole source: the header comment, the functions, the function block."""
@@ -460,7 +454,7 @@ class SclPrinter(StPrinter):
     def function_header(self, name: str, title: str) -> list[str]:
         return [
             f'FUNCTION "{name}" : {self.types["REAL"]}',
-            f"TITLE = {title}",
+            f"TITLE = {self.text(title)}",
             "{ S7_Optimized_Access := 'TRUE' }",
             "VERSION : 0.1",
         ]
@@ -468,7 +462,7 @@ class SclPrinter(StPrinter):
     def fb_header(self, name: str, title: str) -> list[str]:
         return [
             f'FUNCTION_BLOCK "{name}"',
-            f"TITLE = {title}",
+            f"TITLE = {self.text(title)}",
             "{ S7_Optimized_Access := 'TRUE' }",
             "VERSION : 0.1",
         ]
@@ -491,7 +485,7 @@ class SclPrinter(StPrinter):
         return [*self.comment_block(lines), ""]
 
     def comment_block(self, lines) -> list[str]:
-        return [f"// {n}" for n in lines]
+        return [f"// {self.text(n)}" for n in lines]
 
     def trailer(self, fb: str) -> list[str]:
         return [

@@ -6,7 +6,9 @@ import codecs
 import csv
 import io
 import itertools
+import os
 import re
+import stat
 import sys
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
@@ -30,6 +32,10 @@ _CELL_OVERHEAD = 56  # bytes of a short str object and its list slot
 _PLAIN = re.compile(r"[0-9eE.+\- \t]*")  # the characters of a plain number (fast path)
 
 _SHOW = 40  # characters of a cell value quoted in a message
+MAX_LINE_CHARS = 1 << 24
+"""Longest physical line read [characters] (16,777,216: 200,000 columns of 80 characters):
+a line is read at most this far, so a file of one endless line (``/dev/zero`` behind a FIFO,
+a generated file without a newline) is refused there, not after it filled the memory."""
 
 
 def _show(value: str) -> str:
@@ -37,15 +43,50 @@ def _show(value: str) -> str:
 
 
 def _open_text(path: PathLike, encoding: str) -> IO[str]:
-    """Open for csv: lines end only at \\n (a \\r\\n ending stays), a UTF-8 BOM is dropped."""
+    """Open for csv: lines end only at \\n (a \\r\\n ending stays), a UTF-8 BOM is dropped.
+
+    A directory, a device or a socket is refused (a FIFO and standard input are streams the
+    reader takes, line by line, each line bounded: :class:`_Lines`); the path is opened
+    without blocking first, so that the descriptor itself is examined."""
     if codecs.lookup(encoding).name == "utf-8":
         encoding = "utf-8-sig"
     if str(path) == "-":  # standard input
         return io.TextIOWrapper(sys.stdin.buffer, encoding=encoding, newline="\n")
     try:
-        return open(path, encoding=encoding, newline="\n")
+        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | getattr(os, "O_CLOEXEC", 0))
     except OSError as exc:
         raise InputError(f"cannot read: {exc.strerror or exc}", path) from exc
+    mode = os.fstat(fd).st_mode
+    if not (stat.S_ISREG(mode) or stat.S_ISFIFO(mode)):
+        os.close(fd)
+        kind = "a directory" if stat.S_ISDIR(mode) else "a device or a socket"
+        raise InputError(f"is {kind}, not a file of rows", path)
+    os.set_blocking(fd, True)
+    return open(fd, encoding=encoding, newline="\n", closefd=True)
+
+
+class _Lines:
+    """The lines of a text file, each read at most :data:`MAX_LINE_CHARS` far (InputError
+    naming the line beyond that); iterates like the file itself."""
+
+    def __init__(self, fh: IO[str], path: PathLike) -> None:
+        self.fh, self.path, self.n = fh, path, 0
+
+    def __iter__(self) -> Iterator[str]:
+        return self
+
+    def __next__(self) -> str:
+        line = self.fh.readline(MAX_LINE_CHARS + 1)
+        if not line:
+            raise StopIteration
+        self.n += 1
+        if len(line) > MAX_LINE_CHARS:
+            raise InputError(
+                f"is longer than {MAX_LINE_CHARS:,} characters (the longest line read)",
+                self.path,
+                self.n,
+            )
+        return line
 
 
 def _decode_error(path: PathLike, encoding: str, exc: UnicodeDecodeError) -> InputError:
@@ -54,10 +95,10 @@ def _decode_error(path: PathLike, encoding: str, exc: UnicodeDecodeError) -> Inp
     No line break byte occurs inside a multibyte character of an ASCII-compatible encoding,
     so decoding line by line fails on the same bytes as decoding the whole file.
     """
-    if str(path) == "-":
+    if str(path) == "-" or not os.path.isfile(path):  # a stream cannot be read again
         return InputError(f"not valid {encoding} text ({exc.reason})", path)
     with open(path, "rb") as fh:
-        for number, raw in enumerate(fh, start=1):
+        for number, raw in enumerate(iter(lambda: fh.readline(4 * MAX_LINE_CHARS), b""), 1):
             try:
                 raw.decode(encoding)
             except UnicodeDecodeError as line_exc:
@@ -124,8 +165,9 @@ class _Table:
         header = None
         try:
             peeked: list[str] = []  # the lines up to the first non-blank one, for the sniff
+            lines = _Lines(self.file, self.path)
             try:
-                for line in self.file:
+                for line in lines:
                     peeked.append(line)
                     if line.strip():
                         break
@@ -135,7 +177,7 @@ class _Table:
             if self.delimiter is None:
                 self.delimiter = _sniff(self.first_text, self.required)
             self.reader = csv.reader(
-                itertools.chain(peeked, self.file), delimiter=self.delimiter, strict=True
+                itertools.chain(peeked, lines), delimiter=self.delimiter, strict=True
             )
             while header is None:
                 previous = self.reader.line_num

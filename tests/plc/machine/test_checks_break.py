@@ -48,6 +48,8 @@ BREAKS = {
     "overshoot": ("move", "+ LREAL#0.75) * TaskCycle", "+ LREAL#0.5) * TaskCycle", "moved back"),
     # an axis error not latched: the other axes carry on when a drive fails
     "axis_error": ("axis_error", "IF Fault AND NOT FaultLatched THEN", "IF FALSE THEN", "Status"),
+    # no dwell: the gripper reported closed at once, a Start accepted while it closes
+    "dwell": ("handling", "(Phase = 50) AND GripTimer.Q", "(Phase = 50)", "GripperClosed"),
     "refusal": ("unreachable", "IF Ik.Error THEN", "IF FALSE THEN", "Status"),
     "homed": ("power_home", "ELSIF NOT Homed THEN", "ELSIF FALSE THEN", "moved"),
     # the stop circuit watched only while the machine moves, and Reset clearing it whatever

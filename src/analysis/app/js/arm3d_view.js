@@ -136,7 +136,7 @@
   // this path 27 ms (20-35), the title's relayout included. Returns false (the caller then
   // uses Plotly.update) when the scene is not drawn yet, a trace has never been drawn, or the
   // scene is not plotly's gl3d scene as expected (another plotly.js version).
-  function redrawInPlace(gd, idx, data) {
+  function redrawInPlace(gd, idx, data, style) {
     const scene = glScene(gd);
     if (!scene || !scene.glplot || typeof scene.glplot.redraw !== "function" || !scene.traces) return false;
     if (typeof scene.glplot.add !== "function" || typeof scene.glplot.remove !== "function") return false;
@@ -150,6 +150,12 @@
         gd.data[i][c] = data[c][k];
         full[k][c] = data[c][k]; // (full[k]._input is gd.data[i])
       }
+      if (style && style[k]) { // the arm's colours: its own, or greyed (a pose kept, stale)
+        for (const part of ["line", "marker"]) {
+          gd.data[i][part] = Object.assign({}, gd.data[i][part], {color: style[k][part]});
+          if (full[k][part]) full[k][part].color = style[k][part];
+        }
+      }
       if (!data.x[k].length) {
         hide(scene, objs[k]);
       } else {
@@ -157,6 +163,9 @@
         // no styles): the trace's last drawn full data, with the new points, is drawn
         const from = full[k].visible === false && objs[k].data
           ? Object.assign({}, objs[k].data, {x: data.x[k], y: data.y[k], z: data.z[k]}) : full[k];
+        if (style && style[k] && from !== full[k]) {
+          for (const part of ["line", "marker"]) from[part] = Object.assign({}, from[part], {color: style[k][part]});
+        }
         show(scene, objs[k]);
         objs[k].update(from);
       }
@@ -165,6 +174,7 @@
     return true;
   }
 
+  const STALE = {line: "#8f969e", marker: "#6b7178"}; // a pose kept without a solution: grey
   const POSE_TOL_MM = 1e-6; // the kernel rounds its frames to 1e-6 mm (explore.Explorer._draw)
 
   /** Two poses [frames, target, title] that draw the same: titles equal, every coordinate
@@ -199,6 +209,12 @@
       this.arm = this.names.indexOf("arm");
       this.target = this.names.indexOf("target");
       this.last = null;
+      this.lastFrames = null; // the last pose with a solution: kept, greyed, when one has none
+      const armTrace = fig.data[this.arm] || {};
+      this.colours = {
+        line: (armTrace.line && armTrace.line.color) || "#1f77b4",
+        marker: (armTrace.marker && armTrace.marker.color) || "#0b3c5d",
+      };
       this.queue = this.queue
         .then(() => showHidden(this.div))
         .then(() => this.Plotly.react(this.div, fig.data, fig.layout, glConfig(fig.config)))
@@ -210,6 +226,11 @@
      * target cross at `target` and the title; resolves once it is on screen. */
     draw(frames, target, title, source) {
       const asked = performance.now();
+      // no solution: the last pose stays where it was, greyed (the view does not jump, and
+      // what the arm last did stays in sight); the first pose of an arm has none to keep
+      const stale = !frames && Boolean(this.lastFrames);
+      if (frames) this.lastFrames = frames;
+      else if (stale) frames = this.lastFrames;
       const pose = [frames, target, title];
       // the same pose again (the kernel's, rounded to 1e-6 mm, after the browser's): no redraw
       if (samePose(pose, this.last)) return this.queue;
@@ -219,12 +240,15 @@
       const col = (k) => pts.map((p) => p[k]);
       const data = {x: [col(0)], y: [col(1)], z: [col(2)]};
       const idx = [this.arm];
+      const colours = stale ? STALE : this.colours;
+      const style = [colours];
       if (this.target >= 0) {
         const t = target ? [target] : [];
         data.x.push(t.map((p) => p[0]));
         data.y.push(t.map((p) => p[1]));
         data.z.push(t.map((p) => p[2]));
         idx.push(this.target);
+        style.push(null);
       }
       let started, plotted, path;
       this.queue = this.queue
@@ -232,14 +256,19 @@
         .then(() => {
           let inPlace = false;
           try {
-            inPlace = this.inPlace && redrawInPlace(this.div, idx, data);
+            inPlace = this.inPlace && redrawInPlace(this.div, idx, data, style);
           } catch (e) { // the figure's data already holds the pose: plotly redraws it all
             console.warn("arm3d: redraw in place failed, plotly redraws", e);
           }
           path = inPlace ? "in-place" : "plotly";
           if (!inPlace) {
             showHidden(this.div);
-            return this.Plotly.update(this.div, data, Object.assign({"title.text": title}, liveCamera(this.div)), idx);
+            const now = (k, part) => ((this.div.data[idx[k]] || {})[part] || {}).color || null;
+            const styled = Object.assign({}, data, {
+              "line.color": style.map((c, k) => (c ? c.line : now(k, "line"))),
+              "marker.color": style.map((c, k) => (c ? c.marker : now(k, "marker"))),
+            });
+            return this.Plotly.update(this.div, styled, Object.assign({"title.text": title}, liveCamera(this.div)), idx);
           }
           const now = this.div._fullLayout.title && this.div._fullLayout.title.text;
           return now === title ? undefined : this.Plotly.relayout(this.div, {"title.text": title});
@@ -249,7 +278,7 @@
         .then(() => {
           // asked: draw() called; started: plotly began (after earlier draws); plotted: it
           // returned; t: the next frame painted; path: redrawn in place or by Plotly.update
-          const rec = {t: performance.now(), asked, started, plotted, path, source, frames, target, title};
+          const rec = {t: performance.now(), asked, started, plotted, path, source, frames, target, title, stale};
           this.el.arm3dDraws.push(rec);
           (globalThis.arm3dDraws = globalThis.arm3dDraws || []).push(rec);
           this.el.dispatchEvent(new CustomEvent("arm3d-drawn", {detail: rec, bubbles: true}));
@@ -261,8 +290,9 @@
   }
 
   /** The pose the printed kinematics gives: for IK, target `p` (inputs, angles in rad) on
-   * `branch`; for FK (`q` given), the joint angles. Returns {frames, target, title, q}. */
-  function pose(arm, {branch, p, q}) {
+   * `branch` (`theta1`: the waist angle on the base axis [rad], or null); for FK (`q`
+   * given), the joint angles. Returns {frames, target, title, q, status}. */
+  function pose(arm, {branch, p, q, theta1}) {
     let title = arm.title + " · ";
     let target = null;
     if (q) {
@@ -273,7 +303,7 @@
     }
     const ix = ["px", "py", "pz"].map((k) => arm.inputs.indexOf(k));
     if (ix.every((i) => i >= 0)) target = ix.map((i) => p[i]);
-    const s = arm.solve(p);
+    const s = arm.solve(p, theta1);
     const b = s.branches[branch];
     title += branch;
     if (!b || !b.ok) return {frames: null, target, q: null, title: title + " · no solution", status: s};

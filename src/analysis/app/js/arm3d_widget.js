@@ -82,14 +82,14 @@ async function render({model, el}) {
   function local() {
     if (!arm || !ctl || ctl.inputs.length !== arm.inputs.length) return;
     const fk = value(ctl.fk);
-    if (!fk && value(ctl.axis)) return; // theta1 chosen on the axis: the kernel draws
     const rad = Math.PI / 180;
     let r;
     if (fk) {
       r = A.pose(arm, {q: ctl.joints.map((m) => value(m) * rad)});
     } else {
       const p = ctl.inputs.map((m, i) => value(m) * (ctl.units[i] === "rad" ? rad : 1));
-      r = A.pose(arm, {branch: value(ctl.branch), p});
+      const theta1 = value(ctl.axis) && arm.on_axis ? value(ctl.axisDeg) * rad : null;
+      r = A.pose(arm, {branch: value(ctl.branch), p, theta1});
     }
     view.draw(r.frames, r.target, r.title, "local");
   }

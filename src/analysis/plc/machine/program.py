@@ -36,8 +36,7 @@ Why by hand: no library prints PLCopen motion programs; the text is held by the 
 
 from __future__ import annotations
 
-import re
-
+from analysis.escape import iec_identifier, plc_comment
 from analysis.plc.emit import fmt_real
 from analysis.plc.machine.spec import MACHINE_STATUS, MachineSpec
 
@@ -58,7 +57,7 @@ _CODE = {word: code for code, (word, _, _) in MACHINE_STATUS.items()}
 
 
 def machine_name(spec: MachineSpec) -> str:
-    return "MACHINE_" + re.sub(r"\W", "_", spec.arm).upper()
+    return iec_identifier(f"MACHINE_{spec.arm}").upper()  # IEC 61131-3 (analysis.escape)
 
 
 def cycles_up(x: str, cycle: str) -> str:
@@ -99,7 +98,7 @@ class MachinePrinter:
         return kind
 
     def comment(self, text: str) -> str:
-        return f"(* {text.replace('*)', '* )')} *)"
+        return f"(* {plc_comment(text)} *)"  # one line, no (* *) (analysis.escape)
 
     # --- declarations ---------------------------------------------------------------------
     def declarations(self) -> list[str]:

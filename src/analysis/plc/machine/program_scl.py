@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import re
 
+from analysis.escape import plc_comment
 from analysis.plc.machine.program import STEPS, MachinePrinter, lreal
 from analysis.plc.machine.spec import MACHINE_INPUTS, MACHINE_OUTPUTS
 
@@ -79,7 +80,7 @@ class SclMachinePrinter(MachinePrinter):
         t = self.indent
         out = [
             f'FUNCTION_BLOCK "{self.name}"',
-            f"TITLE = machine of the {self.spec.title} ({self.spec.arm})",
+            f"TITLE = {plc_comment(f'machine of the {self.spec.title} ({self.spec.arm})')}",
             "{ S7_Optimized_Access := 'TRUE' }",
             "VERSION : 0.1",
         ]

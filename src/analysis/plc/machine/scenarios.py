@@ -71,6 +71,7 @@ __all__ = [
 ]
 
 SCENARIOS = (
+    "handling",
     "axis_error",
     "power_home",
     "move",
@@ -244,6 +245,27 @@ def scenarios(arm, seed: int = 29) -> dict[str, Scenario]:
         (*boot, *_start(START_T, ta, spec), *_start(mid, tb, spec), (t2, "Start", 0.0)),
         Expect(final=jb, sync="last"),
     )
+    far = tuple(x * 10.0 if k < 3 else x for k, x in enumerate(ta))
+    out["unreachable"] = _refused(
+        "unreachable", "a target out of reach", boot, far, spec, Status.OUT_OF_REACH
+    )
+    nan = (math.nan, *ta[1:])
+    out["nan"] = _refused("nan", "a NaN target", boot, nan, spec, Status.INVALID)
+    out.update(_wrap(arm, spec, boot, qw1, qw2))
+    lim = _limit_target(arm, spec, rng)
+    if lim is not None:
+        out["joint_limit"] = _refused(
+            "joint_limit", "a target beyond a joint limit", boot, lim, spec, Status.JOINT_LIMITS
+        )
+    out.update(_stops(spec, boot, ta, tb, ja, t_move, mid))
+    out["handling"] = _handling(spec, boot, ta, tb, ja, jb)
+    return out
+
+
+def _stops(spec, boot, ta, tb, ja, t_move: float, mid: float) -> dict[str, Scenario]:
+    """The stop family: the stop circuit opened mid-move (stop, reset_resume, wire_break)
+    and a drive's fault (axis_error)."""
+    out: dict[str, Scenario] = {}
     stop_rows = (*boot, *_start(START_T, ta, spec), (mid, "StopOK", 0.0))
     settle = mid + 1.5
     out["stop"] = Scenario(
@@ -280,18 +302,6 @@ def scenarios(arm, seed: int = 29) -> dict[str, Scenario]:
             outputs=((settle + 0.45, "Status", 0), (settle + 0.45, "Error", 0)),
         ),
     )
-    far = tuple(x * 10.0 if k < 3 else x for k, x in enumerate(ta))
-    out["unreachable"] = _refused(
-        "unreachable", "a target out of reach", boot, far, spec, Status.OUT_OF_REACH
-    )
-    nan = (math.nan, *ta[1:])
-    out["nan"] = _refused("nan", "a NaN target", boot, nan, spec, Status.INVALID)
-    out.update(_wrap(arm, spec, boot, qw1, qw2))
-    lim = _limit_target(arm, spec, rng)
-    if lim is not None:
-        out["joint_limit"] = _refused(
-            "joint_limit", "a target beyond a joint limit", boot, lim, spec, Status.JOINT_LIMITS
-        )
     drive = spec.axes[1].name
     out["axis_error"] = Scenario(
         "axis_error",
@@ -335,6 +345,25 @@ def scenarios(arm, seed: int = 29) -> dict[str, Scenario]:
         ),
     )
     return out
+
+
+def _handling(spec, boot, ta, tb, ja, jb) -> Scenario:
+    """A handling cycle: move to A, close the gripper (a Start during its dwell is refused,
+    nothing moves), move to B, open it."""
+    home = tuple(a.home_position for a in spec.axes)
+    at_a = START_T + 1.3 * _move_time(spec, home, ja) + 0.3
+    dwell = spec.grip_dwell_s
+    go_b = at_a + dwell + 0.2
+    at_b = go_b + 1.3 * _move_time(spec, ja, jb) + 0.3
+    end = at_b + dwell + 0.2
+    rows = (*boot, *_start(START_T, ta, spec), (at_a, "Grip", 1.0), *_start(at_a + 0.1, tb, spec),
+            *_start(go_b, tb, spec), (at_b, "Grip", 0.0), (end, "Start", 0.0))  # fmt: skip
+    return Scenario("handling", "move, grip (a Start during the dwell refused), move, release",
+        rows, Expect(final=jb, still=((at_a, go_b),), outputs=(
+            (at_a + 0.01, "Gripper", 1), (at_a + 0.01, "GripperClosed", 0),
+            (at_a + 0.01, "Busy", 1), (at_a + 0.15, "Status", 104),
+            (at_a + dwell + 0.05, "GripperClosed", 1), (at_a + dwell + 0.05, "Done", 1),
+            (end, "Gripper", 0), (end, "GripperClosed", 0), (end, "Done", 1))))  # fmt: skip
 
 
 def _refused(name, title, boot, target, spec, status) -> Scenario:

@@ -168,7 +168,7 @@ def _axis(index: int, joint) -> AxisSpec:
     sources = dict(getattr(joint, "sources", {}) or {})
     return AxisSpec(
         name=f"Axis{index + 1}",
-        joint=joint.name,
+        joint=" ".join(str(joint.name).split()),
         kind=joint.kind,
         unit="deg" if revolute else "mm",
         per_pulse=per_pulse,
@@ -197,7 +197,7 @@ def machine_spec(arm) -> MachineSpec:
     axes = tuple(_axis(k, j) for k, j in enumerate(arm.description.joints))
     return MachineSpec(
         arm=arm.name,
-        title=arm.description.title,
+        title=" ".join(str(arm.description.title).split()),  # one line in every comment
         ik_inputs=tuple(arm.inputs),
         ik_units=tuple(arm.input_units),
         targets=tuple(TARGET_NAMES[n] for n in arm.inputs),

@@ -26,6 +26,7 @@ from __future__ import annotations
 import io
 import re
 
+from analysis.escape import plc_comment
 from analysis.plc.machine.spec import MACHINE_INPUTS, MachineSpec
 
 __all__ = ["TIA_COLUMNS", "codesys_gvl", "machine_files", "signals", "tia_tag_table"]
@@ -53,8 +54,8 @@ _COMMENT = {
 
 
 def _text(s: str) -> str:
-    """A comment on one line, without the ST comment's end."""
-    return re.sub(r"[\r\n\t]+", " ", s).replace("*)", "* )")
+    """A comment on one line, without the ST comment's delimiters (analysis.escape)."""
+    return plc_comment(s)
 
 
 def signals(spec: MachineSpec) -> list[tuple[str, str, str | None, str, bool]]:

@@ -37,6 +37,7 @@ from analysis.plc.stl_eval.legacy import (
 )
 from analysis.plc.stl_eval.loader import Library, Loaded, load_program
 from analysis.plc.stl_eval.operands import TYPES
+from analysis.plc.stl_eval.pulse_output import PtoChannel, Train
 from analysis.plc.stl_eval.syntax import StlError, parse_program
 
 __all__ = [
@@ -48,7 +49,9 @@ __all__ = [
     "Instr",
     "Library",
     "Loaded",
+    "PtoChannel",
     "StlError",
+    "Train",
     "VMemory",
     "arcus_library",
     "defs_uses",

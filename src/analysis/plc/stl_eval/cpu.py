@@ -60,7 +60,7 @@ from analysis.plc.stl_eval.operands import (
     Operand,
 )
 from analysis.plc.stl_eval.program_control import EndScan, ProgramControl, Stop
-from analysis.plc.stl_eval.pulse_output import Pto, PulseOutput
+from analysis.plc.stl_eval.pulse_output import PtoChannel, PulseOutput
 from analysis.plc.stl_eval.syntax import StlError, Stmt
 
 __all__ = ["MAX_SCAN_FACTOR", "S7200", "WATCHDOG_STATEMENTS", "Fault"]
@@ -101,9 +101,8 @@ class S7200(BitLogic, Arithmetic, ProgramControl, PulseOutput):
     ftz : bool
         Flush denormal REAL operands and results to zero (default: IEEE gradual underflow).
     scan_ms : float
-        Simulated scan time [ms] for the clock bits SM0.4 and SM0.5.
-    pto_scans : int, optional
-        Finish every pulse train after this many scans (default: only :meth:`pto_done`).
+        Simulated scan time [ms]: the clock bits SM0.4 and SM0.5, and how long the pulse
+        generators run after each scan's program (:mod:`.pulse_output`).
     fragment : bool
         Run a listing that is one network without its first contact: the scan begins with
         power flow on, as after ``LD SM0.0`` (the paper's figures and the audit's pieces).
@@ -118,7 +117,6 @@ class S7200(BitLogic, Arithmetic, ProgramControl, PulseOutput):
         *,
         ftz: bool = False,
         scan_ms: float = 10.0,
-        pto_scans: int | None = None,
         symbols=None,
         libraries=None,
         cpu=None,
@@ -138,7 +136,6 @@ class S7200(BitLogic, Arithmetic, ProgramControl, PulseOutput):
         self.ftz = ftz
         self.fragment = fragment
         self.scan_ms = scan_ms
-        self.pto_scans = pto_scans
         self.scans = 0
         if not 1 <= watchdog <= 10**9:
             raise ValueError(f"watchdog = {watchdog}: a statement budget of 1..1e9 a scan")
@@ -147,13 +144,18 @@ class S7200(BitLogic, Arithmetic, ProgramControl, PulseOutput):
         self.fault: Fault | None = None
         self.stopped_by: str | None = None
         self.events = {"denormal": 0, "overflow": 0}
-        self.pto = [Pto(), Pto()]
+        self.pto = [PtoChannel(0), PtoChannel(1)]
+        self.time = 0.0
+        """Simulated time [s]: the start of the next scan."""
+        self.terminals = bytes(len(self.mem["Q"]))
+        """The outputs at the terminals now: the process image the last scan wrote (the
+        image reaches the terminals at the end of the scan)."""
         self._edges: dict[int, int] = {}
         self._first = True
         self._for: list = []
         self._code = {k: self._bind(p) for k, p in program.pous.items()}
-        self.mem["SM"][66] |= 0x80  # both PTO channels idle at power-up
-        self.mem["SM"][76] |= 0x80
+        self.pto_sync(0)  # both PTO channels idle at power-up
+        self.pto_sync(1)
 
     # --- public memory access ---------------------------------------------------------
     def _addr(self, typ: str, addr: str) -> tuple[str, int, int | None]:
@@ -250,12 +252,15 @@ class S7200(BitLogic, Arithmetic, ProgramControl, PulseOutput):
                 pass
             self._first = False
             self.scans += 1
-            if self.pto_scans is not None:
+            self.time = self.scans * self.scan_ms / 1000.0
+            if self.stopped:  # ~ in STOP the outputs take their STOP state (off): no pulses
                 for ch, p in enumerate(self.pto):
-                    if p.busy:
-                        p.scans += 1
-                        if p.scans >= self.pto_scans:
-                            self.pto_done(ch)
+                    p.pls(self.time, 0, 0, 0)
+                    self.pto_sync(ch)
+                self.mem["Q"][:] = bytes(len(self.mem["Q"]))
+            else:
+                self.pto_advance(self.time)  # the generators run while the next scan does
+            self.terminals = bytes(self.mem["Q"])
 
     def _run(self, key: str) -> None:
         code, _labels = self._code[key]

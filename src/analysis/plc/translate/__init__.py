@@ -49,8 +49,12 @@ JMP n / LBL n          JC Jn / Jn: (labels per block)
 CALL SBRn|NAME, args   CALL FC n+1 (IN..., IN_OUT..., OUT... by position), by value: copied
                        through scratch memory (an AWL FC gets references)
 CRET, END              A TOS; BEC (END: the first-scan bit is set first)
-PLS n                  no PTO hardware: logs the pulse count SMD72/SMD82 and clears the idle
-                       bit SM66.7/SM76.7 (a test sets it again to model "train done")
+PLS n                  no PTO hardware in awlsim: logs SMB67, SMW68, SMD72, SMW168 (+10 for
+                       PTO1) as they are when PLS runs (:meth:`Layout.pls_record`), and sets
+                       the idle bit SM66.7 (enable bit off: SM66.5 if it was busy) or clears
+                       it; :class:`analysis.plc.motion.engines.AwlsimEngine` runs the
+                       System Manual's generator (:class:`~.stl_eval.PtoChannel`) on the log
+                       after the scan and writes SMB66/76, SMB166/176 back
 =====================  ======================================================================
 
 Refused with the line (the evaluator runs them; awlsim has no counterpart here): indirect
@@ -62,7 +66,11 @@ observed on awlsim 0.77.1): a REAL overflow of finite operands saturates
 to +-3.4028235E+38 without OV, so the store happens (the CPU sets SM1.1 and keeps OUT); a
 denormal result is stored as 0 with OV, so the store is skipped (the CPU's handling is
 unknown; the evaluator keeps IEEE's denormal); SIN/COS/TAN within 1e-7 of -1, 0 or 1 are
-snapped. ``tests/plc/test_stl_machine.py`` compares the translation with the evaluator on
+snapped. PLS: the runner's generator reads a profile table after the scan, the evaluator's
+when PLS runs (a program that rewrites the table after its PLS in the same scan differs),
+and the status a PLS leaves within its own scan is mirrored, not modelled (a PLS into a full
+pipeline shows SM66.6 only from the next scan on). ``tests/plc/test_stl_machine.py``
+compares the translation with the evaluator on
 random programs outside those cases.
 
 The AWL then goes through :func:`analysis.plc.peephole.optimize_awl` (``optimize=False``

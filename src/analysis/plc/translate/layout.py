@@ -4,8 +4,9 @@ V n -> M n for the whole of the CPU's V memory (VB0-VB8191 on a CPU 224): a prog
 addresses and the memory map's byte offsets are the same in both dialects. Everything else
 lives above it: SM, AC0-AC3, the process images I and Q, S, the S7-200 M area, then the
 translation's own bits and scratch (logic stacks, ENO, the first-scan and STOP bits, ROUND
-and CALL scratch, the PLS log). :func:`analysis.plc.runner.AwlRunner` sizes awlsim's M area
-to fit (its default is 2048 bytes).
+and CALL scratch, the PLS log: what each PLS found in the SM registers, for the runner's
+pulse generators, :meth:`Layout.pls_record`). :func:`analysis.plc.runner.AwlRunner` sizes
+awlsim's M area to fit (its default is 2048 bytes).
 """
 
 from __future__ import annotations
@@ -14,7 +15,22 @@ from dataclasses import dataclass
 
 from analysis.plc.memmap import CPUS, DEFAULT_CPU
 
-__all__ = ["FIRST_SCAN_DONE", "I_BASE", "PLS_LOG", "Q_BASE", "SM_BASE", "STOP_BIT", "Layout"]
+__all__ = [
+    "FIRST_SCAN_DONE",
+    "I_BASE",
+    "PLS_LOG",
+    "PLS_RECORDS",
+    "Q_BASE",
+    "SM_BASE",
+    "STOP_BIT",
+    "Layout",
+]
+
+
+PLS_RECORDS = 4
+"""PLS executions a channel may log in one scan (a fifth stops the run, saying so)."""
+PLS_RECORD_BYTES = 10
+PLS_CHANNEL_BYTES = 2 + PLS_RECORDS * PLS_RECORD_BYTES
 
 
 @dataclass(frozen=True)
@@ -55,8 +71,8 @@ class Layout:
         m = s + c.areas["S"]
         bits = m + c.areas["M"]  # one byte of the translation's own bits
         round_scratch = bits + 4  # 3 double words
-        pls = round_scratch + 12  # MD pls: channel 0 count, +4 channel 1, MW +12/+14 counts
-        logic = pls + 16  # 4 bytes per block
+        pls = round_scratch + 12  # the PLS log: PLS_RECORDS records a channel (pls_record)
+        logic = pls + 2 * PLS_CHANNEL_BYTES  # 4 bytes per block
         return cls(
             c.name,
             v,
@@ -74,6 +90,14 @@ class Layout:
             pls,
             logic,
         )
+
+    def pls_record(self, ch: int, k: int = 0) -> int:
+        """M byte of PLS record ``k`` of channel ``ch`` in a scan: the control byte, a spare
+        byte, the cycle time (word), the pulse count (double word) and the profile table's
+        offset (word), as SMB67, SMW68, SMD72, SMW168 held when PLS ran. The byte at
+        ``pls_record(ch) - 2`` counts the records of the scan (the runner empties it), the
+        one after it is set when a scan ran more than :data:`PLS_RECORDS` PLS."""
+        return self.pls_log + PLS_CHANNEL_BYTES * ch + 2 + PLS_RECORD_BYTES * k
 
     def byte(self, area: str, n: int) -> int:
         if area == "V":

@@ -15,6 +15,7 @@ from __future__ import annotations
 import re
 
 from analysis.plc.stl_eval.operands import Operand
+from analysis.plc.translate.layout import PLS_RECORDS
 
 __all__ = ["BY_BUILDER", "BY_OP", "NOT_TRANSLATED", "emit_statement"]
 
@@ -305,17 +306,58 @@ def _call(e, st, o) -> None:
 
 
 def _pls(e, st, o) -> None:
+    """PLS n: log what the SM registers hold (a record for the runner's pulse generator,
+    :class:`analysis.plc.stl_eval.PtoChannel`, which runs after the scan) and mirror what the
+    generator does at once: the enable bit cleared -> idle (SM66.5 if a train was running),
+    set -> busy (the runner's model then decides: started, queued or overflow)."""
     ch = o[0].value
     lay = e.lay
+    sm = lay.sm + 10 * ch
+    count = f"MB {lay.pls_record(ch) - 2}"
 
     def body(fail):
-        e.i("L", f"MD {lay.sm + 72 + 10 * ch}")
-        e.i("T", f"MD {lay.pls_log + 4 * ch}")
-        e.i("L", f"MW {lay.pls_log + 12 + 2 * ch}")
-        e.i("+", "1")
-        e.i("T", f"MW {lay.pls_log + 12 + 2 * ch}")
+        slots = [e.label() for _ in range(PLS_RECORDS)]
+        full, logged, abort, done = e.label(), e.label(), e.label(), e.label()
+        for k in range(PLS_RECORDS - 1):
+            e.i("L", count)
+            e.i("L", str(k))
+            e.i("==I")
+            e.i("JC", slots[k])
+        e.i("L", count)
+        e.i("L", str(PLS_RECORDS - 1))
+        e.i("==I")
+        e.i("JCN", full)
+        for k, lab in enumerate(slots):
+            r = lay.pls_record(ch, k)
+            e.place(lab)
+            regs = ((67, 0, "B"), (68, 2, "W"), (72, 4, "D"), (168, 8, "W"))
+            for reg, off, w in regs:
+                src, dst = f"M{w} {sm + reg}", f"M{w} {r + off}"
+                e.i("L", src)
+                e.i("T", dst)
+            e.i("JU", logged)
+        e.place(full)
         e.i("SET")
-        e.i("R", f"M {lay.sm + 66 + 10 * ch}.7")
+        e.i("S", f"M {lay.pls_record(ch) - 1}.0")  # more than PLS_RECORDS this scan
+        e.i("JU", done)
+        e.place(logged)
+        e.i("L", count)
+        e.i("L", "1")
+        e.i("+I")
+        e.i("T", count)
+        e.i("A", f"M {sm + 67}.7")
+        e.i("JCN", abort)
+        e.i("A", f"M {sm + 67}.6")
+        e.i("JC", done)
+        e.i("SET")
+        e.i("R", f"M {sm + 66}.7")
+        e.i("JU", done)
+        e.place(abort)
+        e.i("AN", f"M {sm + 66}.7")
+        e.i("S", f"M {sm + 66}.5")
+        e.i("SET")
+        e.i("S", f"M {sm + 66}.7")
+        e.place(done)
 
     e.box(body)
 
