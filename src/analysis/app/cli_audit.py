@@ -45,7 +45,8 @@ def cmd_errata(args: argparse.Namespace) -> int:
     if args.check:
         stale, found = reg.check(papers), reg.findings(papers)
         if args.json:
-            print(to_json({"up_to_date": not stale and not found, "stale": stale, "findings": found}))
+            ok = not stale and not found
+            print(to_json({"up_to_date": ok, "stale": stale, "findings": found}))
         else:
             if stale:
                 print(f"out of date: {', '.join(stale)} (run: {PROG} errata --write)", file=sys.stderr)  # noqa: E501
