@@ -322,7 +322,7 @@ def trajectory_figure(
     fig.update_layout(
         sliders=[{
             "active": 0, "currentvalue": {"prefix": "t = ", "suffix": " s"},
-            "pad": {"t": 10}, "len": 0.85, "x": 0.15,
+            "pad": {"t": 10}, "len": 0.75, "x": 0.25,
             "steps": [{"method": "animate", "label": label, "args": [[label], still]}
                       for label in labels],
         }],
