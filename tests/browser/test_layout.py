@@ -361,3 +361,8 @@ def test_notebook_02_tables_fit_the_column_and_headings_typeset(page, site_url):
             .map(h => h.innerText).filter(t => /\\^-1|\\bsqrt\\(|\\*\\*/.test(t))"""
     )
     assert not ascii_maths, ascii_maths
+    typeset = page.evaluate(
+        """() => [...document.querySelectorAll('.bd-article h2')]
+            .filter(h => h.querySelector('mjx-container')).length"""
+    )
+    assert typeset >= 8, typeset  # eqs. 1-2, 3, 4, 5, 6, 10, 11-12, 15-16, 17-19
