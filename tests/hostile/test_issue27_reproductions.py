@@ -38,7 +38,7 @@ from .registry import cli
 def _run_without_stdin(*argv: str) -> subprocess.CompletedProcess:
     return subprocess.run(
         [sys.executable, "-m", "analysis", *argv], stdin=subprocess.DEVNULL,
-        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=PROJECT,
+        capture_output=True, text=True, cwd=PROJECT,
         preexec_fn=lambda: os.close(0), timeout=120,
     )  # fmt: skip
 
