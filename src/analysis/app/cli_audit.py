@@ -15,18 +15,26 @@ __all__ = ["add_errata", "add_report", "cmd_errata", "cmd_report"]
 def cmd_errata(args: argparse.Namespace) -> int:
     from analysis.audit import register as reg
 
+    if args.paper_file:  # a paper outside data/ (being added): its records' audit
+        found = reg.audit_file(args.paper_file, args.register).findings
+        print(to_json({"findings": list(found)}) if args.json else "\n".join(found) or "explained")
+        return 1 if found else 0
     papers = [args.paper] if args.paper else None
     if args.paper and args.paper not in reg.available():
         reg.register(args.paper)  # raises, naming the papers
-    progress = Progress("errata")
-    # --check is answered from the cache of the generated files' digests when no input changed
-    # (under 1 s); reg.check builds the registers only when it must
-    if not (args.check and reg.check_is_cached(papers)):
-        for i, paper in enumerate(papers or reg.available(), 1):  # built once, cached
-            progress.update(f"building the register of {paper} ({i}/{len(papers or reg.available())})")  # noqa: E501
-            if args.write or args.check or not args.json:
+    # answered from the cache of what the registers give when no input changed (under 1 s);
+    # otherwise say what changed and rebuild the registers (seconds)
+    if not args.json or args.check or args.write:
+        if args.write or reg.cached_answers(papers) is None:
+            changed = reg.changed_inputs()
+            print(f"errata: recomputing the registers ({len(changed)} input(s) changed since the "
+                  f"last build: {', '.join(changed[:6])}{' ...' if len(changed) > 6 else ''})",
+                  file=sys.stderr)  # fmt: skip
+            progress = Progress("errata")
+            for i, paper in enumerate(papers or reg.available(), 1):  # built once, cached
+                progress.update(f"building the register of {paper} ({i}/{len(papers or reg.available())})")  # noqa: E501
                 reg.register(paper)
-    progress.done()
+            progress.done()
     if args.write:
         changed = reg.write_all(papers)
         if args.json:
@@ -35,19 +43,24 @@ def cmd_errata(args: argparse.Namespace) -> int:
             print("\n".join(changed) or "up to date")
         return 0
     if args.check:
-        stale = reg.check(papers)
+        stale, found = reg.check(papers), reg.findings(papers)
         if args.json:
-            print(to_json({"up_to_date": not stale, "stale": stale}))
-        elif stale:
-            print(f"out of date: {', '.join(stale)} (run: {PROG} errata --write)", file=sys.stderr)
+            ok = not stale and not found
+            print(to_json({"up_to_date": ok, "stale": stale, "findings": found}))
         else:
-            print("up to date")
-        return 1 if stale else 0
+            if stale:
+                print(f"out of date: {', '.join(stale)} (run: {PROG} errata --write)", file=sys.stderr)  # noqa: E501
+            for f in found:
+                print(f, file=sys.stderr)
+            if not stale and not found:
+                print("up to date")
+        return 1 if stale or found else 0
     if args.json:
-        every = papers or reg.available()
-        print(to_json({p: reg.load(p).to_dict(orient="records") for p in every}))
+        from analysis.audit.schema import read_rows
+
+        print(to_json({p: read_rows(reg.register_path(p)) for p in papers or reg.available()}))
         return 0
-    print(reg.render_markdown(papers), end="")
+    print(reg.markdown(papers), end="")
     return 0
 
 
@@ -57,9 +70,11 @@ def add_errata(sub) -> None:
         "errata",
         help="the errata registers: show, --check, --write",
         description="The registers of every paper (data/errata/<paper>.csv) and the README "
-        "block, generated from data/registers/<paper>.toml.",
+        "block, generated from data/registers/<paper>.toml; --check also lists every printed "
+        "record whose check fails and that no cause explains.",
         epilog="examples:\n  python -m analysis errata --check\n"
-        "  python -m analysis errata --paper grabber",
+        "  python -m analysis errata --paper grabber\n"
+        "  python -m analysis errata --paper-file tests/audit/example/paper.toml",
         formatter_class=HelpFormatter,
     )
     g = p.add_mutually_exclusive_group()
@@ -72,9 +87,15 @@ def add_errata(sub) -> None:
     )
     p.add_argument(
         "--json", action="store_true",
-        help="machine-readable: the register rows, or {up_to_date, stale} with --check, "
-        "{changed} with --write",
+        help="machine-readable: the register rows, or {up_to_date, stale, findings} with "
+        "--check, {changed} with --write",
     )  # fmt: skip
+    p.add_argument(
+        "--paper-file", metavar="PAPER.toml",
+        help="audit a paper's data file outside data/ (one being added): every printed record "
+        "checked, each failure no cause explains listed; exit 1 if any",
+    )  # fmt: skip
+    p.add_argument("--register", metavar="REGISTER.toml", help="with --paper-file: its register")
     p.set_defaults(func=cmd_errata)
 
 
