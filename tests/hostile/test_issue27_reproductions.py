@@ -164,3 +164,145 @@ def test_a_report_folder_of_its_own_is_emptied(tmp_path):
     (site / "index.html").write_text("old build")
     report._fresh_dir(site)
     assert sorted(p.name for p in site.iterdir()) == [report._MARKER]
+
+
+# --------------------------------------------------------------------------------------------
+# descriptions rewritten key by key (misspelt and unknown keys; units)
+# --------------------------------------------------------------------------------------------
+SEEDS = ("grabber", "palletizer", "gr1", "picker")
+
+
+def _toml(value) -> str:
+    """``value`` (a parsed TOML document or part of one) as TOML text: every table inline
+    (JSON's string escapes are TOML's)."""
+    if isinstance(value, dict):
+        items = (f"{json.dumps(k)} = {_toml(v)}" for k, v in value.items())
+        return "{ " + ", ".join(items) + " }"
+    if isinstance(value, list):
+        return "[" + ", ".join(_toml(v) for v in value) + "]"
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    return json.dumps(value) if isinstance(value, str) else repr(value)
+
+
+def _write(folder: Path, doc: dict) -> Path:
+    from analysis.paths import data_dir
+
+    path = folder / "arm.toml"
+    path.write_text("\n".join(f"{json.dumps(k)} = {_toml(v)}" for k, v in doc.items()) + "\n",
+                    encoding="utf-8")  # fmt: skip
+    (folder / "table3.csv").write_bytes((data_dir() / "table3.csv").read_bytes())
+    return path
+
+
+def _seed(name: str) -> dict:
+    import tomllib
+
+    from analysis.paths import data_dir
+
+    return tomllib.loads((data_dir() / "arms" / f"{name}.toml").read_text(encoding="utf-8"))
+
+
+def _schema_tables(doc: dict, path: tuple = ()) -> list[tuple]:
+    """The paths of the tables whose keys the schema names (not the tables of names: the
+    parameters, the axes, a ``match``'s columns)."""
+    out = [path]
+    for k, v in doc.items():
+        subs = v if isinstance(v, list) else [v]
+        for i, s in enumerate(subs):
+            if not isinstance(s, dict) or k == "match":
+                continue
+            where = (*path, k, i) if isinstance(v, list) else (*path, k)
+            if k in ("parameters", "axes"):  # a table of names, each a schema table
+                out += [p for n, t in s.items() if isinstance(t, dict)
+                        for p in _schema_tables(t, (*where, n))]  # fmt: skip
+            else:
+                out += _schema_tables(s, where)
+    return out
+
+
+def _at(doc: dict, path: tuple) -> dict:
+    for p in path:
+        doc = doc[p]
+    return doc
+
+
+@st.composite
+def _misspelt(draw):
+    import copy
+
+    doc = copy.deepcopy(_seed(draw(st.sampled_from(SEEDS))))
+    table = _at(doc, draw(st.sampled_from(_schema_tables(doc))))
+    key = draw(st.sampled_from(sorted(table)))
+    kind = draw(st.sampled_from(["extra", "append", "drop", "swap", "case"]))
+    if kind == "extra":
+        new = draw(st.sampled_from(["color", "colour", "comment", "units", "alpha", "limit"]))
+        if new in table:
+            new += "2"
+        table[new] = "red"
+        return doc, new, None
+    i = draw(st.integers(0, max(len(key) - 2, 0)))
+    new = {"append": key + "s", "drop": key[:i] + key[i + 1 :], "case": key.upper(),
+           "swap": key[:i] + key[i + 1 : i + 2] + key[i] + key[i + 2 :]}[kind]  # fmt: skip
+    if new == key or new in table or not new:
+        new = key + "_x"
+    table[new] = table.pop(key)
+    return doc, new, key
+
+
+@settings(max_examples=40, deadline=None)
+@given(case=_misspelt())
+def test_a_misspelt_or_unknown_key_is_refused_naming_it(tmp_path_factory, case):
+    """The issue: ``alpha`` for ``alpha_deg`` dropped the twist from the FK (not from the
+    closed form), ``limit_deg`` for ``limits_deg`` removed a joint stop, ``color = "red"`` was
+    taken. Any key of any table of a seed description misspelt (a letter added, dropped or
+    swapped; upper case) or one added: refused in one line naming the file and the key, and
+    the key it was meant to be where the spelling is close."""
+    doc, new, meant = case
+    path = _write(tmp_path_factory.mktemp("keys"), doc)
+    out = cli("urdf", "--arm", str(path))
+    err = out.stderr.strip()
+    assert out.code == 2 and "\n" not in err and "Traceback" not in err, (new, out.stderr)
+    assert "arm.toml: " in err and f" {new}: unknown key" in err, (new, err)
+    if meant is not None and len(meant) >= 4 and new != meant.upper():
+        assert f"did you mean {meant!r}" in err, (new, meant, err)
+
+
+LENGTH_UNITS = {"mm": 1.0, "cm": 10.0, "m": 1000.0, "in": 25.4}
+"""The lengths a description may give (README), in millimetres: written out here, apart from
+:data:`analysis.validate.LENGTH_UNITS`, which the test holds."""
+
+
+@settings(max_examples=12, deadline=None)
+@given(
+    seed=st.sampled_from(["palletizer", "gr1"]),
+    unit=st.sampled_from(sorted(LENGTH_UNITS)),
+    other=st.sampled_from(["M", "MM", "meter", "mm ", "ft", "km", "um", "", "deg", "px"]),
+)
+def test_a_length_in_any_unit_is_the_same_arm(tmp_path_factory, seed, unit, other):
+    """The issue: ``unit = "m"`` was taken as millimetres (any unit string passed). Every
+    length of a seed written in ``unit`` (value / factor): the same arm (its parameters in
+    mm and its FK equal the seed's); a unit outside the list refused, naming the file, the
+    parameter and the unit."""
+    import copy
+
+    import numpy as np
+
+    from analysis.kinematics.arm import load_arm
+
+    base = load_arm(seed)
+    doc = copy.deepcopy(_seed(seed))
+    for spec in doc["parameters"].values():
+        spec["value"] = spec["value"] / LENGTH_UNITS[unit]
+        spec["unit"] = unit
+    arm = load_arm(str(_write(tmp_path_factory.mktemp("units"), doc)))
+    for k, p in base.description.parameters.items():
+        assert arm.description.parameters[k].value == pytest.approx(p.value, rel=1e-12), k
+    q = base.sample_q(np.random.default_rng(5), 64)
+    assert np.allclose(arm.fk(q), base.fk(q), rtol=0, atol=1e-9)
+    key = sorted(doc["parameters"])[0]
+    doc["parameters"][key]["unit"] = other
+    out = cli("urdf", "--arm", str(_write(tmp_path_factory.mktemp("units"), doc)))
+    err = out.stderr.strip()
+    assert out.code == 2 and "\n" not in err, err
+    assert f"arm.toml: parameters {key} unit: " in err and repr(other) in err, err
