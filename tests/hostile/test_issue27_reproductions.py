@@ -173,23 +173,26 @@ SEEDS = ("grabber", "palletizer", "gr1", "picker")
 
 
 def _toml(value) -> str:
-    """``value`` (a parsed TOML document or part of one) as TOML text: every table inline
-    (JSON's string escapes are TOML's)."""
+    """``value`` (a parsed TOML document or part of one) as TOML text: every table inline."""
+    from hostile.texts import toml_string
+
     if isinstance(value, dict):
-        items = (f"{json.dumps(k)} = {_toml(v)}" for k, v in value.items())
+        items = (f"{toml_string(k)} = {_toml(v)}" for k, v in value.items())
         return "{ " + ", ".join(items) + " }"
     if isinstance(value, list):
         return "[" + ", ".join(_toml(v) for v in value) + "]"
     if isinstance(value, bool):
         return "true" if value else "false"
-    return json.dumps(value) if isinstance(value, str) else repr(value)
+    return toml_string(value) if isinstance(value, str) else repr(value)
 
 
 def _write(folder: Path, doc: dict) -> Path:
     from analysis.paths import data_dir
 
     path = folder / "arm.toml"
-    path.write_text("\n".join(f"{json.dumps(k)} = {_toml(v)}" for k, v in doc.items()) + "\n",
+    from hostile.texts import toml_string
+
+    path.write_text("\n".join(f"{toml_string(k)} = {_toml(v)}" for k, v in doc.items()) + "\n",
                     encoding="utf-8")  # fmt: skip
     (folder / "table3.csv").write_bytes((data_dir() / "table3.csv").read_bytes())
     return path
@@ -306,3 +309,119 @@ def test_a_length_in_any_unit_is_the_same_arm(tmp_path_factory, seed, unit, othe
     err = out.stderr.strip()
     assert out.code == 2 and "\n" not in err, err
     assert f"arm.toml: parameters {key} unit: " in err and repr(other) in err, err
+
+
+def _leaves(doc: dict, path: tuple = ()):
+    """The paths of a description's values that are not tables (nor arrays of tables)."""
+    for k, v in doc.items():
+        p = (*path, k)
+        if isinstance(v, dict):
+            yield from _leaves(v, p)
+        elif isinstance(v, list) and v and all(isinstance(x, dict) for x in v):
+            for i, x in enumerate(v):
+                yield from _leaves(x, (*p, i))
+        else:
+            yield p
+
+
+OTHER_VALUES = ["text", "", 7, -1.5, 0, 1e300, True, [1, 2], [], {"a": 1}, [[[[1]]]]]
+
+
+@st.composite
+def _malformed(draw):
+    import copy
+
+    seed = draw(st.sampled_from(SEEDS))
+    doc = copy.deepcopy(_seed(seed))
+    kind = draw(st.sampled_from(["type", "type", "renamed parameter", "another closed form",
+                                 "no such column"]))  # fmt: skip
+    if kind == "type":  # any value of any table as a value of another type
+        path = draw(st.sampled_from(list(_leaves(doc))))
+        old = _at(doc, path[:-1])[path[-1]]
+        new = draw(st.sampled_from([v for v in OTHER_VALUES if type(v) is not type(old)]))
+        _at(doc, path[:-1])[path[-1]] = new
+        return doc, kind, path
+    if kind == "renamed parameter":
+        params = doc["parameters"]
+        key = draw(st.sampled_from(sorted(params)))
+        params["Renamed"] = params.pop(key)
+        return doc, kind, key
+    if kind == "another closed form":
+        own = doc.get("closed_form")
+        doc["closed_form"] = draw(st.sampled_from([s for s in SEEDS if s != own]))
+        return doc, kind, doc["closed_form"]
+    specs = [t for p in _schema_tables(doc) if "column" in (t := _at(doc, p))]
+    if not specs:
+        return doc, "none", None
+    draw(st.sampled_from(specs))["column"] = "nope_mm"
+    return doc, kind, "nope_mm"
+
+
+@settings(max_examples=40, deadline=None)
+@given(case=_malformed())
+def test_a_malformed_description_is_one_line_never_a_traceback(tmp_path_factory, case):
+    """The issue's five malformed descriptions (a renamed parameter, another arm's closed
+    form, a table without its column, wrong types, deep nesting: the last in
+    test_hostile_descriptions), as classes over the four seeds: any value of any table
+    replaced by a value of another type (text, numbers, a boolean, lists, a table, deep
+    lists), a parameter renamed, another seed's closed form, a column that is not there. The
+    arm loads (and its URDF is written) or is refused in one line naming the file; never a
+    traceback; the last three are always refused."""
+    doc, kind, what = case
+    if kind == "none":
+        return
+    path = _write(tmp_path_factory.mktemp("malformed"), doc)
+    outs = [cli("urdf", "--arm", str(path)), cli("arms", "--arm", str(path), "--json")]
+    for out in outs:
+        assert "Traceback" not in out.stderr and out.code in (0, 2), (kind, what, out.stderr)
+    out = outs[0]
+    if kind != "type":
+        assert out.code == 2, (kind, what, out.stdout[:200])
+    if out.code == 2:
+        err = out.stderr.strip()
+        assert "\n" not in err and "arm.toml: " in err, (kind, what, err)
+        assert "error" in json.loads(outs[1].stdout)[0], outs[1].stdout
+
+
+@st.composite
+def _names_not_identifiers(draw):
+    import copy
+    import re
+
+    from hostile.texts import IEC_IDENTIFIER, hostile_strings
+
+    seed = draw(st.sampled_from(SEEDS))
+    doc = copy.deepcopy(_seed(seed))
+    value = draw(hostile_strings().filter(lambda s: not IEC_IDENTIFIER.fullmatch(s)))
+    where = draw(st.sampled_from(["name", "parameter", "joint"]))
+    if where == "name":
+        doc["name"] = value
+    elif where == "parameter":  # one more parameter, which nothing uses
+        doc["parameters"][value] = {"value": 1.0, "unit": "mm", "status": "assumed",
+                                    "source": "x"}  # fmt: skip
+    else:  # a joint renamed, and the D-H row that names it
+        joint = draw(st.sampled_from(doc["joints"]))
+        for row in doc.get("rows", []):
+            if row.get("joint") == joint["name"]:
+                row["joint"] = value
+        joint["name"] = value
+    assert not re.fullmatch(r"[A-Za-z](?:_?[A-Za-z0-9])*", value)
+    return doc, where, value
+
+
+@settings(max_examples=30, deadline=None)
+@given(case=_names_not_identifiers())
+def test_a_name_that_reaches_an_output_is_an_identifier_or_refused(tmp_path_factory, case):
+    """The issue: a line break in a description's ``name`` or in a parameter key became
+    program code. A name, a parameter (one more, used by nothing) or a joint (and the row
+    naming it) given a hostile string that is no identifier: refused at load, one line naming
+    the file and the key and the identifier rule; the printers' own escaping
+    (test_hostile_text) is the second line of defence, not the first."""
+    doc, where, value = case
+    path = _write(tmp_path_factory.mktemp("names"), doc)
+    out = cli("stl", "--dialect", "st", "--no-motion", "--arm", str(path), "-o",
+              str(path.with_suffix(".st")))  # fmt: skip
+    err = out.stderr.strip()
+    assert out.code == 2 and "\n" not in err and "Traceback" not in err, (where, value, err)
+    assert "arm.toml: " in err and "identifier" in err, (where, value, err)
+    assert not path.with_suffix(".st").exists()
