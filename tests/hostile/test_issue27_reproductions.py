@@ -425,3 +425,39 @@ def test_a_name_that_reaches_an_output_is_an_identifier_or_refused(tmp_path_fact
     assert out.code == 2 and "\n" not in err and "Traceback" not in err, (where, value, err)
     assert "arm.toml: " in err and "identifier" in err, (where, value, err)
     assert not path.with_suffix(".st").exists()
+
+
+@settings(max_examples=16, deadline=None)
+@given(
+    where=st.sampled_from(["L1", "L2", "L3", "pulses_per_rev"]),
+    how=st.sampled_from(["absolute", "dotdot", "symlink out", "subfolder", "etc"]),
+)
+def test_a_table_outside_its_folders_is_refused_by_the_rule(tmp_path_factory, where, how):
+    """The issue: ``table = "/etc/passwd"`` read any file (and quoted it). A table named by
+    an absolute path, with ``..``, in a subfolder or through a symbolic link out of the
+    description's folder is refused by the rule, before it is read: here the file outside
+    is a valid Table 3 (read, the arm would load), so only the rule refuses it."""
+    import copy
+
+    from analysis.paths import data_dir
+
+    doc = copy.deepcopy(_seed("grabber"))
+    folder = tmp_path_factory.mktemp("tables")
+    outside = tmp_path_factory.mktemp("outside")
+    (outside / "table3.csv").write_bytes((data_dir() / "table3.csv").read_bytes())
+    (folder / "sub").mkdir()
+    (folder / "sub" / "table3.csv").write_bytes((data_dir() / "table3.csv").read_bytes())
+    name = {"absolute": str(outside / "table3.csv"), "etc": "/etc/passwd",
+            "dotdot": f"../{outside.name}/table3.csv", "subfolder": "sub/table3.csv",
+            "symlink out": "t.csv"}[how]  # fmt: skip
+    if how == "symlink out":
+        (folder / "t.csv").symlink_to(outside / "table3.csv")
+    spec = doc["joints"][0]["pulses_per_rev"] if where == "pulses_per_rev" else (
+        doc["parameters"][where])  # fmt: skip
+    spec["table"] = name
+    out = cli("urdf", "--arm", str(_write(folder, doc)))
+    err = out.stderr.strip()
+    assert out.code == 2 and "\n" not in err, (how, err)
+    assert "arm.toml: " in err and ("is not a plain file name" in err or (
+        "resolves (through a symbolic link) outside" in err)), (how, err)  # fmt: skip
+    assert "root:" not in err
