@@ -196,12 +196,13 @@ def _manifestation(cause: dict, m: dict, ctx, check, by_ref=None) -> Manifestati
     }  # fmt: skip
     try:
         evidence = m.get("evidence", "").format_map(ns)
+        rests_on = tuple(t.format_map(ns) for t in mm.rests_on)
     except (AttributeError, KeyError, IndexError, TypeError, ValueError) as exc:
         raise ValueError(
             f"{mm.id}: evidence template needs {exc!r}; printed check gave {ns['printed']}, "
             f"corrected {ns['corrected']}"
         ) from None
-    return _with(mm, evidence=evidence)
+    return _with(mm, evidence=evidence, rests_on=rests_on)
 
 
 def _with(m: Manifestation, **changes) -> Manifestation:
@@ -303,15 +304,18 @@ def build(ctx, raw: dict) -> Register:
         if ms:  # a cause's template may name its first manifestation's checks
             ns.update(printed=ms[0].result(ms[0].checked), corrected=ms[0].result(ms[0].corrected))
         try:
-            title, evidence = (c[k].format_map(ns) if k in c else "" for k in ("title", "evidence"))
+            title, evidence, consequence = (c[k].format_map(ns) if k in c else ""
+                                            for k in ("title", "evidence", "consequence"))
+            rests_on = tuple(t.format_map(ns) for t in c.get("rests_on", ()))
         except (AttributeError, KeyError, IndexError, TypeError, ValueError) as exc:
             raise ValueError(f"{c['id']}: evidence template needs {exc!r}; {ns}") from None
         causes.append(
             Cause(
                 id=c["id"], title=title, status=c["status"], kind=c["kind"],
                 evidence=evidence, manifestations=tuple(ms),
-                severity=c.get("severity", ""), consequence=c.get("consequence", ""),
-                rests_on=tuple(c.get("rests_on", ())), extra=_also(c, ctx, check),
+                severity=c.get("severity", ""), consequence=consequence,
+                rests_on=rests_on, extra=_also(c, ctx, check),
+                decided_by=tuple(c.get("decided_by", ())),
             )
         )
     summary: dict = {}

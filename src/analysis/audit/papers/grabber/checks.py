@@ -126,6 +126,7 @@ B.domain("listings")(lambda: {k: np.array([v]) for k, v in _gs().census().items(
 B.domain("hmi_targets")(lambda: _gs().hmi_targets())
 B.domain("table4_rows")(lambda: _gs().table4_rows())
 B.fact("executed")(lambda: _gs().executed())
+B.fact("movd")(lambda: _gs().movd_damage())
 for _name in ("workspace", "stl_constants", "random_poses", "printed_data"):
     B.domain(_name)(lambda n=_name: getattr(_gs(), n.replace("-", "_"))())
 B.domain("z600_line")(lambda: _z600())
