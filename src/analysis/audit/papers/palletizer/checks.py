@@ -222,6 +222,20 @@ def _citations():
     return {"dh_year_matches": np.array([year in paper.record("references.2").text])}
 
 
+@B.domain("own_test_citations")
+def _own_test():
+    """Sec. 5 cites [9] for the coding test of this paper's method (C++ on Linux): can a work of
+    [9]'s year report it (not before the paper's own year), in the language the text names?"""
+    import re
+
+    paper = context("palletizer").paper
+    own = int(re.search(r"(\d{4})", paper.title)[1])
+    ref = paper.record("references.9").text
+    year = int(re.findall(r"(\d{4})", ref)[-1])
+    return {"cited_year": np.array([year]), "paper_year": np.array([own]),
+            "can_report": np.array([year >= own]), "names_cpp": np.array(["C++" in ref])}
+
+
 # --- predicates and facts ---------------------------------------------------------------------
 @B.predicate()
 def eq11_label(text: str, ctx):
@@ -265,3 +279,9 @@ def quadrant_miss():
     """The printed chain's largest miss [mm] over the four stand-in quadrant targets (the best
     reading of H and of eq. 1's arctan; assumed lengths)."""
     return float(np.max(context("palletizer").domain("quadrant_targets")["miss_printed_mm"]))
+
+
+@B.fact()
+def own_test():
+    d = {k: int(v[0]) for k, v in _own_test().items()}
+    return {**d, "gap": d["paper_year"] - d["cited_year"]}
