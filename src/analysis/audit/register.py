@@ -446,8 +446,15 @@ def generated(papers=None) -> dict[Path, str]:
     return out
 
 
+_KEEP = 32
+"""Answers kept per data folder (one per selection of papers and state of the inputs)."""
+
+
 def _cache_dir() -> Path:
-    return build_dir() / "errata-cache"
+    """The answers' cache, one per data folder (a test's copy of data/ keeps its own, so that
+    what changed is said against the same folder's last build)."""
+    key = hashlib.sha256(str(data_dir().resolve()).encode()).hexdigest()[:12]
+    return build_dir() / "errata-cache" / key
 
 
 def _audited(papers) -> list[str]:
@@ -472,6 +479,9 @@ def _answers(papers, inputs: dict[str, str], files: dict[Path, str] | None = Non
     key = f"{_inputs_hash(inputs)}-{'-'.join(papers)}"
     (d / f"{key}.json").write_text(json.dumps(out, ensure_ascii=False), encoding="utf-8")
     (d / "inputs.json").write_text(json.dumps(inputs), encoding="utf-8")
+    stored = sorted((p for p in d.glob("*-*.json")), key=lambda p: p.stat().st_mtime)
+    for old in stored[:-_KEEP]:  # bounded: the newest answers only
+        old.unlink(missing_ok=True)
     return out
 
 
