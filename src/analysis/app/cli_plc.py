@@ -221,20 +221,33 @@ def run(
 
 
 def _read_program(args: argparse.Namespace) -> tuple[str, str]:
+    """The program text and its name: a regular file or standard input, read at most the
+    dialect's limit (:attr:`~analysis.plc.printer.PlcPrinter.max_program_bytes`, enforced
+    while reading: a device, a FIFO or an endless stream never takes more), decoded as
+    UTF-8 or else ANSI (cp1252)."""
+    from analysis.safe_io import read_bytes
+
+    limit = printer_class(args.dialect).max_program_bytes
     if str(args.program) == "-":
-        return sys.stdin.read(), "<stdin>"
+        stream = getattr(sys.stdin, "buffer", sys.stdin)
+        raw = stream.read(limit + 1)
+        raw = raw.encode("utf-8") if isinstance(raw, str) else raw
+        if len(raw) > limit:
+            raise ValueError(f"the program on standard input is longer than {limit:,} bytes, "
+                             "the most read of one")  # fmt: skip
+        return _decode(raw, "standard input"), "<stdin>"
     path = Path(args.program)
-    try:
-        raw = path.read_bytes()
-    except OSError as exc:
-        raise ValueError(f"cannot read {path}: {exc.strerror}") from None
+    return _decode(read_bytes(path, limit, "program"), str(path)), path.name
+
+
+def _decode(raw: bytes, path: str) -> str:
     try:
         text = raw.decode("utf-8")
     except UnicodeDecodeError:
         text = raw.decode("cp1252", errors="strict") if _cp1252(raw) else None
         if text is None:
             raise ValueError(f"{path}: neither UTF-8 nor ANSI (cp1252) text") from None
-    return text, path.name
+    return text
 
 
 def _cmd_stl_run(args: argparse.Namespace) -> int:
@@ -383,7 +396,9 @@ def add_stl_run(sub, parser_class=None, formatter_class=None) -> None:
         "(TYPE: BOOL, BYTE, INT, DINT, REAL, WORD, DWORD); repeatable",
     )
     p.add_argument("--scans", type=int, default=1, help="scans to run (default 1)")
-    p.add_argument("--cpu", help="S7-200 CPU (CPU 221, 222, 224, 224XP, 226; default CPU 224)")
+    p.add_argument("--cpu", help="the target CPU, whose memory the program gets: S7-200 (CPU 221, "
+                   "222, 224, 224XP, 226; default CPU 224) or S7-300 (CPU 312, 314, 315-2 DP, "
+                   "317-2 DP; default CPU 315-2 DP)")  # fmt: skip
     p.add_argument("--json", action="store_true", help='print {"values": {...}}')
     g = p.add_argument_group("ST and PLCopen XML on the ST engine (--dialect st|plcopen-xml)")
     g.add_argument("--scenario", metavar="SCENARIO.csv",

@@ -97,6 +97,8 @@ class PlcPrinter(Printer):
     addresses: ClassVar[bool] = False
     rounding: ClassVar[str] = "half-away"
     engine: ClassVar[str | None] = None
+    max_program_bytes: ClassVar[int] = 1024 * 1024
+    """The largest program text its engine is given (``stl-run``, enforced while reading)."""
     trig_reason: ClassVar[str] = ""
     """Why the dialect cannot print other trigonometry (named when ``--trig`` asks for it)."""
 

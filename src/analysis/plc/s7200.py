@@ -24,6 +24,7 @@ from analysis.plc.instr import CMP, Program, Subroutine, flatten
 from analysis.plc.mapdoc import s7_document, startup_values
 from analysis.plc.memmap import MemoryMap, default_map
 from analysis.plc.printer import Generated, Options, PlcPrinter, fmt_real
+from analysis.plc.stl_eval.syntax import MAX_PROGRAM_CHARS
 
 __all__ = ["NAN_MASK", "S7200Printer", "allocate"]
 
@@ -47,6 +48,7 @@ class S7200Printer(PlcPrinter):
     trigs = ("subroutine",)
     addresses = True
     engine = "the project's S7-200 evaluator"
+    max_program_bytes = MAX_PROGRAM_CHARS  # the evaluator's own limit
     target = "the S7-200"
     newline = "\r\n"
     exp_char = "E"
