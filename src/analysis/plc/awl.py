@@ -106,7 +106,7 @@ class AwlPrinter(S7200Printer):
             return
         self.lines += [
             "ORGANIZATION_BLOCK OB 100",
-            "TITLE = startup: the paper's example target (Fig. 3)",
+            "TITLE = " + program.cite("startup: the paper's example target (Fig. 3)"),
             "BEGIN",
         ]
         for name, v in zip(program.inputs, self.startup_target, strict=True):
@@ -209,7 +209,6 @@ class AwlPrinter(S7200Printer):
         from analysis.plc.engines import AwlSession
 
         return AwlSession(text, cpu=cpu, source=source)
-
 
     @classmethod
     def awlsim_source(cls, text: str) -> str:

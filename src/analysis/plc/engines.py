@@ -20,7 +20,6 @@ __all__ = ["BUDGET_S", "WATCHDOG_S", "AwlSession", "S7200Session"]
 S7200_AREAS = "SM|V|M|I|Q|S"
 
 
-
 class S7200Session:
     """An S7-200 program on the evaluator (:class:`analysis.plc.stl_eval.S7200`)."""
 

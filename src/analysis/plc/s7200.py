@@ -167,7 +167,11 @@ class S7200Printer(PlcPrinter):
         self.block(None)
         self.lines += ["ORGANIZATION_BLOCK MAIN:OB1", *self.header(program), "BEGIN"]
         if self.startup_target is not None:
-            self.network("data acquisition (Fig. 3): example target on the first scan, as REALs")
+            self.network(
+                program.cite(
+                    "data acquisition (Fig. 3): example target on the first scan, as REALs"
+                )
+            )
             self.logic("LD", "SM0.1")
             self.power = True
             for name, v in zip(program.inputs, self.startup_target, strict=True):

@@ -11,15 +11,15 @@ from __future__ import annotations
 
 import json
 import re
-from xml.sax.saxutils import escape, quoteattr
+from xml.sax.saxutils import quoteattr
 
 from analysis.plc.machine.program import STEPS, machine_name, machine_text
 from analysis.plc.machine.spec import MACHINE_INPUTS, MACHINE_OUTPUTS, machine_spec
 from analysis.plc.machine.tags import signals
+from analysis.plc.plcopen import formatted_text
 
 __all__ = ["machine_map", "program_pou_xml", "with_machine"]
 
-_XHTML = "http://www.w3.org/1999/xhtml"
 _ELEMENTARY = {"BOOL", "INT", "DINT", "REAL", "LREAL", "TIME"}
 
 
@@ -104,8 +104,7 @@ def program_pou_xml(st_text: str, program: str) -> str:
     body = "\n".join(ln[4:] if ln.startswith("    ") else ln for ln in body.split("\n"))
     return (
         f'<pou name={quoteattr(program)} pouType="program"><interface><localVars>{decls}'
-        f"</localVars></interface><body><ST><xhtml xmlns={quoteattr(_XHTML)}>{escape(body)}"
-        "</xhtml></ST></body></pou>\n"
+        f"</localVars></interface><body><ST>{formatted_text(body)}</ST></body></pou>\n"
     )
 
 
