@@ -62,8 +62,9 @@ AWLSIM_MEMO := $(CURDIR)/build/awlsim-memo
 ST_ENGINE := $(VENV)/bin/analysis-st-run
 ST_MACHINE := $(VENV)/bin/analysis-st-machine
 ST_SOURCES := tools/st-engine/requirements.txt tools/st-engine/st_run.cpp tools/st-engine/st_machine.cpp
+KIN_ORACLE := $(VENV)/bin/analysis-kin-oracle
 
-st-engine: $(ST_ENGINE)
+st-engine: $(ST_ENGINE) $(KIN_ORACLE)
 
 # make test builds the engine where g++ is (CI: .ci/run installs it); on a machine with only the
 # README's prerequisites the ST engine tests are skipped, saying why (analysis.plc.st_engine).
@@ -84,6 +85,14 @@ $(ST_ENGINE): $(ST_SOURCES) | $(STAMP)
 	  -DST_RUN_KEY='"'$$(cat $(ST_SOURCES) | sha256sum | cut -c1-16)'"' \
 	  -Ibuild/st-engine/pyplcopen-0.21.0/core tools/st-engine/st_machine.cpp -o $(ST_MACHINE).tmp
 	mv $(ST_MACHINE).tmp $(ST_MACHINE)
+	mv $@.tmp $@
+
+# pyplcopen's own kinematics (core/kin of the same sdist) as an oracle of the derived closed
+# forms (analysis.kinematics.derive.plcopen_oracle): tools/st-engine/kin_oracle.cpp, built beside
+# the engine from the sources it unpacked.
+$(KIN_ORACLE): tools/st-engine/kin_oracle.cpp $(ST_ENGINE)
+	g++ -std=c++17 -O2 -ffp-contract=off -fno-fast-math \
+	  -Ibuild/st-engine/pyplcopen-0.21.0/core tools/st-engine/kin_oracle.cpp -o $@.tmp
 	mv $@.tmp $@
 
 test: $(STAMP) st-engine-if-gxx

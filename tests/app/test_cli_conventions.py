@@ -94,7 +94,7 @@ def test_fk_hints_at_radians(capsys):
     code, out, err = run(capsys, "fk", "0.785", "0.178", "-2.707")
     assert code == 0 and "note:" in err and "(44.98, 10.20, -155.10)" in err
     code, out, err = run(capsys, "fk", "0.785", "0.178", "-2.707", "--json")
-    assert code == 0 and "note" not in out and json.loads(out)["theta_deg"][0] == 0.785
+    assert code == 0 and "note" not in out and json.loads(out)["joint_values"][0] == 0.785
     code, _, err = run(capsys, "fk", "45", "10.21", "-155.13")
     assert code == 0 and err == ""
 

@@ -285,16 +285,17 @@ def edge_targets(arm, rng: np.random.Generator, deltas) -> np.ndarray:
     p0 = arm.target(q)
     shells = p0.copy()
     h = 1e-4
+    mm = position_columns(arm)
     for _ in range(2):
-        g = np.zeros((n, 3))
-        for k in range(3):
+        g = np.zeros((n, len(mm)))
+        for k, col in enumerate(mm):
             e = np.zeros(p0.shape[-1])
-            e[k] = h
+            e[col] = h
             g[:, k] = (arm.solve(shells + e, limits=False).outside_mm
                        - arm.solve(shells - e, limits=False).outside_mm) / (2 * h)  # fmt: skip
         g /= np.maximum(np.linalg.norm(g, axis=-1, keepdims=True), 1e-300)
         o = arm.solve(shells, limits=False).outside_mm
-        shells[:, :3] += (deltas - o)[:, None] * g
+        shells[:, mm] += (deltas - o)[:, None] * g
     stops = q.copy()
     lim = np.array([lim if lim is not None else (-math.pi, math.pi) for lim in arm.limits])
     j = rng.integers(0, arm.n_joints, n)
@@ -303,6 +304,11 @@ def edge_targets(arm, rng: np.random.Generator, deltas) -> np.ndarray:
     axis = p0.copy()
     axis[:, 0], axis[:, 1] = deltas, 0.0
     return np.concatenate([shells, arm.target(stops), axis])
+
+
+def position_columns(arm) -> list[int]:
+    """The target's coordinates [mm] (a planar arm has two, a pose or a turn adds angles)."""
+    return [i for i, u in enumerate(arm.input_units) if u == "mm"]
 
 
 def projection_mm(arm) -> float:
@@ -336,8 +342,9 @@ def check_edges(arm, p, tol=EDGE_TOL, compiled=True) -> dict:
         if not ok.any():
             continue
         idx, k = np.nonzero(ok)
-        reached = arm.target(sol.theta[idx, k])[:, :3]
-        err = np.linalg.norm(reached - p[idx, :3], axis=-1)
+        mm = position_columns(arm)
+        reached = arm.target(sol.theta[idx, k])[:, mm]
+        err = np.linalg.norm(reached - p[idx][:, mm], axis=-1)
         solutions += len(err)
         i = int(err.argmax())
         where = (p[idx[i]].tolist(), sol.branches[k[i]])

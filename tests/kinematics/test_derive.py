@@ -179,9 +179,11 @@ def test_random_arms_backends_agree(user_arms, rng):
 
 # --------------------------------------------------------------------------- refusals
 OUTSIDE = {
-    "six joints": ([(90, 0, 300, 0)] + [(90, 50, 0, 0)] * 5, "6 joint"),
+    "seven joints": ([(90, 0, 300, 0)] + [(90, 50, 0, 0)] * 6, "7 joint"),
+    "six joints, 2 across 3": ([(90, 0, 300, 0)] + [(90, 50, 0, 0)] * 5, "2 and 3 of the six"),
     "axes 2, 3 not parallel": ([(90, 0, 300, 0), (35, 250, 0, 0), (0, 200, 0, 0)], "not parallel"),
-    "planar": ([(0, 100, 0, 0), (0, 250, 0, 0), (0, 200, 0, 0)], "joints 1 and 2 are parallel"),
+    "planar, then across": ([(0, 100, 0, 0), (0, 250, 0, 0), (90, 200, 0, 0), (0, 100, 0, 0)],
+                            "joints 1 and 2 are parallel"),
     "two joints": ([(90, 0, 300, 0), (0, 250, 0, 0)], "2 joint"),
     "4R without keep": ([(90, 0, 300, 0), (0, 250, 0, 0), (0, 200, 0, 0), (90, 50, 0, 0)], "keep"),
 }  # fmt: skip

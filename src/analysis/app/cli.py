@@ -176,7 +176,6 @@ def _mkdir_flag(p: argparse.ArgumentParser) -> None:
 
 # --- fk --------------------------------------------------------------------------------------
 def _cmd_fk(args: argparse.Namespace) -> int:
-    import numpy as np
 
     from analysis.kinematics.arm import MAX_JOINT_DEG
 
@@ -204,19 +203,10 @@ def _cmd_fk(args: argparse.Namespace) -> int:
         hint = _radians_hint(args.angles)
         if hint:
             print(f"{PROG} fk: note: {hint}", file=sys.stderr)
-    p = arm.fk(arm.joints_from_user(args.angles))
-    p = np.where(p == 0, 0.0, p)  # no "-0.000"
-    if set(units) == {"deg"}:
-        doc = {"arm": arm.name, "theta_deg": list(args.angles)}
-        given = f"theta = ({', '.join(f'{t:.2f}' for t in args.angles)}) deg"
-    else:  # prismatic joints too: each value in its own unit
-        doc = {"arm": arm.name, "joint_values": list(args.angles), "joint_units": list(units)}
-        given = "q = (" + ", ".join(
-            f"{n} {t:.2f} {u}" for n, t, u in zip(arm.joint_names, args.angles, units, strict=True)
-        ) + ")"  # fmt: skip
-    doc["position_mm"] = p.tolist()
-    text = f"{given} -> P = ({', '.join(f'{v:.3f}' for v in p)}) mm"
-    _emit(args, doc, text)
+    from analysis.kinematics.pose import fk_document, fk_sentence
+
+    doc = fk_document(arm, args.angles)  # the full pose: the explorer's FK line shows it too
+    _emit(args, doc, fk_sentence(doc))
     return 0
 
 
@@ -578,14 +568,19 @@ def _add_fk(sub) -> None:
     """``fk``: joint angles -> end point."""
     p = sub.add_parser(
         "fk",
-        help="joint angles (deg) -> end point (mm)",
-        description="Forward kinematics: the end point of the chain (the paper's eq. 2).",
-        epilog="example:\n  python -m analysis fk 45 10.21 -155.13 --json",
+        help="joint values (deg | mm) -> the tool's full pose",
+        description="Forward kinematics from the arm's chain (its D-H rows, any serial chain; "
+        "a closed chain's closed form): the tool point [mm] and orientation (RPY [deg] in the "
+        "convention ik takes; --json adds the rotation matrix), every joint (a closed "
+        "chain's passive ones too: joint_states) and the target ik takes for this pose.",
+        epilog="examples:\n  python -m analysis fk 45 10.21 -155.13 --json\n"
+        "  python -m analysis fk 30 40 -60 -70 10 --arm gr1",
         formatter_class=_Help,
     )
     p.add_argument(
-        "angles", nargs="+", type=_finite, metavar="DEG",
-        help="joint angles [deg] (a note on stderr when they look like radians)",
+        "angles", nargs="+", type=_finite, metavar="VALUE",
+        help="joint values [deg, or mm for a prismatic joint] (a note on stderr when angles "
+        "look like radians)",
     )  # fmt: skip
     p.add_argument("--json", action="store_true", help="machine-readable output")
     _common(p)

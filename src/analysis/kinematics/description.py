@@ -64,6 +64,7 @@ from analysis.kinematics import schema
 from analysis.kinematics.dh import DHRow, DHTable
 from analysis.kinematics.schema import IDENTIFIER, DescriptionError, Reader, identifier_problem
 from analysis.kinematics.tables import table_path, table_value
+from analysis.kinematics.urdf_in import description_text as urdf_description_text
 from analysis.paths import data_dir
 from analysis.safe_io import read_text
 
@@ -295,12 +296,14 @@ def _resolve(v, values: dict, arm: str):
 def description_path(name: str | Path) -> Path:
     """The file of arm ``name``: ``data/arms/<name>.toml`` for a name, or ``name`` itself
     for the path of a description file (anything ending in ``.toml`` or holding a folder
-    separator), anywhere on disk.
+    separator) or of a URDF (``.urdf``: its serial chain, :mod:`analysis.kinematics.urdf_in`),
+    anywhere on disk.
 
     Raises ValueError naming the arms that exist, or the file that does not.
     """
     text = str(name)
-    if isinstance(name, Path) or text.endswith(".toml") or "/" in text or "\\" in text:
+    urdf = text.lower().endswith(".urdf")  # a URDF's chain (analysis.kinematics.urdf_in)
+    if isinstance(name, Path) or text.endswith(".toml") or urdf or "/" in text or "\\" in text:
         path = Path(text).expanduser()
         if not path.exists():
             raise ValueError(f"no arm description {text!r}: no such file")
@@ -354,7 +357,10 @@ def _load(name: str, tables: tuple, stamp: tuple) -> ArmDescription:
     """
     path = Path(name)
     file = path.name
-    text = read_text(path, MAX_DESCRIPTION_BYTES, "arm description")
+    if path.suffix.lower() == ".urdf":  # a URDF's serial chain, converted (bounded, no DTD)
+        text = urdf_description_text(path)
+    else:
+        text = read_text(path, MAX_DESCRIPTION_BYTES, "arm description")
     try:
         d = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:

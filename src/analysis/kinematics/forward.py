@@ -20,8 +20,10 @@ __all__ = ["chain_points"]
 
 def chain_points(m, desc, cf, P, qs: Sequence, table: DHTable | None = None) -> dict:
     """The arm's forward kinematics in namespace ``m``: ``frames`` (points ``(x, y, z)``,
-    the tool point last), ``rotation`` (the tool's 3x3 rows) and ``valid`` (a condition:
-    the joint values have a pose), for joint values ``qs`` (one ``m`` value per joint).
+    the tool point last), ``rotation`` (the tool's 3x3 rows), ``valid`` (a condition: the
+    joint values have a pose) and, for a closed chain whose closed form names them,
+    ``joints`` (every joint's value, the passive ones too), for joint values ``qs`` (one
+    ``m`` value per joint).
 
     Parameters
     ----------
@@ -34,7 +36,7 @@ def chain_points(m, desc, cf, P, qs: Sequence, table: DHTable | None = None) -> 
     if not desc.has_rows:
         out = cf.fk(m, list(qs), P)
         return {"frames": list(out["frames"]), "rotation": out.get("rotation"),
-                "valid": out.get("valid", True)}  # fmt: skip
+                "valid": out.get("valid", True), "joints": out.get("joints")}  # fmt: skip
     table = table if table is not None else desc.dh_table(dict(P))
     Ts = chain_transforms(m, table, list(qs))
     frames = [(0.0, 0.0, 0.0), *((T[0][3], T[1][3], T[2][3]) for T in Ts)]

@@ -48,6 +48,7 @@ from analysis.kinematics.dh import DHTable
 from analysis.kinematics.forward import chain_points
 from analysis.kinematics.ops import DualOps, numpy_ops
 from analysis.kinematics.params import Params
+from analysis.kinematics.pose import Pose, pose
 from analysis.kinematics.pulses import angles_to_pulses, pulse_values, pulses_to_angles
 from analysis.kinematics.rpy import rpy_from_matrix
 from analysis.kinematics.sampling import sample_q
@@ -368,6 +369,12 @@ class Arm:
             T[..., i, 3] = v
         T[..., 3, 3] = 1.0
         return T
+
+    def pose(self, q: npt.ArrayLike) -> Pose:
+        """The full pose at joint values (..., n) [rad | mm]: tool point, rotation, RPY in
+        the convention ``ik`` takes and every joint, a closed chain's passive ones too
+        (:func:`analysis.kinematics.pose.pose`)."""
+        return pose(self, q)
 
     def target(self, q: npt.ArrayLike) -> npt.NDArray[np.float64]:
         """The closed form's inputs (..., k) that joint values (..., n) reach, in

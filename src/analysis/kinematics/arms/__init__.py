@@ -26,7 +26,9 @@ and, optionally:
 ``fk(m, q, P)``     forward kinematics of an arm that is not a D-H chain (a closed chain:
                     the picker): ``{"frames": [point, ...], "rotation": 3x3 rows,
                     "valid": condition}`` with the tool point last (points in drawing
-                    order); without it the description's D-H rows are the FK
+                    order), and optionally ``"joints"`` {name: value}: every joint of the
+                    chain, the passive ones too (revolute, rad); without ``fk`` the
+                    description's D-H rows are the FK
 ``fk_refusal(q, P)``  the reason one configuration (n,) has no pose, where ``fk``'s
                     ``"valid"`` condition is false (the picker's sliders where link 5
                     cannot close)

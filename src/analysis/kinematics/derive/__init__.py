@@ -76,6 +76,7 @@ import json
 from analysis.kinematics.derive.chain import home
 from analysis.kinematics.derive.closed_form import DerivedClosedForm
 from analysis.kinematics.derive.families import FAMILIES, NotDerivable, classify
+from analysis.kinematics.derive.forms import build
 from analysis.kinematics.ops import numpy_ops
 
 __all__ = ["DERIVED", "FAMILIES", "DerivedClosedForm", "NotDerivable", "derive"]
@@ -101,11 +102,8 @@ def derive(desc) -> DerivedClosedForm:
     The loader (:func:`analysis.kinematics.loader.load_arm`) calls it once per description
     version and keeps the result in the arm: there is no registry to look it up in."""
     table = desc.dh_table()
-    if any(r.get("kind", "revolute") not in ("revolute", "fixed") for r in desc.rows):
-        raise NotDerivable("the chain has a joint that is neither revolute nor fixed")
     h = home(numpy_ops, table)
-    structure = classify(h.axes, h.rotation, desc.derive)
-    cf = DerivedClosedForm("derived:probe", desc, structure)
-    flags = (cf.kappa, cf.bend_zero, cf.lateral_zero, cf.h_zero)
-    cf.__name__ = f"{DERIVED}:{structure.family}-{_digest(_key(desc), flags)}"
+    structure = classify(h.axes, h.rotation, desc.derive, h.kinds)
+    cf = build("derived:probe", desc, structure)
+    cf.__name__ = f"{DERIVED}:{structure.family}-{_digest(_key(desc), cf.flags)}"
     return cf

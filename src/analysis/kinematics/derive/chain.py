@@ -14,6 +14,10 @@ description (``theta_i = q_i + theta_offset_i``). The axes and the home rotation
 the twists and offsets only, which are numbers of the table: they are plain floats here
 (exact at multiples of 90 deg). The points and the home position are values of the
 namespace ``m`` of the lengths (floats, traced parameters or SymPy symbols).
+
+A prismatic joint moves along the same z axis a revolute one would turn about (its ``d``
+grows with the joint value), so its axis is read off the same frame; :attr:`Home.kinds` says
+which joint is which.
 """
 
 from __future__ import annotations
@@ -34,7 +38,9 @@ class Home:
     Attributes
     ----------
     axes : tuple of ndarray, shape (3,)
-        Unit direction of each joint axis in the base frame (plain floats).
+        Unit direction of each joint axis in the base frame (plain floats): the axis a
+        revolute joint turns about (positive angles by the right-hand rule), the direction a
+        prismatic joint moves along (positive values).
     points : tuple of 3-tuples
         A point on each axis [mm] (values of ``m``): the origin of the D-H frame it is the
         z axis of.
@@ -48,16 +54,19 @@ class Home:
     points: tuple
     rotation: np.ndarray
     position: tuple
+    kinds: tuple = ()
+    """``"revolute"`` or ``"prismatic"`` per joint, in chain order."""
 
 
 def home(m, table: DHTable) -> Home:
     """The home geometry of ``table`` (whose lengths are values of ``m``)."""
     frames = chain_transforms(m, table)
     identity = [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0]]
-    axes, points = [], []
+    axes, points, kinds = [], [], []
     for k, row in enumerate(table.rows):
-        if row.kind != "revolute":
+        if row.kind == "fixed":
             continue
+        kinds.append(row.kind)
         if table.convention == "standard":
             T = frames[k - 1] if k else identity
         else:
@@ -66,4 +75,4 @@ def home(m, table: DHTable) -> Home:
         points.append((T[0][3], T[1][3], T[2][3]))
     T = frames[-1]
     R = np.array([[float(T[i][j]) for j in range(3)] for i in range(3)])
-    return Home(tuple(axes), tuple(points), R, (T[0][3], T[1][3], T[2][3]))
+    return Home(tuple(axes), tuple(points), R, (T[0][3], T[1][3], T[2][3]), tuple(kinds))

@@ -6,16 +6,30 @@ the decisions of the description's ``[derive]`` table) or raises :class:`NotDeri
 with the reason. The families (the only ones derived; everything else keeps its
 hand-written closed form):
 
-============  =====================================================================  =====
-family        joints                                                                 input
-============  =====================================================================  =====
-``3R``        a waist (axis 1) and two parallel axes not parallel to it (2 || 3):    point
-              seed 000's grabber with any D-H lengths, offsets and twists
-``4R-kept``   a waist and three parallel axes (2 || 3 || 4), the tool holding one    point
-              orientation about them (``keep``): seed 001's palletizer family
-``5R``        a waist, three parallel axes and a wrist roll across them              pose
-              (2 || 3 || 4, 5 not parallel to 2): seed 004's GR-1 family
-============  =====================================================================  =====
+- ``2R-planar``: two parallel revolute axes, a planar arm; input: the point's two coordinates
+  across the axes (which must lie along a base axis).
+- ``3R-planar``: three parallel revolute axes along the base z axis; the point's ``px, py``
+  and the tool's turn ``alpha``.
+- ``3R``: a waist (axis 1) and two parallel axes not parallel to it (2 || 3), a point: seed
+  000's grabber with any D-H lengths, offsets and twists.
+- ``4R-kept``: a waist and three parallel axes (2 || 3 || 4), the tool holding one
+  orientation about them (``keep``), a point: seed 001's palletizer family.
+- ``5R``: a waist, three parallel axes and a wrist roll across them (2 || 3 || 4, 5 not
+  parallel to 2), a pose: seed 004's GR-1 family.
+- ``SCARA``: two or three parallel revolute axes and a prismatic one along them, in any order
+  (the Adept Cobra's R R P R), a point; with three revolute axes (along the base z axis) and
+  ``alpha``, the tool's turn.
+- ``6R-wrist``: a waist, two parallel axes and a spherical wrist (axes 4, 5, 6 through one
+  point: Pieper's condition), a pose: the PUMA 560, KUKA, ABB, Fanuc arms.
+- ``6R-parallel``: a waist, three parallel axes (2 || 3 || 4), axis 5 across them and axis 6
+  across axis 5 and meeting it, a pose: the Universal Robots family.
+- ``gantry``: three prismatic axes spanning space, a point; ``gantry-roll``: and a roll about
+  the base z axis, a point and ``alpha``; ``gantry-wrist``: and a spherical wrist, a pose.
+
+A point is ``px, py, pz`` [mm] (a planar arm: the two coordinates across its axes), a pose
+the point and the RPY angles ``alpha, beta, gamma`` [rad] (:mod:`analysis.kinematics.rpy`:
+``Rot(z, alpha) Rot(y, beta) Rot(x, gamma)``); ``alpha`` alone is the tool's turn about the
+vertical, the one angle an arm whose rotations are all about the base z axis can set.
 
 Decisions the D-H table does not make (``[derive]`` in the description; all optional but
 ``keep``)::
@@ -32,6 +46,9 @@ Decisions the D-H table does not make (``[derive]`` in the description; all opti
                           # turns with the waist): the palletizer's gripper x pointing down
     orientation_tol_deg = 0.0057  # 5R: largest accepted angle of the roll axis out of
                           # the set the arm can reach (default 1e-4 rad, as the GR-1)
+
+``forward`` and ``elbow`` apply to the families with a waist (3R, 4R-kept, 5R, 6R-wrist,
+6R-parallel); the planar, SCARA and gantry families take no decision.
 """
 
 from __future__ import annotations
@@ -45,7 +62,10 @@ from analysis.kinematics.dh import exact_cos_sin
 
 __all__ = ["FAMILIES", "NotDerivable", "Structure", "check_decisions", "classify"]
 
-FAMILIES = ("3R", "4R-kept", "5R")
+FAMILIES = ("2R-planar", "3R-planar", "3R", "4R-kept", "5R", "SCARA", "6R-wrist", "6R-parallel",
+            "gantry", "gantry-roll", "gantry-wrist")  # fmt: skip
+WAIST_FAMILIES = ("3R", "4R-kept", "5R", "6R-wrist", "6R-parallel")
+"""The families solved by a waist and parallel axes (:mod:`.positioning`)."""
 PARALLEL_TOL = 1e-9
 """Largest sine of the angle between two axes that counts as parallel. Axes of a D-H table
 are exact at multiples of 90 deg (:func:`analysis.kinematics.dh.exact_cos_sin`) and otherwise
@@ -57,9 +77,12 @@ it."""
 _ELBOW = ("target", "arm")
 _DECISIONS = {"forward", "elbow", "keep", "orientation_tol_deg"}
 FAMILY_TEXT = (
-    "the derivable families: 3 joints (a waist and two parallel axes: seed 000's), 4 (a "
-    "waist and three parallel axes, one tool orientation kept: seed 001's), 5 (a waist, "
-    "three parallel axes and a wrist roll: seed 004's)"
+    "the derivable families (analysis.kinematics.derive.families): 2 or 3 parallel revolute "
+    "axes (planar); a waist and two parallel axes (seed 000's); a waist, three parallel axes "
+    "and one orientation kept (seed 001's) or a wrist roll (seed 004's); a SCARA (parallel "
+    "revolute axes and a prismatic one along them); a waist, two parallel axes and a "
+    "spherical wrist (PUMA); a waist, three parallel axes and two wrist axes (UR); a gantry "
+    "(three prismatic axes) with no wrist, a vertical roll or a spherical wrist"
 )
 
 
@@ -84,6 +107,10 @@ class Structure:
     keep: tuple | None
     orientation_tol: float
     decisions: dict = field(default_factory=dict)
+    axes: tuple = ()
+    """Every joint's axis at q = 0 (unit vectors, :attr:`.chain.Home.axes`)."""
+    kinds: tuple = ()
+    """``"revolute"`` or ``"prismatic"`` per joint."""
 
 
 def _unit(v, where: str) -> np.ndarray:
@@ -127,10 +154,148 @@ def _tool_axis(v) -> np.ndarray:
     return _unit(v, "keep.tool_axis")
 
 
-def classify(axes, rotation, decisions) -> Structure:
-    """The family of a chain with joint ``axes`` (unit vectors at q = 0) and home tool
-    ``rotation``, with the description's ``decisions``; NotDerivable otherwise."""
+def classify(axes, rotation, decisions, kinds=None) -> Structure:
+    """The family of a chain with joint ``axes`` (unit vectors at q = 0) of ``kinds``
+    (default: all revolute) and home tool ``rotation``, with the description's
+    ``decisions``; NotDerivable otherwise, naming the rule the chain breaks."""
     d = check_decisions(decisions)
+    axes = tuple(np.asarray(a, dtype=float) for a in axes)
+    kinds = tuple(kinds) if kinds is not None else ("revolute",) * len(axes)
+    n = len(axes)
+    if not n:
+        raise NotDerivable(f"the chain has no joint; {FAMILY_TEXT}")
+    if "prismatic" in kinds:
+        family = _prismatic_family(axes, kinds)
+    elif n in (2, 3) and all(_sin(axes[0], a) <= PARALLEL_TOL for a in axes):
+        family = f"{n}R-planar"
+    elif n == 6:
+        family = _six_family(axes)
+    else:
+        return _classify_waist(axes, rotation, d)
+    return _plain(family, axes, kinds, rotation, d)
+
+
+def _plain(family, axes, kinds, rotation, d) -> Structure:
+    """The structure of a family whose closed form takes no decision (planar, SCARA,
+    gantry) or only ``forward`` and ``elbow`` (6R)."""
+    allowed = {"forward", "elbow"} if family in WAIST_FAMILIES else set()
+    extra = sorted(set(d) - allowed)
+    if extra:
+        raise NotDerivable(f"[derive] {extra} do(es) not apply to the {family} family")
+    n = len(axes)
+    if family in ("2R-planar", "3R-planar", "SCARA"):
+        u = next(a for a, k in zip(axes, kinds, strict=True) if k == "revolute")
+        _vertical(family, u, n_rev=sum(k == "revolute" for k in kinds))
+        sigma = tuple(float(np.sign(np.dot(u, a))) or 1.0 for a in axes)
+    elif family in WAIST_FAMILIES:  # the parallel axes' senses, as the seed families
+        u = axes[1]
+        n_par = 3 if family == "6R-parallel" else 2
+        sigma = tuple(float(np.sign(np.dot(u, axes[k]))) for k in range(1, 1 + n_par))
+    else:
+        u = axes[0]
+        sigma = tuple(float(np.sign(np.dot(u, a))) or 1.0 for a in axes)
+    roll = {"gantry-roll": 3, "6R-parallel": 4}.get(family)
+    roll = axes[roll] if roll is not None else None
+    forward = _unit(d["forward"], "forward") if "forward" in d else None
+    return Structure(family, n, axes[0], u, sigma, rotation, roll, forward,
+                     d.get("elbow", "target"), None, 1e-4, d, axes, kinds)  # fmt: skip
+
+
+def _vertical(family: str, u, n_rev: int) -> None:
+    """A planar arm's or a SCARA's parallel axes: along a base axis (a planar arm's point
+    is given by the coordinates across it; a SCARA's lift is one coordinate), along z where
+    the tool's turn is an input (RPY ``alpha``, the turn about z)."""
+    along = [k for k in range(3) if abs(abs(u[k]) - 1.0) <= PARALLEL_TOL]
+    if not along:
+        raise NotDerivable(
+            f"the {family} arm's parallel axes {_fmt(u)} lie along no base axis: the arm's "
+            "plane is not a coordinate plane of the base frame"
+        )
+    if n_rev == 3 and along != [2]:
+        raise NotDerivable(
+            f"the {family} arm's parallel axes {_fmt(u)} are not vertical (the base z axis): "
+            "the tool's turn about them is no RPY angle (alpha is the turn about z)"
+        )
+
+
+def _fmt(v) -> str:
+    return "(" + ", ".join(f"{float(x):.4g}" for x in v) + ")"
+
+
+def _prismatic_family(axes, kinds) -> str:
+    """SCARA or gantry (module docstring), or NotDerivable."""
+    n = len(axes)
+    n_p = kinds.count("prismatic")
+    if kinds[:3] == ("prismatic",) * 3 and n_p == 3:
+        D = np.stack(axes[:3], axis=1)
+        if abs(np.linalg.det(D)) < ACROSS_MIN:
+            raise NotDerivable(
+                "the three prismatic axes lie in one plane: they cannot place a point in space"
+            )
+        wrist = kinds[3:]
+        if not wrist:
+            return "gantry"
+        if len(wrist) == 1:
+            if _sin(axes[3], (0.0, 0.0, 1.0)) > PARALLEL_TOL:
+                raise NotDerivable(
+                    f"the gantry's roll axis {_fmt(axes[3])} is not vertical (the base z "
+                    "axis): its angle is no RPY angle (alpha is the turn about z)"
+                )
+            return "gantry-roll"
+        if len(wrist) == 3:
+            _wrist_axes(axes[3:], "gantry")
+            return "gantry-wrist"
+        raise NotDerivable(
+            f"a gantry with {len(wrist)} revolute joints after its three prismatic ones; "
+            f"{FAMILY_TEXT}"
+        )
+    rev = [a for a, k in zip(axes, kinds, strict=True) if k == "revolute"]
+    if n_p == 1 and len(rev) in (2, 3) and all(_sin(rev[0], a) <= PARALLEL_TOL for a in axes):
+        return "SCARA"
+    raise NotDerivable(
+        f"a chain of {n} joints ({', '.join(kinds)}) with prismatic joints that is neither a "
+        f"SCARA nor a gantry; {FAMILY_TEXT}"
+    )
+
+
+def _wrist_axes(axes, what: str) -> None:
+    """Three wrist axes, each perpendicular to the next (where they meet: the closed form,
+    :mod:`.wrist`; a wrist whose axes are not perpendicular cannot take every orientation
+    and is not derived)."""
+    for k in range(2):
+        _perpendicular(axes[k], axes[k + 1], f"the {what}'s wrist axes {k + 4} and {k + 5}")
+
+
+def _perpendicular(a, b, what: str) -> None:
+    c = abs(float(np.dot(a, b)))
+    if c > PARALLEL_TOL:
+        angle = math.degrees(math.acos(min(c, 1.0)))
+        raise NotDerivable(
+            f"{what} make {angle:.4g} deg, not 90: the derived wrist needs them perpendicular "
+            f"(every published wrist); {FAMILY_TEXT}"
+        )
+
+
+def _six_family(axes) -> str:
+    """6R-wrist or 6R-parallel (module docstring), or NotDerivable."""
+    w1, u = axes[0], axes[1]
+    if _sin(w1, u) < ACROSS_MIN:
+        raise NotDerivable(f"joints 1 and 2 of the six are parallel; {FAMILY_TEXT}")
+    if _sin(u, axes[2]) > PARALLEL_TOL:
+        angle = math.degrees(math.asin(min(_sin(u, axes[2]), 1.0)))
+        raise NotDerivable(
+            f"joints 2 and 3 of the six are not parallel (angle {angle:.4g} deg); {FAMILY_TEXT}"
+        )
+    if _sin(u, axes[3]) <= PARALLEL_TOL:
+        _perpendicular(u, axes[4], "axis 5 and the parallel axes 2-4")
+        _perpendicular(axes[4], axes[5], "axes 5 and 6")
+        return "6R-parallel"
+    _wrist_axes(axes[3:], "arm")
+    return "6R-wrist"
+
+
+def _classify_waist(axes, rotation, d) -> Structure:
+    """The seed families: a waist and two (3R) or three (4R-kept, 5R) parallel axes."""
     n = len(axes)
     if n not in (3, 4, 5):
         raise NotDerivable(f"the chain has {n} joint(s); {FAMILY_TEXT}")
@@ -175,7 +340,8 @@ def classify(axes, rotation, decisions) -> Structure:
     forward = _unit(d["forward"], "forward") if "forward" in d else None
     tol = math.radians(d["orientation_tol_deg"]) if "orientation_tol_deg" in d else 1e-4
     return Structure(
-        family, n, w1, u, sigma, rotation, roll, forward, d.get("elbow", "target"), keep, tol, d
+        family, n, w1, u, sigma, rotation, roll, forward, d.get("elbow", "target"), keep, tol, d,
+        axes, ("revolute",) * n,
     )
 
 

@@ -14,10 +14,16 @@ What is compared, per configuration ``q`` (a tool pose ``T = FK(q)``):
   perpendicular axes through it, a 6R arm EAIK solves completely) and given the position with
   a random orientation: the first three joints of EAIK's exact solutions (up to 8: each
   position solution with two wrist solutions) are the 3R arm's position solutions.
-- **4R-kept, 5R** (fewer joints than a pose has freedoms): EAIK solves the 6D pose of each
-  derived branch; its exact solutions must be exactly the derived branches that reach that
-  same pose (a 4-axis arm's front and back branches hold the tool turned by pi about the
-  waist, so they are different poses; a 5-axis arm's back branches reverse the hand).
+- **4R-kept, 5R, 2R-planar** (fewer joints than a pose has freedoms): EAIK solves the 6D
+  pose of each derived branch; its exact solutions must be exactly the derived branches that
+  reach that same pose (a 4-axis arm's front and back branches hold the tool turned by pi
+  about the waist, so they are different poses; a 5-axis arm's back branches reverse the
+  hand; a planar arm's righty and lefty branches turn the tool differently).
+- **6R-wrist, 6R-parallel, 3R-planar** (the target fixes the whole pose): EAIK solves the
+  pose; its exact solutions must be exactly the derived branches.
+
+Prismatic joints (SCARA, gantries) are outside EAIK (revolute chains only): pyplcopen's
+kinematics is their oracle (:mod:`.plcopen_oracle`).
 
 Solutions are compared as sets of joint vectors modulo 2 pi (:data:`ANGLE_TOL` rad). An
 EAIK solution counts where EAIK's own forward kinematics reaches the pose
@@ -55,6 +61,10 @@ POSE_TOL = 1e-6
 4R-kept family to ~2e-8 (measured), its other candidates miss by more than 7e-2."""
 
 
+WHOLE_POSE = ("6R-wrist", "6R-parallel", "3R-planar")
+"""Families whose target fixes the tool's whole pose: every branch reaches the same one."""
+
+
 def available() -> bool:
     """True if EAIK is installed (``make bench`` installs it; ``make test`` skips without)."""
     try:
@@ -88,7 +98,7 @@ def eaik_robot(arm):
     from eaik.IK_Homogeneous import HomogeneousRobot
 
     frames = _joint_frames(arm)
-    if arm.n_joints == 3:
+    if arm.closed_form.family == "3R":
         tool = frames[-1]
         wrist = []
         for k in range(3):
@@ -183,13 +193,11 @@ def _exact(robot, pose, sols) -> tuple[list, int]:
 def compare_solution_sets(arm, q: npt.ArrayLike, seed: int = 0) -> Agreement:
     """Compare the derived branches of the tool poses ``FK(q)`` (``q`` (N, n) within the
     family: a 4R-kept configuration holds the kept pitch) with EAIK's solutions."""
-    from analysis.kinematics.rpy import pose_from_transform
-
     q = np.atleast_2d(np.asarray(q, dtype=float))
     family = arm.closed_form.family
     robot = eaik_robot(arm)
     T = arm.table.fk(q)
-    p = T[:, :3, 3] if family != "5R" else pose_from_transform(T)
+    p = arm.closed_form.inputs_of(T)
     sol = arm.solve(p, limits=False)
     rng = np.random.default_rng(seed)
     tally = dict.fromkeys(("equal", "empty", "subset", "disagree"), 0)
@@ -207,6 +215,10 @@ def compare_solution_sets(arm, q: npt.ArrayLike, seed: int = 0) -> Agreement:
             theirs, f = _exact(robot, pose, robot.IK(pose))
             flagged += f
             verdicts.append(_verdict(_unique(ours), _unique([s[:3] for s in theirs])))
+        elif family in WHOLE_POSE:
+            theirs, f = _exact(robot, T[i], robot.IK(T[i]))
+            flagged += f
+            verdicts.append(_verdict(_unique(ours), _unique(theirs)))
         else:
             Tb = arm.table.fk(np.array(ours)) if ours else np.zeros((0, 4, 4))
             for k in range(len(ours)):

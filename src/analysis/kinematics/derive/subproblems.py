@@ -37,14 +37,23 @@ __all__ = [
     "add",
     "cross",
     "dot",
+    "mul",
     "norm_sq",
     "pk1",
+    "pk1_cs",
     "pk3_cos",
     "rotate",
     "scale",
     "sub",
     "waist_offset",
 ]
+
+
+def mul(k, x):
+    """``k x`` for a plain number ``k`` and a value of ``m``: exact where ``k`` is 0 or +-1,
+    as the recorder simplifies it (a numpy ``0.0 * x`` is an array of zeros that would turn
+    a constant it meets into a REAL of the PLC model, where the program folds it)."""
+    return _mul(k, x)
 
 
 def add(a, b) -> tuple:
@@ -107,6 +116,17 @@ def pk1(m, w, x, y):
     refuse those targets first.
     """
     return m.atan2(dot(w, cross(x, y)), dot(across(w, x), y))
+
+
+def pk1_cs(m, w, x, y):
+    """:func:`pk1` with the angle's cosine and sine: ``(angle, c, s)``, ``c, s`` the atan2
+    arguments over their length (no trigonometry; ``(1, 0)`` where both are 0, the angle
+    atan2(0, 0) = 0 then), for the rotations that follow."""
+    ys, xs = dot(w, cross(x, y)), dot(across(w, x), y)
+    r = m.sqrt(xs * xs + ys * ys)
+    nonzero = m.gt(r, 0.0)
+    safe = m.select(nonzero, r, 1.0)
+    return m.atan2(ys, xs), m.select(nonzero, xs / safe, 1.0), ys / safe
 
 
 def pk3_cos(m, d2, la2, lb2, la, lb, precise=False):
