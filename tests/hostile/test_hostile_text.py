@@ -241,17 +241,43 @@ def _stl(tmp: Path, dialect: str, field: str | None, value: str = "", *extra: st
     return prog.read_text(encoding="utf-8"), strict_json(mp.read_text(encoding="utf-8"))
 
 
+def _fields_through(tmp: Path, value: str) -> list[str]:
+    """The fields of the description that load with ``value``; every other refuses it at
+    load, in one line naming the field (the schema's identifiers and one-line text). The
+    issue put its attacks in the ``name``: a name must now be an identifier."""
+    from hostile.texts import cli_outputs
+
+    through = []
+    for field in FIELDS:
+        folder = tmp / ("try-" + field.replace(" ", "-"))
+        folder.mkdir()
+        try:
+            cli_outputs("stl", "--dialect", "st", "--arm", str(description(folder, field, value)),
+                        "-o", str(folder / "p"), files={})  # fmt: skip
+        except ValueError as exc:
+            assert re.search(r"hostile.toml: .*: ", str(exc)), exc
+            assert "\n" not in str(exc).strip()
+            continue
+        through.append(field)
+    assert "name" not in through
+    return through
+
+
 @pytest.mark.slow
 def test_the_ob100_of_a_name_does_not_run_on_awlsim(tmp_path):
     """The issue's reproduction: a name with a line break and an OB100 that writes 99999
-    into c1. On awlsim an unreachable target must read back what the clean arm's program
-    leaves there (the refusal keeps c1), not 99999."""
+    into c1. Refused at load in every field; and behind the schema, the printed program
+    whose every text (name, title, notes, titles, comments) is the attack runs on awlsim as
+    the clean one: an unreachable target reads back what the clean program leaves (the
+    refusal keeps c1), not 99999."""
     from analysis.plc.memmap import MemoryMap
     from analysis.plc.runner import AwlRunner
 
+    assert _fields_through(tmp_path, HOSTILE[0]) == []  # a line break: no field holds one
+    _, doc = _stl(tmp_path, "s7-300", None)
+    _, program = _programs(TRIG["s7-300"])
     results = []
-    for field, value in ((None, ""), ("name", HOSTILE[0])):
-        text, doc = _stl(tmp_path, "s7-300", field, value)
+    for text in (_print("s7-300", program), _print("s7-300", _hostile_program(program, HOSTILE[0]))):
         assert "ORGANIZATION_BLOCK OB 100" not in plc_code(text, "s7-300")
         r = AwlRunner(text, MemoryMap.from_dict(doc))
         res = r.solve([UNREACHABLE])
@@ -261,21 +287,28 @@ def test_the_ob100_of_a_name_does_not_run_on_awlsim(tmp_path):
 
 @pytest.mark.slow
 def test_a_comment_terminator_does_not_run_on_the_st_engine(tmp_path):
-    """``*)`` then ``c1 := 99999; RETURN;`` in the name: the ST program compiles on the ST
-    engine and computes what the clean one computes, targets reachable or not."""
+    """``*)`` then ``c1 := 99999; RETURN;`` in the name: refused at load in every field; the
+    ST program whose every text is the attack compiles on the ST engine and computes what
+    the clean one computes, targets reachable or not."""
     from analysis.plc import st_engine
 
     try:
         st_engine.engine_path()
     except st_engine.EngineMissing as exc:
         pytest.skip(str(exc))
+    through = _fields_through(tmp_path, HOSTILE[2])
+    assert "title" in through  # free text: it reaches the program through the CLI
+    texts = [_stl(tmp_path, "st", f, HOSTILE[2], "--no-motion")[0] for f in [None, *through]]
+    _, program = _programs(TRIG["st"])  # the grabber's, every text hostile
+    texts += [_print("st", program), _print("st", _hostile_program(program, HOSTILE[2]))]
     targets = np.array([UNREACHABLE, [300.0, 200.0, 700.0]])
     out = []
-    for field, value in ((None, ""), ("name", HOSTILE[2])):
-        text, doc = _stl(tmp_path, "st", field, value, "--no-motion")  # the IK block
-        res, _ = st_engine.sweep(text, doc["block"], ["px", "py", "pz"], 3, targets)
+    for text in texts:
+        block = re.search(r"^FUNCTION_BLOCK (\w+)", text, re.M).group(1)
+        res, _ = st_engine.sweep(text, block, ["px", "py", "pz"], 3, targets)
         out.append((res.pulses.tolist(), res.status.tolist()))
-    assert out[1] == out[0], out
+    cli, api = out[: len(through) + 1], out[len(through) + 1 :]
+    assert all(o == cli[0] for o in cli) and api[1] == api[0], out
 
 
 def test_a_script_end_in_a_title_stays_inside_the_script():

@@ -116,16 +116,36 @@ def test_one_json_shape_and_one_sentence(capsys):
 
 
 def test_a_chain_without_a_closed_form_has_its_pose(tmp_path, capsys):
+    """A planar 2R given by its rows (solved where a derived family covers it) and a chain
+    no closed form solves (a twisted 2R with a prismatic joint): both have their pose; the
+    latter no target."""
     path = tmp_path / "two.toml"
-    path.write_text(
-        'name = "two"\n[parameters]\nL1 = 300.0\nL2 = 200.0\n'
-        '[[rows]]\njoint = "theta1"\na = "L1"\n[[rows]]\njoint = "theta2"\na = "L2"\n'
-        '[[joints]]\nname = "theta1"\npulses_per_rev = 4000\n'
-        '[[joints]]\nname = "theta2"\npulses_per_rev = 4000\n', "utf-8")  # fmt: skip
+    rows = ('[[rows]]\njoint = "theta1"\na = "L1"\n[[rows]]\njoint = "theta2"\na = "L2"\n'
+            '[[joints]]\nname = "theta1"\npulses_per_rev = 4000\n'
+            '[[joints]]\nname = "theta2"\npulses_per_rev = 4000\n')  # fmt: skip
+    path.write_text('name = "two"\n[parameters]\nL1 = 300.0\nL2 = 200.0\n' + rows, "utf-8")
     code, out, err = _cli(capsys, "fk", "30", "40", "--arm", str(path), "--json")
     doc = json.loads(out)
-    assert code == 0 and doc["target"] is None and set(doc) == KEYS, err
+    assert code == 0 and set(doc) == KEYS, err
     c, s = np.cos(np.radians([30.0, 70.0])), np.sin(np.radians([30.0, 70.0]))
     tip = [300 * c[0] + 200 * c[1], 300 * s[0] + 200 * s[1], 0.0]
     np.testing.assert_allclose(doc["position_mm"], tip, atol=1e-9)
     np.testing.assert_allclose(doc["rpy_deg"], [70.0, 0.0, 0.0], atol=1e-12)
+    assert (doc["target"] is None) == (load_arm(str(path)).closed_form is None)
+    odd = tmp_path / "odd.toml"
+    odd.write_text(
+        'name = "odd"\n[parameters]\nL1 = 300.0\n'
+        '[[rows]]\njoint = "theta1"\nalpha_deg = 90\na = "L1"\n'
+        '[[rows]]\njoint = "s"\nkind = "prismatic"\nalpha_deg = 30\n'
+        '[[rows]]\njoint = "theta3"\nalpha_deg = 60\na = 50\n'
+        '[[joints]]\nname = "theta1"\npulses_per_rev = 4000\n'
+        '[[joints]]\nname = "s"\nkind = "prismatic"\npulses_per_rev = 4000\nlead_mm = 5\n'
+        'limits_mm = [0, 300]\n'
+        '[[joints]]\nname = "theta3"\npulses_per_rev = 4000\n', "utf-8")  # fmt: skip
+    arm = load_arm(str(odd))
+    assert arm.closed_form is None and arm.no_ik
+    code, out, err = _cli(capsys, "fk", "10", "100", "20", "--arm", str(odd), "--json")
+    doc = json.loads(out)
+    assert code == 0 and doc["target"] is None, err
+    np.testing.assert_allclose(doc["position_mm"], arm.table.fk(arm.joints_from_user(
+        [10.0, 100.0, 20.0]))[:3, 3], atol=1e-12)  # fmt: skip

@@ -5,6 +5,7 @@ row per cycle; bad input is one line and exit 2."""
 from __future__ import annotations
 
 import csv
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -229,4 +230,12 @@ def test_the_contract_from_a_shell(grabber, tmp_path):
         cwd=ROOT,
     )
     assert r.returncode == 0, r.stderr
-    assert (tmp_path / "t.csv").read_text("utf-8").startswith("t_s,q1,q2,q3,v1,v2,v3,")
+    text = (tmp_path / "t.csv").read_text("utf-8")
+    assert text.startswith("t_s,q1,q2,q3,v1,v2,v3,")
+    # without MAP.json: the PROGRAM's own variables by their names (the machine's outputs
+    # among them), never the engine's names for the variables inside its block instances
+    head = text.split("\n", 1)[0].split(",")[7:]
+    for name in ("Homed", "Busy", "Done", "Error", "Status", "Gripper", "GripperClosed"):
+        assert name in head
+    source = (grabber / "g.st").read_text("utf-8")
+    assert all(re.search(rf"\b{n}\s*:", source) for n in head), head

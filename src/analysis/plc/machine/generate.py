@@ -11,9 +11,10 @@ from __future__ import annotations
 
 import json
 import re
-from xml.sax.saxutils import quoteattr
 
-from analysis.plc.machine.program import STEPS, machine_name, machine_text
+from analysis.escape import xml_attr
+from analysis.plc.machine.program import STEPS, MachinePrinter, machine_name
+from analysis.plc.machine.program_scl import SclMachinePrinter
 from analysis.plc.machine.spec import MACHINE_INPUTS, MACHINE_OUTPUTS, machine_spec
 from analysis.plc.machine.tags import signals
 from analysis.plc.plcopen import formatted_text
@@ -21,6 +22,15 @@ from analysis.plc.plcopen import formatted_text
 __all__ = ["machine_map", "program_pou_xml", "with_machine"]
 
 _ELEMENTARY = {"BOOL", "INT", "DINT", "REAL", "LREAL", "TIME"}
+
+
+MACHINE_PRINTERS = {"st": MachinePrinter, "scl": SclMachinePrinter}
+"""The machine program's printer per dialect (PLCopen XML carries the ST one)."""
+
+
+def machine_text(spec, ik_block: str, dialect: str) -> str:
+    """The machine program of ``spec`` calling IK block ``ik_block`` in ``dialect``."""
+    return MACHINE_PRINTERS[dialect](spec, ik_block).text()
 
 
 def machine_map(spec, ik_codes, dialect: str) -> dict:
@@ -94,17 +104,18 @@ def program_pou_xml(st_text: str, program: str) -> str:
     initial values as ``simpleValue``, the statements as the ST body."""
 
     def var(name, typ, init):
-        t = f"<{typ}/>" if typ in _ELEMENTARY else f"<derived name={quoteattr(typ)}/>"
-        i = f"<initialValue><simpleValue value={quoteattr(init)}/></initialValue>" if init else ""
-        return f"<variable name={quoteattr(name)}><type>{t}</type>{i}</variable>"
+        t = f"<{typ}/>" if typ in _ELEMENTARY else f'<derived name="{xml_attr(typ)}"/>'
+        i = f'<initialValue><simpleValue value="{xml_attr(init)}"/></initialValue>' if init else ""
+        return f'<variable name="{xml_attr(name)}"><type>{t}</type>{i}</variable>'
 
     decls = "".join(var(*d) for d in _declarations(st_text, program))
     body = st_text.split(f"PROGRAM {program}\n", 1)[1].split("\nEND_VAR\n", 1)[1]
     body = body.rsplit("END_PROGRAM", 1)[0].strip("\n") + "\n"
     body = "\n".join(ln[4:] if ln.startswith("    ") else ln for ln in body.split("\n"))
     return (
-        f'<pou name={quoteattr(program)} pouType="program"><interface><localVars>{decls}'
-        f"</localVars></interface><body><ST>{formatted_text(body)}</ST></body></pou>\n"
+        f'<pou name="{xml_attr(program)}" pouType="program"><interface><localVars>{decls}'
+        f"</localVars></interface><body><ST>{formatted_text(body)}</ST></body></pou>
+"
     )
 
 

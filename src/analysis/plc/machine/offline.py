@@ -8,9 +8,10 @@ file) on the ST engine, offline (issue 29 item 3, a contract).
   joint (MAP.json's ``machine.axes``: limits, software limits, home position) or, without a
   map, per AXIS_REF variable of the program; the trace has one row per cycle: ``t_s``,
   ``q1..qN`` (deg or mm), ``v1..vN`` (per second), then every output of the program by name
-  (MAP.json's ``machine.outputs``; without a map, every scalar variable the scenario does
-  not write). ``AxisN.PowerOK`` (FALSE, then TRUE) is the simulated drive's power feedback:
-  losing it is an axis error (:data:`analysis.plc.st_engine.POWER_OK`).
+  (MAP.json's ``machine.outputs``; without a map, every scalar variable the PROGRAM declares
+  itself, not those of the block instances inside it, that the scenario does not write).
+  ``AxisN.PowerOK`` (FALSE, then TRUE) is the simulated drive's power feedback: losing it is
+  an axis error (:data:`analysis.plc.st_engine.POWER_OK`).
 - Without a scenario: one scan, ``--set NAME=VALUE`` before it, ``--read NAME`` after it.
 - A source without a PROGRAM (the IK block on its own) runs through a generated PROGRAM that
   calls its function block with its inputs (a rising edge of its Execute in every scan) and
@@ -220,7 +221,7 @@ def _axes(variables: dict[str, str], mapdoc: dict | None):
     return [SimAxis(n, 1e6, 1e9, 1e12) for n, t in variables.items() if t == "AXIS_REF"]
 
 
-def _outputs(variables, written, mapdoc) -> list[str]:
+def _outputs(source, program, variables, written, mapdoc) -> list[str]:
     from analysis.plc.st_engine import CYCLE_VARIABLE, TIME_UNIT_VARIABLE
 
     machine = (mapdoc or {}).get("machine") or {}
@@ -229,7 +230,23 @@ def _outputs(variables, written, mapdoc) -> list[str]:
             _variable(variables, n, "the program", "MAP.json output")[0] for n in machine["outputs"]
         ]
     skip = {w.lower() for w in written} | {TIME_UNIT_VARIABLE.lower(), CYCLE_VARIABLE.lower()}
-    return [n for n, t in variables.items() if t in SCALARS and n.lower() not in skip]
+    declared = {n.lower() for n in _declared(source, program)}
+    return [n for n, t in variables.items()
+            if t in SCALARS and n.lower() in declared and n.lower() not in skip]  # fmt: skip
+
+
+def _declared(source: str, program: str) -> list[str]:
+    """The names PROGRAM ``program`` declares in its own VAR sections, in order (not the
+    variables of the block instances inside it, which the engine lists too)."""
+    from analysis.plc.st_engine import blank_comments
+
+    text = blank_comments(source)
+    m = re.search(rf"(?is)^\s*PROGRAM\s+{re.escape(program)}\b(.*?)\bEND_PROGRAM\b", text,
+                  flags=re.M)  # fmt: skip
+    if not m:
+        return []
+    sections = re.findall(r"(?is)\bVAR\w*\b(.*?)\bEND_VAR\b", m.group(1))
+    return [n for body in sections for n in re.findall(r"(?m)(\w+)\s*:\s*\w", body)]
 
 
 def run_trace(
@@ -262,7 +279,7 @@ def run_trace(
             f"the scenario runs {n} cycles (last row at {rows[-1][0]:g} s + "
             f"{settle_s:g} s at {cycle_s * 1e3:g} ms): at most {MAX_CYCLES}"
         )
-    outs = _outputs(variables, {n for _, n, _ in rows}, mapdoc)
+    outs = _outputs(source, name, variables, {n for _, n, _ in rows}, mapdoc)
     run = run_machine(source, name, axes, writes, outs, cycle_s=cycle_s, n_cycles=n)
     return [v for v in outs], axes, run, {n: variables[n] for n in outs}
 

@@ -40,7 +40,7 @@ from analysis.escape import iec_identifier, plc_comment
 from analysis.plc.emit import fmt_real
 from analysis.plc.machine.spec import MACHINE_STATUS, MachineSpec
 
-__all__ = ["STEPS", "MachinePrinter", "lreal", "machine_name", "machine_text"]
+__all__ = ["STEPS", "MachinePrinter", "lreal", "machine_name"]
 
 STEPS = {
     "IDLE": 0,
@@ -561,11 +561,3 @@ class MachinePrinter:
         out += [t + line if line else "" for line in self.body()]
         out += ["END_PROGRAM", ""]
         return "\n".join(out)
-
-
-def machine_text(spec: MachineSpec, ik_block: str, dialect: str) -> str:
-    """The machine program of ``spec`` calling IK block ``ik_block`` in ``dialect``."""
-    from analysis.plc.machine.program_scl import SclMachinePrinter
-
-    printer = {"st": MachinePrinter, "scl": SclMachinePrinter}[dialect]
-    return printer(spec, ik_block).text()

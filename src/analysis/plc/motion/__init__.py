@@ -10,6 +10,12 @@
 * :mod:`.scenarios`: the issue's scenarios, run on either engine into a trace, and the
   numbers they are held to;
 * :mod:`.paper`: the paper's own listings (Figures 3-6) run through the same scenarios.
+
+The S7-300 dialect stays the IK block alone: an S7-300 CPU has no pulse train output of its
+own (stepper positioning there is an FM 353 module or a drive on PROFIBUS, whose function
+blocks this project does not generate); its path here is the S7-200 program translated to AWL
+and run on awlsim (:mod:`.engines`). The S7-1200/1500 machine is the SCL program of
+:mod:`analysis.plc.machine` (technology objects' MC_* instructions).
 """
 
 from analysis.plc.motion.networks import (
