@@ -114,8 +114,7 @@ def program_pou_xml(st_text: str, program: str) -> str:
     body = "\n".join(ln[4:] if ln.startswith("    ") else ln for ln in body.split("\n"))
     return (
         f'<pou name="{xml_attr(program)}" pouType="program"><interface><localVars>{decls}'
-        f"</localVars></interface><body><ST>{formatted_text(body)}</ST></body></pou>
-"
+        f"</localVars></interface><body><ST>{formatted_text(body)}</ST></body></pou>\n"
     )
 
 
