@@ -106,7 +106,7 @@ test: $(STAMP) st-engine-if-gxx
 # The developer loop (about 27 s): the unit tests without those marked slow (the awlsim sweeps,
 # the subprocess sessions, the site build; tests/conftest.py), stopping at the first failure.
 test-fast: $(STAMP) st-engine-if-gxx
-	MPLBACKEND=Agg $(PY) -m pytest -n 2 --dist worksteal -x -m "not slow" -p no:nbval tests --ignore=tests/browser
+	HYPOTHESIS_PROFILE=$${HYPOTHESIS_PROFILE:-fast} MPLBACKEND=Agg $(PY) -m pytest -n 2 --dist worksteal -x -m "not slow" -p no:nbval tests --ignore=tests/browser
 
 # The browser tests against build/report as `make report` left it (no rebuild).
 test-browser: $(STAMP)

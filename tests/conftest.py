@@ -64,6 +64,9 @@ settings.register_profile(
     deadline=None,
     suppress_health_check=[HealthCheck.too_slow],
 )
+# make test-fast: the same properties on fewer examples (quick feedback; make test, which CI
+# runs, keeps "ci").
+settings.register_profile("fast", parent=settings.get_profile("ci"), max_examples=60)
 settings.register_profile("thorough", max_examples=5000, deadline=None)
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
 

@@ -48,7 +48,7 @@ def _user_arms(folder: Path) -> dict[str, str]:
     for k, (fam, conv) in enumerate(
         (f, c) for f in ("3R", "4R-kept", "5R") for c in ("standard", "modified")
     ):
-        name = f"derived_{fam.replace('-', '_')}_{conv}"
+        name = f"derived_{fam.replace('-', '_')}_{conv}"  # an identifier (the schema)
         path = folder / f"{name}.toml"
         path.write_text(random_arm(np.random.default_rng(11 + k), fam, conv, name), "utf-8")
         arms[name] = path

@@ -4,9 +4,10 @@
 
 Runs ``python -m analysis stl --arm PATH --dialect D -o FILE`` in this process under
 :func:`sys.setprofile` and records every call into a function of ``src/analysis`` made
-beneath the command's function (``_cmd_stl``), up to ``--depth`` calls below it (deeper calls
-are the math namespaces evaluating a closed form: thousands of steps that say nothing about
-the structure), leaving out the file I/O (``safe_io``) that every command shares. Consecutive
+beneath the command's function (``cmd_stl``; ``_cmd_stl`` before the CLI split), up to
+``--depth`` calls below it (deeper calls are the math namespaces evaluating a closed form:
+thousands of steps that say nothing about the structure), leaving out the file I/O
+(``safe_io``) that every command shares. Consecutive
 calls within one file are one *stop*; a stop in a file the walk had already left is a
 *return*. The description is a fresh copy of ``data/arms/grabber.toml`` (so it is read,
 not taken from a cache).
@@ -59,7 +60,7 @@ def walk(argv: list[str], depth: int) -> list[tuple[str, str]]:
             key = (Path(f).name, frame.f_code.co_name)
             if start[0] is not None and key in WATCH:
                 COUNTS[WATCH[key]] = COUNTS.get(WATCH[key], 0) + 1
-            if start[0] is None and frame.f_code.co_name == "_cmd_stl":
+            if start[0] is None and frame.f_code.co_name in ("_cmd_stl", "cmd_stl"):
                 start[0] = level[0]
             inside = f.startswith(pkg) and "safe_io" not in f
             if start[0] is not None and inside and 0 < level[0] - start[0] <= depth:

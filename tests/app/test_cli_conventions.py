@@ -73,7 +73,7 @@ def test_stl_theta1_on_axis_and_params_never_bake_inf(tmp_path, capsys):
 
 def test_errata_json(capsys):
     code, out, err = run(capsys, "errata", "--check", "--paper", "picker", "--json")
-    assert (code, json.loads(out)) == (0, {"up_to_date": True, "stale": []}), err
+    assert (code, json.loads(out)) == (0, {"up_to_date": True, "stale": [], "findings": []}), err
     code, out, _ = run(capsys, "errata", "--paper", "picker", "--json")
     rows = json.loads(out)["picker"]
     assert code == 0 and any(r["id"] == "pick-units" for r in rows)

@@ -215,7 +215,7 @@ def test_the_site_ships_only_the_static_files_its_pages_load(demo_site):
 
 
 def test_prune_static_refuses_a_page_that_loads_a_removed_file(tmp_path):
-    from analysis.app.report import _prune_static
+    from analysis.app.report_files import prune_static as _prune_static
 
     static = tmp_path / "_static"
     (static / "scripts").mkdir(parents=True)

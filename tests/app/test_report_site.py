@@ -145,4 +145,4 @@ def test_front_page_renders_counts_tables_figures_and_evidence():
 
 
 def test_inline_text_cannot_trigger_markup():
-    assert site._inline("a*b_c [x] $y$ `z` |w|") == "a\\*b\\_c \\[x\\] \\$y\\$ \\`z\\` \\|w\\|"
+    assert site.md_inline("a*b_c [x] $y$ `z` |w|") == "a\\*b\\_c \\[x\\] \\$y\\$ \\`z\\` \\|w\\|"

@@ -100,9 +100,10 @@ def test_printed_texts_are_references_and_checks_never_hold_the_answer(paper):
             parts = [p] if isinstance(p, str | dict) else p
             refs = [x if isinstance(x, str) else x.get("of", "@") for x in parts]
             assert all(isinstance(x, str) and x.startswith("@") for x in refs) or "order" in p, m
-            spec = repr(m["check"])
-            for text in (m.get("corrected"), m.get("reading")):
-                assert not text or len(text) < 4 or text not in spec, (c["id"], m["id"])
+    for m in reg.register(paper).manifestations:  # the check in use: the row's or its record's
+        spec = repr(m.spec)
+        for text in (m.corrected, m.reading):
+            assert not text or len(text) < 4 or text not in spec, m.id
 
 
 def test_old_causes_are_all_accounted_for():

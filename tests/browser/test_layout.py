@@ -235,7 +235,7 @@ def test_site_is_at_most_25_mb(site_dir):
 
 def test_pages_load_nothing_the_site_does_not_ship(context, site_url, site_dir, pages):
     """Every file a page asks for while MathJax typesets it (its fonts, autoloaded TeX
-    extensions) is served (the build ships only those: analysis.app.report._prune_static),
+    extensions) is served (the build ships only those: analysis.app.report_files.prune_static),
     and MathJax's menu hides the entries that would load what it does not ship."""
     page = context.new_page()
     missing: list[str] = []

@@ -5,9 +5,27 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from hypothesis import HealthCheck, settings
 from hypothesis import strategies as st
 
 from analysis import validate
+
+
+def examples(n: int, cost: int = 1) -> settings:
+    """Settings drawing ``n // cost`` examples under the "ci" profile (make test), 30 times as
+    many under "thorough", a third under "fast" (make test-fast); at least 2."""
+    drawn = settings().max_examples
+    scale = 30 if drawn > 1000 else 1 if drawn >= 300 else 1 / 3
+    return settings(
+        max_examples=max(2, int(n * scale) // cost),
+        deadline=None,
+        suppress_health_check=[
+            HealthCheck.too_slow,
+            HealthCheck.data_too_large,
+            HealthCheck.function_scoped_fixture,
+        ],
+    )
+
 
 FIXED_BAD_TEXT = [
     "nan", "NaN", "-nan", "inf", "-inf", "+Infinity", "infinity", "1e400", "-1e999",

@@ -30,22 +30,14 @@ import re
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import given
 from hypothesis import strategies as st
 
 from analysis import validate
 from hostile import strategies as hs
 from hostile.registry import ARMS, REGISTRY, arm_of, batch, cases, cli, default_target
 
-PROFILE_SCALE = 30 if settings().max_examples > 1000 else 1  # the thorough profile draws more
-
-
-def examples(n: int, cost: int = 1) -> settings:
-    return settings(
-        max_examples=max(2, n * PROFILE_SCALE // cost),
-        deadline=None,
-        suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large],
-    )
+examples = hs.examples
 
 
 def one_line(text: str) -> bool:

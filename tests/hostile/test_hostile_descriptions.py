@@ -35,21 +35,15 @@ import threading
 from pathlib import Path
 
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import given
 from hypothesis import strategies as st
 
 from analysis.paths import data_dir
 
 from .registry import cli
+from .strategies import examples
 
 SEEDS = ("grabber", "palletizer", "gr1")
-
-
-def examples(n: int) -> settings:
-    scale = 30 if settings().max_examples > 1000 else 1
-    return settings(max_examples=n * scale, deadline=None,
-                    suppress_health_check=[HealthCheck.too_slow,
-                                           HealthCheck.function_scoped_fixture])  # fmt: skip
 
 
 @contextlib.contextmanager

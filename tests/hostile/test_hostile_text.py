@@ -27,9 +27,10 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, example, given, settings
+from hypothesis import example, given
 
 from analysis.kinematics.arm import load_arm
+from hostile.strategies import examples
 from hostile.texts import (
     FIELDS,
     GENERATORS,
@@ -41,13 +42,6 @@ from hostile.texts import (
     plc_code,
     strict_json,
 )
-
-PROFILE_SCALE = 30 if settings().max_examples > 1000 else 1
-
-
-def examples(n: int) -> settings:
-    return settings(max_examples=n * PROFILE_SCALE, deadline=None,
-                    suppress_health_check=[HealthCheck.too_slow])  # fmt: skip
 
 
 @cache
@@ -277,7 +271,8 @@ def test_the_ob100_of_a_name_does_not_run_on_awlsim(tmp_path):
     _, doc = _stl(tmp_path, "s7-300", None)
     _, program = _programs(TRIG["s7-300"])
     results = []
-    for text in (_print("s7-300", program), _print("s7-300", _hostile_program(program, HOSTILE[0]))):
+    hostile = _hostile_program(program, HOSTILE[0])
+    for text in (_print("s7-300", program), _print("s7-300", hostile)):
         assert "ORGANIZATION_BLOCK OB 100" not in plc_code(text, "s7-300")
         r = AwlRunner(text, MemoryMap.from_dict(doc))
         res = r.solve([UNREACHABLE])

@@ -241,9 +241,9 @@ def test_table5_3_poses_are_refused_for_their_orientation(arm):
 
 def test_projection_is_the_nearest_reachable_orientation(arm, rng):
     """orientation_tol=None keeps the in-plane part of a and the z1 parts of n, o: no
-    (theta234, theta5) on a 2-deg grid, refined on a 0.01-deg grid around its best, does
-    better, and the turn equals the out-of-plane angle of a (16 seeded poses here; 3,000
-    random rotations by the same search while designing the closed form)."""
+    (theta234, theta5) on a 2-deg grid, refined on 0.1-deg then 0.005-deg grids around its
+    best, does better, and the turn equals the out-of-plane angle of a (16 seeded poses here;
+    3,000 random rotations by the same search while designing the closed form)."""
     poses = np.c_[rng.uniform(100, 300, (16, 3)), rng.uniform(-np.pi, np.pi, (16, 3))]
     sol = cf.ik(numpy_ops, tuple(poses.T), arm.params, tol=1e-6, orientation_tol=None)
     q = np.stack(sol["branches"]["front-up"], axis=-1)
@@ -255,14 +255,17 @@ def test_projection_is_the_nearest_reachable_orientation(arm, rng):
     def reachable(k, a234, a5):  # Rz(theta1) Rx(90) Rz(theta234) Rx(90) Rz(theta5)
         return B[k] @ (rot_z(a234) @ rot_x(np.pi / 2) @ rot_z(a5))[..., :3, :3]
 
-    for k in range(len(poses)):
-        g = np.radians(np.arange(-180.0, 180.0, 2.0))
-        a234, a5 = np.meshgrid(g, g, indexing="ij")
+    def search(k, c234, c5, half, step):  # the best of a grid around (c234, c5), deg
+        f = np.radians(np.arange(-half, half + step / 2, step))
+        a234, a5 = np.meshgrid(c234 + f, c5 + f, indexing="ij")
         err = rpy.rotation_angle(R_req[k], reachable(k, a234, a5))
         i, j = np.unravel_index(np.argmin(err), err.shape)
-        f = np.radians(np.arange(-2.5, 2.5, 0.01))
-        a234, a5 = np.meshgrid(g[i] + f, g[j] + f, indexing="ij")
-        best = rpy.rotation_angle(R_req[k], reachable(k, a234, a5)).min()
+        return a234[i, j], a5[i, j], err[i, j]
+
+    for k in range(len(poses)):
+        a234, a5, _ = search(k, 0.0, 0.0, 180.0, 2.0)
+        a234, a5, _ = search(k, a234, a5, 2.5, 0.1)
+        *_, best = search(k, a234, a5, 0.15, 0.005)
         assert turn[k] <= best + 1e-12, (k, turn[k], best)
         assert best - turn[k] <= 1e-3  # the search finds it too (to its grid)
 

@@ -92,4 +92,6 @@ def test_the_papers_package_is_data_only():
             elif isinstance(node, ast.ImportFrom):
                 names.add(node.module or "")
     outside = {n for n in names if n.split(".")[0] not in sys.stdlib_module_names}
-    assert outside <= {"sympy", "analysis.papers", "analysis.paths"}, outside
+    inside = {"analysis.papers", "analysis.papers.catalog", "analysis.papers.data",
+              "analysis.paths"}  # fmt: skip
+    assert outside <= {"sympy", *inside}, outside

@@ -36,9 +36,20 @@ import sys
 from pathlib import Path
 
 from analysis import validate
+from analysis.app.cli_common import (
+    HelpFormatter,
+    UsageError,
+    add_arm_options,
+    add_mkdir,
+    arm_from_args,
+    finite,
+    to_json,
+    waist_angle,
+)
+from analysis.escape import terminal
 from analysis.plc.dialects import DIALECTS, printer_class
 
-__all__ = ["add_stl_run", "parse_read", "parse_set", "run"]
+__all__ = ["add_stl", "add_stl_run", "cmd_stl", "parse_read", "parse_set", "run"]
 
 TYPES = ("BOOL", "BYTE", "INT", "WORD", "DINT", "DWORD", "REAL")
 _S7200_AREAS = "SM|V|M|I|Q|S"
@@ -415,3 +426,155 @@ def add_stl_run(sub, parser_class=None, formatter_class=None) -> None:
                    help="the PROGRAM to run (default: the only one)")  # fmt: skip
     g.add_argument("--mkdir", action="store_true", help="create the trace's directory")
     p.set_defaults(func=_cmd_stl_run)
+
+
+# --- stl: the program and its map (moved here from analysis.app.cli) ---------------------
+def cmd_stl(args: argparse.Namespace) -> int:
+    from analysis.plc.dialects import DIALECTS
+    from analysis.plc.generate import generate
+    from analysis.plc.memmap import MemoryMap
+    from analysis.safe_io import check_paths, write_many_atomic
+
+    extra = [p for p in (args.tags, args.gvl) if p]  # the machine's tag table and GVL
+    outputs = [args.output, *([args.map] if args.map else []), *extra]
+    if str(args.output) == "-" and (args.json or str(args.map) == "-"):
+        raise UsageError("-o - writes the program to stdout: --json and --map - cannot share it")
+    arm = arm_from_args(args)
+    check_paths(  # no output may be an input: the description, its tables, --params, --layout
+        inputs=[*arm.input_files, *(p for p in (args.layout, args.params) if p)],
+        outputs=outputs,
+        make_parents=args.mkdir,
+    )
+    mmap = _layout(args.layout, MemoryMap) if args.layout else None
+    cpu = None
+    if args.cpu is not None:
+        from analysis.plc.memmap import cpu_name
+
+        if not DIALECTS[args.dialect].addresses:
+            raise UsageError(
+                f"--cpu applies to --dialect s7-200 and s7-300 (a {args.dialect} program "
+                "names no addresses)"
+            )
+        cpu = cpu_name(args.cpu, args.dialect)  # checked at generation: the map's areas
+    text, mjson = generate(
+        arm,
+        args.dialect,
+        args.branch,
+        args.trig,
+        mmap,
+        motion=not args.no_motion,
+        theta1_on_axis=waist_angle(args),
+        cpu=cpu,
+    )
+    files = {p: c for p, c in ((args.output, text), (args.map, mjson)) if p and str(p) != "-"}
+    if extra:
+        from analysis.plc.machine.tags import machine_files
+
+        files.update(machine_files(arm, args.dialect, args.no_motion, args.tags, args.gvl))
+    if files:
+        write_many_atomic(files, newline="", make_parents=args.mkdir)
+    for p, c in ((args.output, text), (args.map, mjson)):
+        if p is not None and str(p) == "-":
+            sys.stdout.write(c)
+            sys.stdout.flush()
+    doc = {
+        "program": str(args.output),
+        "map": None if args.map is None else str(args.map),
+        "dialect": args.dialect,
+        "arm": arm.name,
+        "branch": args.branch or arm.branches[0],
+        "lines": text.count("\n"),
+    }
+    if DIALECTS[args.dialect].addresses:
+        doc["cpu"] = json.loads(mjson)["target_cpu"]["name"]
+    if args.json:
+        print(to_json(doc))
+    else:
+        also = f" and {args.map}" if args.map else " (no MAP.json: --map FILE writes it)"
+        print(
+            terminal(
+                f"wrote {args.output} ({args.dialect}, {arm.name} {doc['branch']}, "
+                f"{doc['lines']} lines){also}"
+            ),
+            file=sys.stderr if str(args.output) == "-" else sys.stdout,
+        )
+    return 0
+
+
+def _layout(path: Path, MemoryMap):
+    """``--layout L.json``, checked at the boundary: a JSON object, read by the memory map's
+    own parser; anything it cannot take is one line naming the file."""
+    try:
+        doc = json.loads(Path(path).read_text(encoding="utf-8"))
+    except json.JSONDecodeError as exc:
+        raise UsageError(f"{path}: not valid JSON ({exc})") from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise UsageError(f"cannot read {path}: {getattr(exc, 'strerror', None) or exc}") from None
+    if not isinstance(doc, dict):
+        raise UsageError(
+            f"{path}: a memory map is a JSON object (MAP.json format), not {type(doc).__name__}"
+        )
+    try:
+        return MemoryMap.from_json(path)
+    except (KeyError, TypeError, AttributeError, IndexError) as exc:
+        raise UsageError(f"{path}: not a memory map ({type(exc).__name__}: {exc})") from None
+    except ValueError as exc:
+        raise UsageError(f"{path}: {exc}" if str(path) not in str(exc) else str(exc)) from None
+
+
+def add_stl(sub) -> None:
+    """``stl``: the PLC program and its memory map (the dialects: the registry's)."""
+    from analysis.plc.dialects import DIALECTS
+
+    p = sub.add_parser(
+        "stl",
+        help="generate the PLC program (S7-200 STL, S7-300 AWL, ST, SCL, PLCopen XML) and its map",
+        description="Generate the corrected IK program for a Siemens PLC, from the arm's "
+        "closed form (the paper's Figures 3-6 as they should be), and MAP.json naming every "
+        "input and output address.",
+        epilog="examples:\n  python -m analysis stl --dialect s7-200 -o ik.awl --map ik_map.json\n"
+        "  python -m analysis stl --dialect s7-300 --arm palletizer -o pal.awl --map pal.json\n"
+        "  python -m analysis stl --dialect st --arm gr1 -o gr1.st --map gr1.json\n"
+        "  python -m analysis stl --dialect s7-300 -o -          the program on stdout",
+        formatter_class=HelpFormatter,
+    )
+    p.add_argument(
+        "--dialect",
+        required=True,
+        choices=tuple(DIALECTS),
+        help="; ".join(f"{name}: {cls.title}" for name, cls in DIALECTS.items()),
+    )
+    p.add_argument("--branch", help="IK branch (default: the arm's first, the paper's)")
+    p.add_argument(
+        "--trig",
+        choices=("native", "subroutine", "function"),
+        help="S7-300: native ATAN/ACOS (default) or the generated subroutines; "
+        "S7-200: subroutine only; ST/SCL: function (default: ATAN2 a generated function on "
+        "ATAN), native or subroutine",
+    )
+    p.add_argument("--layout", type=Path, help="memory map (MAP.json format) to use")
+    p.add_argument(
+        "--cpu",
+        metavar="NAME",
+        help="S7 target CPU whose memory limits the program and MAP.json are checked "
+        "against (S7-200: CPU 221, 222, 224, 224XP, 226, default CPU 224; S7-300: CPU 312, "
+        "314, 315-2 DP, 317-2 DP, default CPU 315-2 DP; e.g. --cpu 224XP)",
+    )
+    p.add_argument("--tags", type=Path, metavar="TAGS.xlsx", help="st, scl, plcopen-xml: "
+                   "the machine's signals as a TIA Portal PLC tag table (Excel, import in the "
+                   "PLC tag editor)")
+    p.add_argument("--gvl", type=Path, metavar="GVL.st", help="st, scl, plcopen-xml: the "
+                   "machine's signals as a CODESYS global variable list")
+    p.add_argument("--no-motion", action="store_true", help="omit the motion: the S7-200's PTO "
+                   "networks; st, scl, plcopen-xml: the machine program (the IK block alone)")
+    p.add_argument(
+        "--theta1-on-axis", type=finite, metavar="DEG", help="waist angle on the base axis"
+    )
+    p.add_argument(
+        "-o", "--output", required=True, type=Path, help="program file to write; - for stdout"
+    )
+    p.add_argument("--map", type=Path, help="MAP.json to write (optional)")
+    p.add_argument("--json", action="store_true", help="machine-readable summary and errors")
+    add_mkdir(p)
+    add_arm_options(p)
+    p.set_defaults(func=cmd_stl)

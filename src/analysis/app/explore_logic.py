@@ -358,24 +358,29 @@ def pose_report(
     )
     for j in range(n):  # no pulse count where there is no angle
         table.loc[~ok, f"c{j + 1}"] = pd.NA
-    r = table.loc[branch]
-    if r["status"] != "ok":
-        message = f"{branch}: no solution on this branch ({r['status']}); pick another branch"
-    else:
-        if set(arm.joint_user_units) == {"deg"}:
-            angles = "θ = (" + ", ".join(num(r[label], 2) for label in arm.joint_labels) + ")°"
-        else:  # prismatic joints: each value with its unit
-            angles = "q = (" + ", ".join(
-                num(r[label], 2) + ("°" if u == "deg" else f" {u}")
-                for label, u in zip(arm.joint_labels, arm.joint_user_units, strict=True)
-            ) + ")"  # fmt: skip
-        pulses = ", ".join(str(int(r[f"c{j}"])) for j in range(1, n + 1))
-        message = (
-            f"{branch}: {angles} -> pulses ({pulses}); whole pulses put the gripper "
-            f"{num(r['error_mm'], 3)} mm off the target; reach margin "
-            f"{num(max(-outside, 0.0), 1)} mm (the largest over the branches' wrists)"
-        )
+    message = _branch_message(arm, table.loc[branch], branch, outside)
     return PoseReport(key, branch, True, outside, message, None, table, status, arm.name, arm)
+
+
+def _branch_message(arm: Arm, r: pd.Series, branch: str, outside: float) -> str:
+    """:attr:`PoseReport.message` of a solved target: the chosen branch's row ``r`` in
+    words (its joints, pulses, the whole pulses' error and the reach margin), or why that
+    branch has no solution."""
+    if r["status"] != "ok":
+        return f"{branch}: no solution on this branch ({r['status']}); pick another branch"
+    if set(arm.joint_user_units) == {"deg"}:
+        angles = "θ = (" + ", ".join(num(r[label], 2) for label in arm.joint_labels) + ")°"
+    else:  # prismatic joints: each value with its unit
+        angles = "q = (" + ", ".join(
+            num(r[label], 2) + ("°" if u == "deg" else f" {u}")
+            for label, u in zip(arm.joint_labels, arm.joint_user_units, strict=True)
+        ) + ")"  # fmt: skip
+    pulses = ", ".join(str(int(r[f"c{j}"])) for j in range(1, arm.n_joints + 1))
+    return (
+        f"{branch}: {angles} -> pulses ({pulses}); whole pulses put the gripper "
+        f"{num(r['error_mm'], 3)} mm off the target; reach margin "
+        f"{num(max(-outside, 0.0), 1)} mm (the largest over the branches' wrists)"
+    )
 
 
 def plain_message(rep: PoseReport, theta1_on_axis: float | None = None) -> str:

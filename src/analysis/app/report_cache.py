@@ -49,7 +49,11 @@ INPUTS_KEY = "analysis_inputs"
 SITE_ONLY = (
     "src/analysis/app/report.py",
     "src/analysis/app/report_cache.py",
+    "src/analysis/app/report_files.py",
+    "src/analysis/app/report_notebooks.py",
     "src/analysis/app/site_content.py",
+    "src/analysis/app/site_explorer.py",
+    "src/analysis/app/site_notebooks.py",
     "src/analysis/app/frontpage.py",
 )
 """Modules that only build the site (no notebook imports them): a change to them does not

@@ -1,49 +1,57 @@
-"""The report site's generated pages, figure captions and downloads (MyST Markdown).
+"""The report site's generated pages (MyST Markdown) and its downloads.
 
 :mod:`analysis.app.report` executes the notebooks and runs Sphinx; this module writes what
-Sphinx reads besides the executed notebooks:
+Sphinx reads besides the executed notebooks (those :mod:`analysis.app.site_notebooks`
+prepares):
 
 * ``index.md``: the front page, rendered from :func:`analysis.app.frontpage.front_page_data`;
 * ``register.md``: the errata register (:func:`analysis.audit.register.render_markdown`);
 * ``figures.md``: every figure the notebooks saved, grouped by notebook, with its caption;
 * ``downloads.md``: the generated PLC programs and memory maps, the register CSVs, the
-  Table 4 audit CSV, the executed notebooks (and the PDF when one was printed);
+  Table 4 audit CSV, the executed notebooks (and the PDF when one was printed).
 
-and it prepares each executed notebook for the site (:func:`prepare_notebook`): a figure
-that a cell saved with :func:`analysis.app.plotting.save_figure` is shown as a numbered
-figure with its caption and SVG/PNG links, in place of the inline image and the printed
-file names; widget outputs, which need a kernel, become a note.
-
-Figure captions come from data, never from file names (:func:`figure_captions`): the sidecar
-``<stem>.json`` that ``save_figure(..., caption=...)`` writes, else the entry for the stem in
-``docs/site/captions.toml``. A figure with neither is shown with a visible
-"caption missing" notice (and the browser tests fail on it).
+The names of :mod:`analysis.app.site_notebooks` (captions, notebook pages) and
+:mod:`analysis.app.site_explorer` (the explorer without a kernel) are importable from here.
 """
 
 from __future__ import annotations
 
 import hashlib
-import json
-import re
 import tomllib
 from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
 
-import nbformat
 import pandas as pd
 
 from analysis.app.frontpage import PaperVerdict, Verdict
+from analysis.app.site_explorer import explorer_figure, static_explorer_html
+from analysis.app.site_notebooks import (
+    CAPTIONS_TOML,
+    MISSING_CAPTION,
+    WIDGET_MIME,
+    figure_captions,
+    figure_md,
+    md_code,
+    md_inline,
+    md_role,
+    prepare_notebook,
+    saved_stems,
+)
+from analysis.escape import html_text
 
 __all__ = [
     "CAPTIONS_TOML",
     "MISSING_CAPTION",
+    "WIDGET_MIME",
     "Download",
     "downloads_md",
+    "explorer_figure",
     "figure_captions",
     "figures_md",
     "front_page_md",
     "glance_html",
+    "md_inline",
     "prepare_notebook",
     "register_md",
     "saved_stems",
@@ -53,240 +61,7 @@ __all__ = [
 
 PROJECT = Path(__file__).resolve().parents[3]
 SITE = PROJECT / "docs" / "site"
-CAPTIONS_TOML = SITE / "captions.toml"
 CITATIONS_TOML = SITE / "citations.toml"
-MISSING_CAPTION = "Caption missing: pass caption=... to save_figure() for"
-WIDGET_MIME = "application/vnd.jupyter.widget-view+json"
-WIDGET_NOTE = (
-    "*Interactive controls (sliders, branch picker, FK mode). A static page has no Python "
-    "kernel to drive them: run `make lab` and open `notebooks/{name}` to use them.*"
-)
-EXPLORER_NOTE = (
-    "The explorer, here without a kernel: the same controls drive the arm through its "
-    "closed form printed as JavaScript (`analysis.app.explore_js`, from the recording that "
-    "the numpy and compiled solvers run; the browser tests hold it to Python within 1e-9). "
-    "Drag the 3D view to rotate it, scroll to zoom. With a kernel (`make lab`, "
-    "`notebooks/{name}`) it also shows the pulse error and the manipulability."
-)
-# what ``print(save_figure(fig, stem))`` prints: ['05-workspace-xz.svg', '05-workspace-xz.png']
-_SAVED = re.compile(r"^\['(?P<stem>\d\d-[^'\s/]+)\.svg', '(?P=stem)\.png'\]\s*$", re.M)
-
-
-# --------------------------------------------------------------------------------------------
-# captions
-# --------------------------------------------------------------------------------------------
-def figure_captions(fig_dir: Path, fallback: Path | None = CAPTIONS_TOML) -> dict[str, str]:
-    """Caption of every figure (``<stem>.png``) in ``fig_dir``; '' where none is recorded.
-
-    The sidecar ``<stem>.json`` written by ``save_figure(..., caption=...)`` wins; else
-    ``[captions]`` in ``fallback`` (TOML, stem = caption).
-    """
-    table: dict[str, str] = {}
-    if fallback is not None and Path(fallback).exists():
-        with Path(fallback).open("rb") as fh:
-            table = {str(k): str(v) for k, v in tomllib.load(fh).get("captions", {}).items()}
-    out = {}
-    for png in sorted(Path(fig_dir).glob("*.png")):
-        side = png.with_suffix(".json")
-        caption = ""
-        if side.exists():
-            caption = str(json.loads(side.read_text(encoding="utf-8")).get("caption", ""))
-        out[png.stem] = " ".join((caption or table.get(png.stem, "")).split())
-    return out
-
-
-def _code(text: str) -> str:
-    """Text that can sit between single backticks (an inline literal)."""
-    return " ".join(text.replace("`", "'").split())[:300]
-
-
-def _role(text: str) -> str:
-    """Link text inside a role (``{doc}`text <target>```): no backticks or angle brackets."""
-    return " ".join(text.replace("`", "'").replace("<", "‹").replace(">", "›").split())
-
-
-def _inline(text: str) -> str:
-    """Plain text as MyST inline content (no markup, roles or maths triggered)."""
-    return re.sub(r"([\\`*_\[\]<>{}$|#])", r"\\\1", text)
-
-
-def _figure(stem: str, caption: str, *, name: bool, evidence: str | None = None) -> str:
-    """A MyST figure: the PNG, its caption, SVG/PNG downloads, optionally where it comes from."""
-    cap = _inline(caption) if caption else f"**{MISSING_CAPTION} `{stem}`.**"
-    alt = caption.replace("\n", " ") if caption else f"figure {stem} (no caption recorded)"
-    # the PNG is the preview on the page; the vector file is the one download
-    links = f"{{download}}`SVG </figures/{stem}.svg>`"
-    if evidence:
-        links += f" · in {evidence}"
-    lines = [
-        f":::{{figure}} /figures/{stem}.png",
-        *([f":name: fig-{stem}"] if name else []),
-        f":alt: {alt}",
-        "",
-        f"{cap} ({links})",
-        ":::",
-        "",
-    ]
-    return "\n".join(lines)
-
-
-# --------------------------------------------------------------------------------------------
-# notebooks
-# --------------------------------------------------------------------------------------------
-def saved_stems(cell: nbformat.NotebookNode) -> list[str]:
-    """Figure stems a code cell saved, from the names ``print(save_figure(...))`` printed."""
-    stems: list[str] = []
-    for o in cell.get("outputs", []):
-        if o.get("output_type") == "stream":
-            for m in _SAVED.finditer(o.get("text", "")):
-                if m["stem"] not in stems:
-                    stems.append(m["stem"])
-    return stems
-
-
-def prepare_notebook(
-    nb: nbformat.NotebookNode,
-    name: str,
-    captions: dict[str, str],
-    *,
-    seconds: float | None = None,
-    failure: str | None = None,
-) -> tuple[nbformat.NotebookNode, list[str]]:
-    """A copy of an executed notebook for the site, and the figure stems it places.
-
-    * a code cell that saved figures (in ``captions``, i.e. found in the figure folder)
-      loses the printed file names and its inline images (when there are no more images
-      than saved figures: they are the same figures), and is followed by a Markdown cell
-      with one captioned figure per stem, labelled ``fig-<stem>``;
-    * every code cell is tagged ``hide-input``: its code is hidden behind MyST-NB's toggle
-      ("Show code cell source") and never printed (``report.css``);
-    * widget outputs become a note (a static page has no kernel), the explorer's becomes the
-      explorer without a kernel (:func:`static_explorer_html`);
-    * after the first heading, a note says the notebook was executed for this build and
-      links the executed ``.ipynb``; if it raised (``failure``), an error box at the top says so.
-
-    ``nb`` itself is not modified.
-    """
-    nb = nbformat.from_dict(json.loads(json.dumps(nb)))  # deep copy
-    nb.metadata.pop("widgets", None)
-    cells, placed = [], []
-    for cell in nb.cells:
-        cells.append(cell)
-        if cell.cell_type != "code":
-            continue
-        tags = cell.metadata.setdefault("tags", [])
-        if "hide-input" not in tags:  # code hidden by default: MyST-NB's "Show code" toggle
-            tags.append("hide-input")
-        for o in cell.get("outputs", []):
-            data = o.get("data", {})
-            if WIDGET_MIME in data:
-                explorer = "Explorer of the" in "".join(data.get("text/plain", ""))
-                o["data"] = (
-                    {"text/html": static_explorer_html(name), "text/plain": "explorer"}
-                    if explorer
-                    else {"text/markdown": WIDGET_NOTE.format(name=name)}
-                )
-                o["metadata"] = {}
-        stems = [s for s in saved_stems(cell) if s in captions and s not in placed]
-        if not stems:
-            continue
-        images = [o for o in cell.outputs if "image/png" in o.get("data", {})]
-        keep = []
-        for o in cell.outputs:
-            if o.get("output_type") == "stream":
-                o["text"] = _SAVED.sub("", o["text"]).strip("\n")
-                if o["text"]:
-                    o["text"] += "\n"
-                    keep.append(o)
-            elif o in images and len(images) <= len(stems):
-                continue
-            else:
-                keep.append(o)
-        cell.outputs = keep
-        cells.append(
-            nbformat.v4.new_markdown_cell(
-                "\n".join(_figure(s, captions[s], name=True) for s in stems)
-            )
-        )
-        placed += stems
-    for i, cell in enumerate(cells):
-        if cell.cell_type == "markdown" and re.search(r"^# ", cell.source, re.M):
-            took = f" in {seconds:.1f} s" if seconds is not None else ""
-            note = (
-                f":::{{note}}\nExecuted top to bottom in a fresh kernel for this build{took}. "
-                f"The executed notebook: {{download}}`{name} </downloads/notebooks/{name}>`; "
-                "the stored one in `notebooks/` is the nbval reference.\n:::\n"
-            )
-            cells.insert(i + 1, nbformat.v4.new_markdown_cell(note))
-            break
-    if failure:  # first thing on the page
-        box = (
-            ":::{error}\nThis notebook **failed** when executed for this build: "
-            f"`{_code(failure)}`. The outputs below stop at the failing cell.\n:::\n"
-        )
-        cells.insert(0, nbformat.v4.new_markdown_cell(box))
-    nb.cells = cells
-    return nb, placed
-
-
-def explorer_figure(arm) -> dict:
-    """The page explorer's empty figure of ``arm`` as plotly JSON (arm and target traces kept,
-    to be drawn in place by ``js/arm3d_view.js``; the title keeps its margin)."""
-    from analysis.app.arm3d import arm_figure, workspace_box
-
-    fig = arm_figure(
-        arm, None, None, box=workspace_box(arm), keep_arm=True, height=480,
-        title=arm.description.title,
-    )
-    return json.loads(fig.to_json()) | {"config": {"displaylogo": False, "responsive": True}}
-
-
-def static_explorer_html(name: str, arms: Iterable[str] | None = None) -> str:
-    """The explorer for a page without a kernel: a ``div.static-explorer`` that
-    ``js/static_explorer.js`` (served from ``_static``) fills with the controls and the 3D
-    view, and every arm that loads (:func:`~analysis.app.explore_logic.available_arms`) printed
-    as JavaScript (:func:`~analysis.app.explore_js.arm_module_js`), each with its figure
-    (:func:`explorer_figure`) and start target
-    (:func:`~analysis.app.explore_logic.default_target`; Table 4 row 1 for the paper's arm)."""
-    import numpy as np
-
-    from analysis.app.explore_js import arm_module_js
-    from analysis.app.explore_logic import available_arms, default_target
-    from analysis.escape import js_json
-    from analysis.kinematics.arm import load_arm
-
-    names = list(arms) if arms is not None else list(available_arms()[0])
-    scripts, figures, start, left = [], {}, {}, {}
-    for arm_name in names:
-        arm = load_arm(arm_name)
-        try:
-            scripts.append(f"analysisArms[{js_json(arm_name)}] = {arm_module_js(arm)};")
-        except (ValueError, TypeError, AttributeError) as exc:  # not a D-H chain
-            left[arm_name] = (
-                f"left out of this page ({exc}; the page prints D-H chains only); "
-                f"make lab, notebooks/{name} explores it with a kernel"
-            )
-            continue
-        t = [100.0, 100.0, 600.0] if arm_name == "grabber" else default_target(arm).tolist()
-        figures[arm_name] = explorer_figure(arm)
-        start[arm_name] = [float(np.round(v, 9)) for v in t]
-    first = "grabber" if "grabber" in figures else next(iter(figures))
-    cfg = {"id": hashlib.sha1(name.encode()).hexdigest()[:8], "arm": first,
-           "arms": list(figures), "figures": figures, "start": start, "left": left}
-    return (
-        f'<p class="explorer-note">{_html(EXPLORER_NOTE.format(name=name))}</p>\n'
-        f"<div class=\"static-explorer\" data-explorer='{_html(json.dumps(cfg))}'>"
-        "<noscript>The explorer needs JavaScript.</noscript></div>\n"
-        "<script>window.analysisArms = window.analysisArms || {};\n"
-        + "\n".join(scripts)
-        + "</script>\n"
-    )
-
-
-def _html(text: str) -> str:
-    import html
-
-    return html.escape(text, quote=True).replace("`", "")
 
 
 # --------------------------------------------------------------------------------------------
@@ -298,7 +73,7 @@ def _md_table(df: pd.DataFrame) -> str:
     cols = ([df.index.name] if show_index else []) + [str(c) for c in df.columns]
 
     def cell(v) -> str:
-        return _inline(" ".join(str(v).split()))
+        return md_inline(" ".join(str(v).split()))
 
     rows = [
         ([cell(i)] if show_index else []) + [cell(v) for v in r]
@@ -315,11 +90,11 @@ def _evidence(links: Iterable[tuple[str, str]], titles: dict[str, str]) -> str:
         if page.startswith("notebooks/"):
             stem = page.split("/", 1)[1]
             if stem not in titles:  # not part of this build
-                parts.append(f"notebook {_inline(stem)}")
+                parts.append(f"notebook {md_inline(stem)}")
                 continue
             label = titles[stem]
             label = label if label.startswith(stem[:2]) else f"{stem[:2]} · {label}"
-        parts.append(f"{{doc}}`{_role(label)} </{page}>`")
+        parts.append(f"{{doc}}`{md_role(label)} </{page}>`")
     return "**Evidence:** " + " · ".join(parts)
 
 
@@ -332,7 +107,7 @@ def citations() -> dict[str, dict]:
 def cite(paper: str) -> str:
     """One paper's citation as MyST inline text."""
     c = citations()[paper]
-    return f"{_inline(c['authors'])}. *{_inline(c['title'])}*. {_inline(c['venue'])}."
+    return f"{md_inline(c['authors'])}. *{md_inline(c['title'])}*. {md_inline(c['venue'])}."
 
 
 def _html_table(df: pd.DataFrame, wrong: pd.DataFrame | None = None, cls: str = "") -> str:
@@ -412,14 +187,14 @@ def glance_html(papers: list[PaperVerdict]) -> str:
 
 def _paper_md(v: PaperVerdict, titles: dict[str, str]) -> list[str]:
     c = citations().get(v.paper)
-    out = [f"({v.anchor})=", f"### Seed {v.seed}: {_inline(v.system)}", ""]
+    out = [f"({v.anchor})=", f"### Seed {v.seed}: {md_inline(v.system)}", ""]
     if c:
         out += [f"{cite(v.paper)}", ""]
     if v.verdict:
         out += [":::{important}", f"**Verdict.** {v.verdict}", ":::", ""]
     else:
         out += [":::{note}", NO_SUMMARY, ":::", ""]
-    take = [f"{{doc}}`{_role(label)} </{page}>`" for page, label in v.artefacts]
+    take = [f"{{doc}}`{md_role(label)} </{page}>`" for page, label in v.artefacts]
     out += [
         "**Take away:** " + (f"{v.take_away} " if v.take_away else "") + " · ".join(take),
         "",
@@ -463,9 +238,9 @@ def front_page_md(
         out += [":::{error}", "**This build is incomplete.**", ""]
         for what, why in problems.items():
             where = (
-                f"{{doc}}`{_role(titles[what])} </notebooks/{what}>`" if what in titles else what
+                f"{{doc}}`{md_role(titles[what])} </notebooks/{what}>`" if what in titles else what
             )
-            out.append(f"- {where}: `{_code(why)}`")
+            out.append(f"- {where}: `{md_code(why)}`")
         out += [":::", ""]
     heads = [h for s in sections if isinstance(s, Verdict) for h in s.headline]
     if heads:
@@ -495,12 +270,12 @@ def front_page_md(
                 where = (
                     f"{{ref}}`notebook {home.split('/')[-1][:2]} <fig-{stem}>`" if home else None
                 )
-                out.append(_figure(stem, captions[stem], name=False, evidence=where))
+                out.append(figure_md(stem, captions[stem], name=False, evidence=where))
         out += [_evidence(s.evidence, titles), ""]
     if CITATIONS_TOML.exists():
         out += ["## The four papers", ""]
         for paper, c in citations().items():
-            out.append(f"- **Seed {c['seed']}.** {cite(paper)} ({_inline(c['source'])})")
+            out.append(f"- **Seed {c['seed']}.** {cite(paper)} ({md_inline(c['source'])})")
         out.append("")
     for caption, docs in toc.items():
         out += ["```{toctree}", f":caption: {caption}", ":maxdepth: 1", "", *docs, "```", ""]
@@ -555,11 +330,11 @@ def figures_md(captions: dict[str, str], homes: dict[str, str], titles: dict[str
         nb = next((t for t in titles if t.startswith(num)), None)
         head = titles[nb] if nb else f"Notebook {num}"
         head = head if head.startswith(num) else f"{num} · {head}"
-        out += [f"## {_inline(head)}", ""]
+        out += [f"## {md_inline(head)}", ""]
         for stem in stems:
             home = homes.get(stem)
             where = f"{{ref}}`notebook {num} <fig-{stem}>`" if home else None
-            out.append(_figure(stem, captions[stem], name=False, evidence=where))
+            out.append(figure_md(stem, captions[stem], name=False, evidence=where))
     return "\n".join(out)
 
 
@@ -667,13 +442,14 @@ def downloads_md(src: Path, items: list[Download]) -> str:
             data = f.read_bytes()
             name = Path(it.path).name
             link = (
-                f'<a class="reference download" href="{_html(name)}" download="{_html(name)}">'
-                f'<code class="docutils literal notranslate">{_html(name)}</code></a>'
+                f'<a class="reference download" href="{html_text(name)}" '
+                f'download="{html_text(name)}">'
+                f'<code class="docutils literal notranslate">{html_text(name)}</code></a>'
                 if it.at_root
                 else f"{{download}}`{name} </downloads/{it.path}>`"
             )
             out.append(
-                f"| {link} | {_inline(it.what)} "
+                f"| {link} | {md_inline(it.what)} "
                 f"| {len(data):,} | `{hashlib.sha256(data).hexdigest()}` "
                 f"| {'`' + it.how + '`' if it.how else ''} |"
             )

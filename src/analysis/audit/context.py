@@ -20,52 +20,9 @@ import numpy as np
 import sympy as sp
 
 from analysis import papers
+from analysis.audit.bespoke import Bespoke
 
 __all__ = ["Bespoke", "Context", "Product", "context", "sample_q"]
-
-
-@dataclass
-class Bespoke:
-    """What one paper defines for its checks, each registered by name."""
-
-    paper: str
-    domains: dict[str, Callable] = field(default_factory=dict)
-    matrices: dict[str, Callable] = field(default_factory=dict)
-    substitutions: dict[str, Callable] = field(default_factory=dict)
-    values: dict[str, Callable] = field(default_factory=dict)
-    predicates: dict[str, Callable] = field(default_factory=dict)
-    facts: dict[str, Callable] = field(default_factory=dict)
-
-    def _add(self, table: str, name: str | None = None):
-        def deco(fn):
-            getattr(self, table)[name or fn.__name__] = fn
-            return fn
-
-        return deco
-
-    def domain(self, name=None):
-        """``fn() -> {symbol name: array}``: a named set of samples (sampled, claim, stl)."""
-        return self._add("domains", name)
-
-    def matrix(self, name=None):
-        """``fn() -> sympy.Matrix``: a named matrix for products."""
-        return self._add("matrices", name)
-
-    def substitution(self, name=None):
-        """``fn() -> {symbol: expression}``."""
-        return self._add("substitutions", name)
-
-    def value(self, name=None):
-        """``fn(row, column) -> float``: a recomputed table cell."""
-        return self._add("values", name)
-
-    def predicate(self, name=None):
-        """``fn(text, ctx) -> Result``: a check no kind expresses."""
-        return self._add("predicates", name)
-
-    def fact(self, name=None):
-        """``fn() -> value``: a computed number an evidence template names."""
-        return self._add("facts", name)
 
 
 @dataclass
@@ -144,12 +101,19 @@ def context(paper: str) -> Context:
     return Context(papers.load(paper), bespoke(paper))
 
 
-def bespoke(paper: str) -> Bespoke:
-    """What ``analysis.audit.papers.<paper>.checks`` registers (``B``), or nothing."""
+def bespoke(paper: str, printed: papers.Paper | None = None) -> Bespoke:
+    """What ``analysis.audit.papers.<paper>.checks`` registers (``B``); for a paper without a
+    home that prints its arm as a D-H table (``[paper.model]``), what that model defines
+    (:mod:`analysis.audit.model`); else nothing."""
     home = f"analysis.audit.papers.{paper}"
-    if importlib.util.find_spec(home) is None:
-        return Bespoke(paper)
-    return importlib.import_module(f"{home}.checks").B
+    if importlib.util.find_spec(home) is not None:
+        return importlib.import_module(f"{home}.checks").B
+    printed = printed or papers.load(paper)
+    if "model" in printed.meta:
+        from analysis.audit.model import bespoke as model_bespoke
+
+        return model_bespoke(printed)
+    return Bespoke(paper)
 
 
 def sample_q(arm, rng: np.random.Generator, n: int, branch: str | None = None) -> np.ndarray:

@@ -120,6 +120,8 @@ def _equation(text: str, ctx, ns: str):
 
 def _same_equation(text: str, ref: str, spec, ctx) -> bool:
     ns = spec.get("namespace", "main")
+    if "defines" in spec:  # expressions of one named quantity
+        return expressions_agree(ctx.paper.parse(text, ns), ctx.paper.parse(ref, ns))
     angle = spec["kind"] == "sampled" and spec.get("angle", True)
     d_t, d_r = _equation(text, ctx, ns), _equation(ref, ctx, ns)
     return expressions_agree(d_t, d_r, angle=angle) or expressions_agree(d_t, -d_r, angle=angle)

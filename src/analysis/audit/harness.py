@@ -18,7 +18,8 @@ Each probe is first held against the correction with SymPy (:func:`equivalent`: 
 expression, equation, claim, cell or instructions, proved, not sampled); a probe that says the
 same is not a counterexample. Every other probe must fail ``verify``. For a ``holds`` row whose
 printed text is what is checked (no reading), the same edits of the printed text must also fail
-the check's computation alone (``holds``): every printed symbol, cell and digit is pinned.
+the check's computation alone (``holds``), and so must the edits of every other printed record
+whose own check passes (:func:`run_records`): every printed symbol, cell and digit is pinned.
 
 Edits are drawn seeded per object and per edit kind (``per_kind``), so that a run tries the
 same texts every time and the whole harness fits the test budget.
@@ -179,6 +180,8 @@ def _proved_equation(a: str, b: str, m, ctx) -> bool:
     from analysis.audit.kinds.symbolic import equation
 
     ns = m.spec.get("namespace", "main")
+    if "defines" in m.spec:
+        return _proved_equal(ctx.paper.parse(a, ns), ctx.paper.parse(b, ns))
     (la, ra), (lb, rb) = equation(a, ctx, ns), equation(b, ctx, ns)
     da, db = la - ra, lb - rb
     angle = m.spec.get("kind") == "sampled" and m.spec.get("angle", True)
@@ -291,6 +294,37 @@ def run_paper(reg, ctx, per_kind: int = 2, report: Report | None = None) -> Repo
     return report
 
 
+def run_records(reg, ctx, per_kind: int = 2, report: Report | None = None) -> Report:
+    """The printed records whose checks pass and that no ``holds`` row already probes (every
+    record unit the register does not name as what holds): each single edit of the printed text
+    that SymPy does not prove equivalent must fail the record's check (each printed symbol,
+    cell and digit pinned by the paper's own check)."""
+    from types import SimpleNamespace
+
+    from analysis.audit import records
+    from analysis.audit.kinds import check
+
+    report = report or Report()
+    probed = {m.source for m in reg.manifestations if m.status == "holds" and not m.reading}
+    symbols = sorted(k for k, v in ctx.paper.symbols().items() if not callable(v))
+    for u in records.units(ctx.paper):
+        if u.spec is None or u.ref in probed or "reading" in (ctx.paper.record(u.record).get("check") or {}):  # noqa: E501
+            continue
+        if not check(u.spec, u.text, ctx).ok:
+            continue  # a failing record is its causes' (run_paper probes their corrections)
+        report.objects += 1
+        m = SimpleNamespace(id=u.ref, spec=u.spec, equivalent=(), corrected=u.text)
+        rng = _rng("record:" + u.ref)
+        for kind, ts in edits(u.text, symbols).items():
+            for t in rng.sample(ts, min(per_kind, len(ts))):
+                report.probes[kind] += 1
+                if equivalent(t, u.text, m, ctx):
+                    report.equivalent[kind] += 1
+                elif check(u.spec, t, ctx).ok:
+                    report.accepted.append((u.ref, kind, "record", t))
+    return report
+
+
 def run(papers=None, per_kind: int = 2) -> Report:
     """The harness over every object of :func:`analysis.audit.manifestations` (or the
     registers of ``papers``)."""
@@ -300,6 +334,7 @@ def run(papers=None, per_kind: int = 2) -> Report:
     report = Report()
     for p in papers or r.available():
         run_paper(r.register(p), context(p), per_kind, report)
+        run_records(r.register(p), context(p), per_kind, report)
     return report
 
 

@@ -22,11 +22,10 @@ import tomllib
 from functools import cache
 from pathlib import Path
 
-from analysis.audit.equivalence import same
+from analysis.audit import records
+from analysis.audit.render import headline, render_paper
 from analysis.audit.schema import (
-    COUNTED,
     COUNTING_RULE,
-    STATUSES,
     Cause,
     Manifestation,
     Register,
@@ -35,9 +34,30 @@ from analysis.audit.schema import (
 from analysis.paths import PROJECT, build_dir, data_dir
 
 __all__ = [
-    "BEGIN", "END", "available", "check", "check_is_cached", "compare", "coverage",
-    "each_cells", "generated", "headline", "items_table", "load", "register", "register_path",
-    "render_markdown", "source_path", "write_all",
+    "BEGIN",
+    "END",
+    "answers",
+    "audit_file",
+    "available",
+    "build",
+    "cached_answers",
+    "changed_inputs",
+    "check",
+    "check_is_cached",
+    "compare",
+    "coverage",
+    "each_cells",
+    "findings",
+    "generated",
+    "headline",
+    "items_table",
+    "load",
+    "markdown",
+    "register",
+    "register_path",
+    "render_markdown",
+    "source_path",
+    "write_all",
 ]  # fmt: skip
 
 BEGIN, END = "<!-- errata:begin -->", "<!-- errata:end -->"
@@ -129,8 +149,19 @@ def _location(spec, paper, given: str | None) -> str:
     return "; ".join(dict.fromkeys(out))
 
 
-def _manifestation(cause: dict, m: dict, ctx, check) -> Manifestation:
+def _manifestation(cause: dict, m: dict, ctx, check, by_ref=None) -> Manifestation:
+    """A manifestation of ``cause``: its own ``check``, or the check its printed unit carries
+    in the paper (``by_ref``: unit reference -> :class:`~analysis.audit.records.Unit`), the
+    reading too."""
     paper = ctx.paper
+    unit = (by_ref or {}).get(m["printed"]) if isinstance(m["printed"], str) else None
+    if "check" not in m:
+        if unit is None or unit.spec is None:
+            raise ValueError(f"{cause['id']}/{m['id']}: no check, and {m['printed']!r} is no "
+                             "checked unit of the paper")  # fmt: skip
+        m = {**m, "check": dict(unit.spec)}
+        if "reading" not in m and unit.text != paper.text(m["printed"][1:]):
+            m["reading"] = unit.text  # the record's check reads the print this way
     spec = m["check"]
     printed = _printed(m["printed"], paper)
     holds = cause["status"] == "holds"
@@ -141,6 +172,8 @@ def _manifestation(cause: dict, m: dict, ctx, check) -> Manifestation:
         if text not in memo:
             memo[text] = check(spec, text, ctx)
         return memo[text]
+
+    from analysis.audit.equivalence import same
 
     declared = (corrected, *m.get("equivalent", ()))
 
@@ -194,7 +227,7 @@ def each_cells(e: dict, paper):
                        f"{rec.location.split(',')[0]} row {r} {c}", {"row": r, "column": c})
 
 
-def _each(cause: dict, e: dict, ctx, check, explained: set[str]) -> list[Manifestation]:
+def _each(cause: dict, e: dict, ctx, check, explained: set[str], by_ref) -> list[Manifestation]:
     """The printed cells a ``holds`` cause's ``[[cause.each]]`` names: one manifestation per
     cell, but for the cells another cause explains (its manifestations name them,
     ``explained``). A cell that fails its check and that no cause explains is an error naming
@@ -203,8 +236,10 @@ def _each(cause: dict, e: dict, ctx, check, explained: set[str]) -> list[Manifes
     for slug, ref, where, cell in each_cells(e, ctx.paper):
         if ref in explained:
             continue
-        m = {"id": slug, "printed": ref, "check": {**e["check"], **cell}, "location": where}
-        mm = _manifestation(cause, m, ctx, check)
+        m = {"id": slug, "printed": ref, "location": where}
+        if "check" in e:
+            m["check"] = {**e["check"], **cell}
+        mm = _manifestation(cause, m, ctx, check, by_ref)
         if not mm.holds(mm.printed):
             raise ValueError(
                 f"unexplained: {ctx.paper.id} {where} ({ref}): the printed cell fails its check "
@@ -226,20 +261,44 @@ def _also(cause: dict, ctx, check):
 
 @cache
 def register(paper: str) -> Register:
-    """The register of ``paper``, built from its data file (cached; takes seconds)."""
-    if paper not in available():
-        raise ValueError(f"no paper {paper!r}; expected one of {', '.join(available())}")
+    """The register of ``paper``, built from its data file (cached; takes seconds). A paper of
+    ``data/papers`` without a register file has an empty one: its failing records are
+    unexplained (:attr:`Register.findings`)."""
     from analysis.audit.context import context
+    from analysis.papers import names
+
+    if paper not in names():
+        raise ValueError(f"no paper {paper!r}; expected one of {', '.join(names())}")
+    path = source_path(paper)
+    raw = tomllib.loads(path.read_text(encoding="utf-8")) if path.is_file() else {}
+    return build(context(paper), raw)
+
+
+def audit_file(paper_path, register_path=None) -> Register:
+    """The register of a paper outside ``data/`` (a paper being added, a test's example): its
+    data file, and its register file if there is one yet; checked by the shared kinds."""
+    from analysis.audit.context import Context, bespoke
+    from analysis.papers import load_file
+
+    paper = load_file(Path(paper_path).resolve())
+    raw = tomllib.loads(Path(register_path).read_text(encoding="utf-8")) if register_path else {}
+    return build(Context(paper, bespoke(paper.id, paper)), raw)
+
+
+def build(ctx, raw: dict) -> Register:
+    """The register of the paper of context ``ctx`` from its register data ``raw`` (the parsed
+    ``data/registers/<paper>.toml``; ``{}``: no cause written yet), every printed record held
+    against it (:func:`analysis.audit.records.audit`)."""
     from analysis.audit.kinds import check
 
-    raw = tomllib.loads(source_path(paper).read_text(encoding="utf-8"))
-    ctx = context(paper)
+    paper = ctx.paper.id
     causes = []
-    named = {c["id"]: [_manifestation(c, m, ctx, check) for m in c.get("manifestation", ())]
-             for c in raw["cause"]}  # fmt: skip
+    by_ref = {u.ref: u for u in records.units(ctx.paper)}
+    named = {c["id"]: [_manifestation(c, m, ctx, check, by_ref) for m in c.get("manifestation", ())]
+             for c in raw.get("cause", ())}  # fmt: skip
     explained = {m.source for ms in named.values() for m in ms}
-    for c in raw["cause"]:
-        ms = named[c["id"]] + [x for e in c.get("each", ()) for x in _each(c, e, ctx, check, explained)]  # noqa: E501
+    for c in raw.get("cause", ()):
+        ms = named[c["id"]] + [x for e in c.get("each", ()) for x in _each(c, e, ctx, check, explained, by_ref)]  # noqa: E501
         ns = {"facts": _Namespace(ctx.fact)}
         if ms:  # a cause's template may name its first manifestation's checks
             ns.update(printed=ms[0].result(ms[0].checked), corrected=ms[0].result(ms[0].corrected))
@@ -255,14 +314,26 @@ def register(paper: str) -> Register:
                 rests_on=tuple(c.get("rests_on", ())), extra=_also(c, ctx, check),
             )
         )
-    check_summary(paper, raw.get("summary", {}))
-    ns = {"facts": _Namespace(ctx.fact), "m": _Checked(causes)}
-    try:
-        summary = {k: v.format_map(ns) for k, v in raw["summary"].items()}
-    except (AttributeError, KeyError, IndexError, TypeError, ValueError) as exc:
-        raise ValueError(f"register {paper}: [summary] template needs {exc!r}") from None
-    head = raw["register"]
-    return Register(paper, head["title"], tuple(causes), summary, tuple(raw.get("change", ())))
+    summary: dict = {}
+    if "summary" in raw:  # a register being written may have none yet (its tests ask for one)
+        check_summary(paper, raw["summary"])
+        ns = {"facts": _Namespace(ctx.fact), "m": _Checked(causes)}
+        try:
+            summary = {k: v.format_map(ns) for k, v in raw["summary"].items()}
+        except (AttributeError, KeyError, IndexError, TypeError, ValueError) as exc:
+            raise ValueError(f"register {paper}: [summary] template needs {exc!r}") from None
+    title = raw.get("register", {}).get("title", ctx.paper.title)
+    memo: dict = {}
+
+    def holds(u) -> bool:
+        key = (repr(sorted(u.spec.items())), u.text)
+        if key not in memo:
+            memo[key] = check(u.spec, u.text, ctx).ok
+        return memo[key]
+
+    findings, counts = records.audit(ctx.paper, [m for c in causes for m in c.manifestations], holds)  # noqa: E501
+    return Register(paper, title, tuple(causes), summary, tuple(raw.get("change", ())),
+                    tuple(f.message for f in findings), counts)  # fmt: skip
 
 
 def manifestations():
@@ -329,20 +400,27 @@ def _csv(rows, columns) -> str:
     return buf.getvalue()
 
 
-# --- generated files, and the cache that answers check() ------------------------------------
-def _inputs_hash() -> str:
-    """Hash of everything the generated files depend on: the package's source, ``data/``
+# --- generated files, and the cache that answers errata --------------------------------------
+def _inputs() -> dict[str, str]:
+    """Every input of the generated files, each with its hash: the package's source, ``data/``
     (without the generated errata) and the README outside the block."""
-    h = hashlib.sha256()
     src = Path(__file__).resolve().parents[1]
     files = sorted(src.rglob("*.py")) + sorted(
         p for p in data_dir().rglob("*") if p.is_file() and "errata" not in p.parts
     )
-    for p in files:
-        h.update(str(p.relative_to(p.anchor)).encode() + b"\0" + p.read_bytes())
+    out = {str(p.relative_to(PROJECT) if p.is_relative_to(PROJECT) else p):
+           hashlib.sha256(p.read_bytes()).hexdigest() for p in files}  # fmt: skip
     readme = PROJECT / "README.md"
     if readme.exists():
-        h.update(_outside_block(readme.read_text(encoding="utf-8")).encode())
+        out["README.md (outside the block)"] = hashlib.sha256(
+            _outside_block(readme.read_text(encoding="utf-8")).encode()).hexdigest()  # fmt: skip
+    return out
+
+
+def _inputs_hash(inputs: dict[str, str] | None = None) -> str:
+    h = hashlib.sha256()
+    for k, v in sorted((inputs or _inputs()).items()):
+        h.update(f"{k}\0{v}\0".encode())
     return h.hexdigest()
 
 
@@ -364,16 +442,55 @@ def generated(papers=None) -> dict[Path, str]:
     return out
 
 
-def _cached_digests(papers) -> dict[str, str] | None:
-    path = build_dir() / "errata-cache" / f"{_inputs_hash()}-{'-'.join(papers)}.json"
-    return json.loads(path.read_text()) if path.exists() else None
+def _cache_dir() -> Path:
+    return build_dir() / "errata-cache"
 
 
-def _store_digests(papers, files: dict[Path, str]) -> None:
-    path = build_dir() / "errata-cache" / f"{_inputs_hash()}-{'-'.join(papers)}.json"
-    path.parent.mkdir(parents=True, exist_ok=True)
-    digests = {str(p): hashlib.sha256(t.encode()).hexdigest() for p, t in files.items()}
-    path.write_text(json.dumps(digests))
+def _audited(papers) -> list[str]:
+    """The papers whose records a selection audits: the selection, or with every register
+    selected, every paper of data/papers (one without a register has all to explain)."""
+    from analysis.papers import names
+
+    return list(names()) if set(papers) >= set(available()) else list(papers)
+
+
+def _answers(papers, inputs: dict[str, str], files: dict[Path, str] | None = None) -> dict:
+    """What ``errata`` answers for ``papers`` (built now): the generated files' digests, the
+    records' findings and the README block; stored under the hash of ``inputs``."""
+    files = generated(papers) if files is None else files
+    out = {
+        "digests": {str(p): hashlib.sha256(t.encode()).hexdigest() for p, t in files.items()},
+        "findings": [f for p in _audited(papers) for f in register(p).findings],
+        "markdown": render_markdown(papers),
+    }
+    d = _cache_dir()
+    d.mkdir(parents=True, exist_ok=True)
+    key = f"{_inputs_hash(inputs)}-{'-'.join(papers)}"
+    (d / f"{key}.json").write_text(json.dumps(out, ensure_ascii=False), encoding="utf-8")
+    (d / "inputs.json").write_text(json.dumps(inputs), encoding="utf-8")
+    return out
+
+
+def cached_answers(papers=None) -> dict | None:
+    """The stored answers for ``papers`` if no input changed since they were built, else None
+    (reads files and hashes them: well under a second)."""
+    papers = list(papers or available())
+    path = _cache_dir() / f"{_inputs_hash()}-{'-'.join(papers)}.json"
+    return json.loads(path.read_text(encoding="utf-8")) if path.exists() else None
+
+
+def changed_inputs() -> list[str]:
+    """The inputs that changed since the registers were last built (what a rebuild is for)."""
+    last = _cache_dir() / "inputs.json"
+    before = json.loads(last.read_text(encoding="utf-8")) if last.exists() else {}
+    now = _inputs()
+    return sorted(k for k in before.keys() | now.keys() if before.get(k) != now.get(k))
+
+
+def answers(papers=None) -> dict:
+    """The answers for ``papers``: stored, or built now (see :func:`changed_inputs`)."""
+    papers = list(papers or available())
+    return cached_answers(papers) or _answers(papers, _inputs())
 
 
 def write_all(papers=None) -> list[str]:
@@ -385,93 +502,35 @@ def write_all(papers=None) -> list[str]:
     changed = {p: t for p, t in files.items() if not p.exists() or p.read_text("utf-8") != t}
     if changed:
         write_many_atomic(changed, make_parents=True)
-    _store_digests(papers, files)
+    _answers(papers, _inputs(), files)  # the README is an input: hashed after it is written
     return sorted(str(p.relative_to(PROJECT)) for p in changed)
 
 
 def check_is_cached(papers=None) -> bool:
     """Can :func:`check` answer from the cache (no input changed since the last build)?"""
-    return _cached_digests(list(papers or available())) is not None
+    return cached_answers(papers) is not None
 
 
 def check(papers=None) -> list[str]:
     """The generated files that are missing or out of date (empty: all current). Answered
     from the cache when every input is unchanged since the registers were last built."""
-    papers = list(papers or available())
-    digests = _cached_digests(papers)
-    if digests is None:
-        files = generated(papers)
-        _store_digests(papers, files)
-        digests = {str(p): hashlib.sha256(t.encode()).hexdigest() for p, t in files.items()}
     stale = []
-    for p, d in digests.items():
+    for p, d in answers(papers)["digests"].items():
         path = Path(p)
         if not path.exists() or hashlib.sha256(path.read_bytes()).hexdigest() != d:
             stale.append(str(path.relative_to(PROJECT)))
     return sorted(stale)
 
 
-# --- the README block ----------------------------------------------------------------------
-def _md(s: str, limit: int | None = None) -> str:
-    s = " ".join(str(s).split())
-    if limit and len(s) > limit:
-        s = s[: limit - 1] + "…"
-    return s.replace("|", "\\|")
+def findings(papers=None) -> list[str]:
+    """What the records' audit cannot account for in ``papers`` (empty: every printed record
+    checked, every failure explained), from the cache when no input changed."""
+    return list(answers(papers)["findings"])
 
 
-_NAMES = {
-    "error": ("error", "errors"), "omission": ("omission", "omissions"),
-    "unsupported": ("unsupported claim", "unsupported claims"),
-    "uncertain": ("reading the extraction leaves uncertain", "readings the extraction leaves uncertain"),  # noqa: E501
-    "notation": ("notation variant", "notation variants"),
-    "extraction": ("extraction artefact", "extraction artefacts"),
-    "holds": ("audited claim that holds", "audited claims that hold"),
-}  # fmt: skip
-
-
-def _n(n: int, status: str) -> str:
-    return f"{n} {_NAMES[status][n != 1]}"
-
-
-def headline(reg: Register) -> str:
-    """The count of causes (by status) and of the places they show."""
-    c = reg.counts()
-    against = [_n(c[s], s) for s in COUNTED if c[s]]
-    apart = [_n(c[s], s) for s in STATUSES if s not in COUNTED and c[s]]
-    shown = sum(len(x.manifestations) for x in reg.causes if x.status in COUNTED)
-    text = (
-        f"**{sum(c[s] for s in COUNTED)} root causes against the paper** "
-        f"({', '.join(against)}), shown in {shown} places."
-    )
-    if apart:
-        text += " Listed apart, not counted: " + ", ".join(apart) + "."
-    return text
-
-
-def _cause_row(c: Cause) -> str:
-    where = ""
-    if c.manifestations and c.status != "holds":
-        where = f"{len(c.manifestations)}: " + _md(c.locations, 90)
-    return f"| `{c.id}` | {c.status} | {c.severity} | {c.kind} | {_md(c.title, 140)} | {where} |"
-
-
-def render_paper(reg: Register) -> str:
-    lines = [f"### {reg.title}", "", headline(reg)]
-    if reg.summary.get("verdict"):
-        lines += ["", f"*Verdict.* {_md(reg.summary['verdict'])}"]
-    if reg.summary.get("take_away"):
-        lines += ["", f"*Take away.* {_md(reg.summary['take_away'])}"]
-    lines += [
-        "",
-        f"Register: `data/registers/{reg.paper}.toml`, generated `data/errata/{reg.paper}.csv` "
-        "(one row per cause, its manifestations beneath; every row names its test).",
-        "",
-        "| cause | status | severity | kind | what | where |",
-        "|---|---|---|---|---|---|",
-    ]
-    order = {s: i for i, s in enumerate(STATUSES)}
-    lines += [_cause_row(c) for c in sorted(reg.causes, key=lambda c: order[c.status])]
-    return "\n".join(lines) + "\n"
+def markdown(papers=None) -> str:
+    """The README block of ``papers``, from the cache when no input changed."""
+    return answers(papers)["markdown"]
 
 
 def render_markdown(papers=None) -> str:

@@ -216,6 +216,12 @@ class Register:
     causes: tuple[Cause, ...]
     summary: Mapping = field(default_factory=dict)
     changes: tuple[Mapping, ...] = ()
+    findings: tuple[str, ...] = ()
+    """What the records' audit cannot account for, one line each (a failing record no cause
+    explains, a passing one a counted cause names, a printed record without a check):
+    :func:`analysis.audit.records.audit`. Empty when the register explains the paper."""
+    record_counts: Mapping = field(default_factory=dict)
+    """Units of the paper's printed records checked, passing, failing, explained, given."""
 
     def __post_init__(self) -> None:
         ids = [c.id for c in self.causes] + [m.id for c in self.causes for m in c.manifestations]

@@ -433,10 +433,6 @@ class Arm:
         return np.stack(cols, axis=-1).astype(float)
 
     # --- reach ---------------------------------------------------------------------------
-    def outside_distance(self, p: npt.ArrayLike) -> npt.NDArray[np.float64]:
-        """Signed distance [mm] of targets outside the reachable set (> 0: unreachable)."""
-        return self.solve(p, self.branches[:1]).outside_mm
-
     def is_reachable(self, p: npt.ArrayLike, tol: float = DEFAULT_TOL_MM) -> npt.NDArray[np.bool_]:
         """Mask of targets within ``tol`` mm of the reachable set (..., )."""
         return self.solve(p, self.branches[:1], tol=tol).reachable
@@ -593,12 +589,6 @@ class Arm:
         sol = self.solve(p, names, theta1_on_axis=theta1_on_axis, tol=tol)
         self.raise_for(p, int(sol.status), float(sol.outside_mm), tol=tol)
         return {b: sol.theta[i] for i, b in enumerate(names) if sol.ok[i]}
-
-    def check_target(self, p: npt.ArrayLike, *, tol: float = DEFAULT_TOL_MM, allow_axis=False):
-        """Raise :class:`UnreachableError` or :class:`BaseAxisError` for one bad target."""
-        p = as_points(p, inputs=self.inputs, units=self.input_units)
-        sol = self.solve(p, self.branches, tol=tol, theta1_on_axis=0.0 if allow_axis else None)
-        self.raise_for(p, int(sol.status), float(sol.outside_mm), tol=tol)
 
     def raise_for(self, p, status: int, outside: float, *, tol: float) -> None:
         """Raise the error that ``status`` means for target ``p`` (nothing if OK):

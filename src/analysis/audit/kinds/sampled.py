@@ -8,8 +8,10 @@ them, the link lengths, and quantities measured on the arm (an elevation, an inc
 chains of a few transcendental calls on lengths of 1e2-1e3 mm err by ~1e-13; every printed
 error found is >= 1e-3), modulo 2 pi when ``angle`` (default true). With ``residuals`` the text
 defines its left-hand symbol (``phi = atan2(Py, Px)``) and each residual expression must vanish
-once the symbol is replaced by the right-hand side. A side that is undefined (NaN, a symbol
-without a value) at any sample is wrong there.
+once the symbol is replaced by the right-hand side. With ``defines`` the text is an expression
+(eq. 18's printed numerator) held against the domain's value of that name. A side that is
+undefined (NaN, a symbol without a value) at any sample is wrong there, and an equation whose
+sides are the same function of their symbols (``theta1 = theta1``) says nothing: False.
 
 Example: on the grabber's front-up samples ``theta1 = atan2(Py, Px)`` holds and
 ``theta1 = atan(Py/Px)`` fails at the first target with Px < 0, which the result names.
@@ -20,6 +22,7 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
+from analysis.audit.equivalence import expressions_agree
 from analysis.audit.kinds.base import Result, kind
 from analysis.audit.kinds.symbolic import equation
 from analysis.validate import wrap_rad
@@ -43,8 +46,13 @@ def evaluate(expr: sp.Expr, values) -> np.ndarray | None:
 def sampled(text: str, spec, ctx) -> Result:
     values = ctx.domain(spec["domain"])
     ns = spec.get("namespace", "main")
-    lhs, rhs = equation(text, ctx, ns)
+    if "defines" in spec:  # the text is an expression the paper prints for a named quantity
+        lhs, rhs = sp.Symbol(spec["defines"]), ctx.paper.parse(text, ns)
+    else:
+        lhs, rhs = equation(text, ctx, ns)
     angle = spec.get("angle", True)
+    if expressions_agree(lhs, rhs, angle=angle):  # true of anything: says nothing of the model
+        return Result(False, {"why": "the two sides are the same function of their symbols"})
     if "residuals" in spec:
         if not isinstance(lhs, sp.Symbol):
             return Result(False, {"why": "the left-hand side must be the symbol defined"})

@@ -69,7 +69,9 @@ def _probe(expr: sp.Expr, seed: int) -> float | None:
     try:
         f = sp.lambdify(names, expr, "math")
         return abs(complex(f(*(0.3 + rng.random() for _ in names))))
-    except (TypeError, ValueError, ZeroDivisionError, OverflowError):
+    except (TypeError, ValueError, ZeroDivisionError, OverflowError, NameError):
+        return None
+    except Exception:
         return None
     finally:
         math.isfinite(0.0)
@@ -129,8 +131,16 @@ def identity(text: str, spec, ctx) -> Result:
     the paper's context defines, e.g. ``fk``: the target by the arm's forward kinematics)."""
     lhs, rhs = equation(text, ctx, spec.get("namespace", "main"))
     residual = lhs - rhs
+    if spec.get("substitute") and is_zero(residual):  # true before the substitution: says nothing
+        return Result(False, {"residual": "0", "why": "holds whatever the substitution"})
     if spec.get("substitute"):
         subs = ctx.substitution(spec["substitute"])
+        if any(isinstance(k, sp.FunctionClass) for k in subs):  # theta(t) -> a Lambda: applied
+            fns = {k: v for k, v in subs.items() if isinstance(k, sp.FunctionClass)}
+            rest = {k: v for k, v in subs.items() if k not in fns}
+            residual = residual.subs(fns).doit().subs(rest)
+            ok = is_zero(residual)
+            return Result(ok, {"residual": "0" if ok else sp.sstr(sp.simplify(residual))})
         if _numeric_residual(residual, subs) > 1e-6:  # a clear non-zero, without expanding
             return Result(False, {"residual": lambda: sp.sstr(sp.factor(sp.expand(
                 sp.expand_trig(residual.subs(subs)))))})  # fmt: skip

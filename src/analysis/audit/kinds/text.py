@@ -16,7 +16,7 @@ and what the numbers point at must satisfy ``target``, decided from the paper's 
 Example (seed 000): "结合工程实际, 取式(16)" fails (eq. 16 defines sin(theta2 + theta3)),
 "结合工程实际, 取式(6)" passes.
 
-``symbol``: the text is one symbol, which must be one the records ``used_in`` use.
+``symbol``: the text is one symbol, spelled as the records ``used_in`` spell it.
 
 ``numbering``: the text is a list of captions or headings, one a line (``图 3-4 ...``,
 ``3.3 ...``, ``附录 A ...``): the titles of the printed list ``of``, in its order, numbers and
@@ -93,12 +93,11 @@ def xref(text: str, spec, ctx) -> Result:
 
 @kind("symbol")
 def symbol(text: str, spec, ctx) -> Result:
-    expr = ctx.paper.parse(text.strip())
-    used = set()
-    for ref in spec["used_in"]:
-        lhs, _, rhs = ctx.paper.text(ref).partition("=")
-        used |= ctx.paper.parse(lhs).free_symbols | ctx.paper.parse(rhs).free_symbols
-    return Result(expr.is_Symbol and expr in used, {})
+    """A notation: the name as spelled (not the quantity it parses to: a paper may state two
+    spellings equal) must be one the records ``used_in`` spell, and a symbol of the paper."""
+    name = text.strip()
+    spelled = {w for ref in spec["used_in"] for w in re.findall(r"[^\W\d]\w*", ctx.paper.text(ref))}
+    return Result(name in ctx.paper.symbols() and name in spelled, {})
 
 
 @kind("bespoke")

@@ -279,3 +279,136 @@ def _restored(text, ctx, of):
     except vb6.VB6SyntaxError:
         return False
     return len(form.subs["t_click"][1]) == len(lines)
+
+
+# --- the records' own checks (data/papers/gr1.toml, issue 30.1) -------------------------------
+for _axis, _name in ((1, "rot_x"), (2, "rot_y"), (3, "rot_z")):
+    B.matrix(_name)(lambda a=_axis: getattr(sp, f"rot_axis{a}")(-_paper().symbols()["theta"]))
+"""Eqs. 3.5-3.7: the rotations about x, y, z by theta (SymPy's rot_axis turns the frame, hence
+the minus: the point rotated)."""
+
+
+def _cubic(solved: bool) -> dict:
+    """Section 5.4.1's cubic as a substitution: theta(t) -> a0 + a1 t + a2 t^2 + a3 t^3 (eq.
+    5.3), with ``solved`` a0 .. a3 too, from eqs. 5.1-5.2 (eq. 5.6: a0 = theta_0, a1 = 0,
+    a2 = 3 (theta_f - theta_0) / t_f^2, a3 = -2 (theta_f - theta_0) / t_f^3)."""
+    s = _paper().symbols("cubic")
+    t, T, th0, thf = s["t"], s["t_f"], s["theta_0"], s["theta_f"]
+    a = [s[f"a{i}"] for i in range(4)]
+    out = {s["theta"]: sp.Lambda(t, sum(c * t**i for i, c in enumerate(a)))}
+    if solved:
+        d = thf - th0
+        out.update(zip(a, (th0, 0, 3 * d / T**2, -2 * d / T**3), strict=True))
+    return out
+
+
+B.substitution("cubic")(lambda: _cubic(False))
+B.substitution("cubic_solved")(lambda: _cubic(True))
+
+
+@B.domain("cubic_system")
+def _cubic_system():
+    """Eqs. 5.1-5.2 as a linear system in a0 .. a3 (eq. 5.5): its rank."""
+    s = _paper().symbols("cubic")
+    t, T = s["t"], s["t_f"]
+    coeffs = [s[f"a{i}"] for i in range(4)]
+    f = sum(c * t**i for i, c in enumerate(coeffs))
+    rows = [f.subs(t, 0), f.subs(t, T), sp.diff(f, t).subs(t, 0), sp.diff(f, t).subs(t, T)]
+    M = sp.Matrix([[sp.diff(r, c) for c in coeffs] for r in rows])
+    return {"rank": np.array([M.rank()])}
+
+
+@B.domain("cubic_acc")
+def _cubic_acc():
+    """The acceleration steps [deg/s^2] of the corrected move's cubics at its ends (at rest
+    before and after): what sec. 5.4.2 says must not jump."""
+    from analysis.studies.trajectories import acceleration_jumps
+
+    q = gl.corrected_move()[0]
+    return {"jump_deg_s2": np.degrees(np.abs(acceleration_jumps("cubic", q[0], q[1], st.DURATION_S)))}  # noqa: E501
+
+
+@B.domain("presets")
+def _presets():
+    """Table 2-3's presets against the pulses the text derives them as (|delta theta| of Table
+    5-4 over Table 2-1's resolution)."""
+    df = st.printed_presets()
+    return {"printed": df.printed.to_numpy(float), "pulses": df.delta_deg.to_numpy(float)
+            / np.asarray(st.RESOLUTION_DEG)}  # fmt: skip
+
+
+@B.domain("encoder")
+def _encoder():
+    """Sec. 2.3.2's encoder: holes, channels and the signals per revolution it states."""
+    e = _paper().record("encoder")
+    return {"holes": np.array([e["holes"]]), "channels": np.array([len(e["channels"])]),
+            "signals": np.array([e["signals_per_rev"]])}  # fmt: skip
+
+
+@B.domain("sec5_4_2")
+def _sec542():
+    """What section 5.4.2 computes: from Table 5-3 (a pose: position and RPY angles) to Table
+    5-4 (joint values), the inverse problem, or the reverse."""
+    given = set(_paper().record("table5_3")["columns"])
+    found = set(_paper().record("table5_4")["columns"])
+    pose, joints = {"px", "py", "pz"} <= given, all(c.startswith("theta") for c in found)
+    return {"pose_from_joints": np.array([not pose and joints]),
+            "joints_from_pose": np.array([pose and joints])}  # fmt: skip
+
+
+@B.domain("buttons")
+def _buttons():
+    """Sec. 6.2's five buttons against the listing's event procedures (one per button with
+    code: Command1 计算, Command3 轨迹规划, Command4 清除)."""
+    named = _paper().record("c6.2-buttons").text.split(":")[-1].rstrip("。").split("、")
+    procs = [k for k in vb6.VB6Form(gl.listing()).subs if re.fullmatch(r"command\d+_click", k)]
+    return {"has_code": np.arange(len(named)) < len(procs)}
+
+
+@B.domain("gui_runs")
+def _gui_runs():
+    """The printed input check (record gui_check) run on pose pairs: does it leave the
+    trajectory button enabled, and are both positions within the arm's reach (a2 + a3 + a4
+    from the shoulder; d1 = 0 assumed)?"""
+    pairs = [((151.0, 231.0, 250.0), (200.0, 300.0, 178.0)),  # Table 5-3, both within reach
+             ((450.0, 0.0, 100.0), (-450.0, 0.0, 100.0)),  # both within reach, 900 mm apart
+             ((600.0, 10.0, 0.0), (600.0, 10.0, 0.0)),  # both beyond the reach, one spot
+             ((151.0, 231.0, 250.0), (1100.0, 0.0, 178.0))]  # the end beyond the reach
+    P = st.gr1_arm().params
+    reach = P["a2"] + P["a3"] + P["a4"]
+    block = _paper().text("gui_check")
+    enabled, reachable = [], []
+    for p0, p1 in pairs:
+        form = vb6.VB6Form(f"Private Sub T_Click()\nCommand3.Value = True\n{block}\nEnd Sub\n")
+        form.call("T_Click", dict(zip(("Px0", "Py0", "Pz0", "Px1", "Py1", "Pz1"), (*p0, *p1), strict=True)))  # noqa: E501
+        enabled.append(form.control("Command3").props["Enabled"].value is True)
+        reachable.append(all(float(np.linalg.norm(p)) <= reach for p in (p0, p1)))
+    return {"enabled": np.array(enabled), "reachable": np.array(reachable)}
+
+
+@B.value("nearest_orientation")
+def _nearest_orientation(row, column):
+    """Table 5-3's RPY cell [deg] of the nearest orientation the arm can take at the printed
+    position (gr1-five-dof)."""
+    proj, _ = st.project_orientation(st.gr1_arm(), st.thesis_poses())
+    k = ("alpha", "beta", "gamma").index(column)
+    return float(np.degrees(proj[("start", "end").index(row), 3 + k]))
+
+
+@B.predicate("listing_table5_4")
+def _listing_table5_4(text, ctx):
+    """The whole listing (the record, its one repair of the cf3 operator applied, gr1-cf3-
+    operator) typed with Table 5-3: does the 计算 button display the corrected Table 5-4 (the
+    nearest reachable orientation; every cell to the listing's three decimals, modulo a
+    turn)?"""
+    src = text
+    for rep in gl.LISTING_REPAIRS:
+        src = src.replace(rep["printed"], rep["repaired"])
+    try:
+        shown = vb6.run(src, "Command1_Click", gl.table5_3_inputs())["text"]
+    except (vb6.VB6Error, vb6.VB6SyntaxError) as exc:
+        return Result(False, {"why": str(exc)})
+    q = np.degrees(gl.corrected_move()[0]).ravel()
+    got = [float(shown[f"Text{13 + i}"] or "nan") for i in range(10)]
+    right = [abs(math.remainder(g - w, 360.0)) <= 5e-4 for g, w in zip(got, q, strict=True)]
+    return Result(all(right), {"right": sum(right)})

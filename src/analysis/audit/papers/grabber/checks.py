@@ -72,13 +72,15 @@ def _values(P, theta) -> dict:
 
     t1, t2, t3 = theta.T
     r = np.cos(t1) * P[:, 0] + np.sin(t1) * P[:, 1]
-    k, z = prm.L2 * np.cos(t3) + prm.L3, P[:, 2] - prm.L1
+    z = P[:, 2] - prm.L1
     c = angles_to_pulses(theta)
     return {
         "Px": P[:, 0], "Py": P[:, 1], "Pz": P[:, 2], "p_z": P[:, 2],
         "theta1": t1, "theta2": t2, "theta3": t3,
         "theta23": wrap_rad(t2 + t3),
-        "num": z * k + r * prm.L2 * np.sin(t3), "den": -z * prm.L2 * np.sin(t3) + r * k,
+        # eq. 18's numerator and denominator, from the solution, not from the printed form:
+        # (z^2 + r^2) times the sine and cosine of theta2 + theta3 (the wrist's own direction)
+        "num": (z**2 + r**2) * np.sin(t2 + t3), "den": (z**2 + r**2) * np.cos(t2 + t3),
         "c1": c[:, 0], "c2": c[:, 1], "c3": c[:, 2], "L1": prm.L1, "L2": prm.L2, "L3": prm.L3,
     }  # fmt: skip
 
@@ -170,6 +172,19 @@ def _z600_crossing() -> float:
 
 
 B.fact("z600_crossing")(_z600_crossing)
+
+
+PTO_OUTPUTS = {"CPU 224": 2}
+"""Pulse-train outputs of the S7-200 CPUs the paper names: two generators, Q0.0 and Q0.1
+(/work/shared/stl_reference.md, sec. 1.6, and analysis.plc.motion, which shares them among
+three steppers)."""
+
+
+@B.domain("hardware")
+def _hardware():
+    """The hardware sec. 2.3 names: the CPU's pulse-train outputs and the stepper motors."""
+    cpu, motors = _paper().record("cpu")["cpu"], _paper().record("motors")["steppers"]
+    return {"pto_outputs": np.array([PTO_OUTPUTS[cpu]]), "steppers": np.array([motors])}
 
 
 # --- values and facts -------------------------------------------------------------------------

@@ -79,22 +79,32 @@ def _values(arm, G) -> dict:
         "alpha1": np.arccos((L1**2 + L4**2 - L2**2) / (2 * L1 * L4)),
         "beta1": np.arccos(np.sum(a * b, -1) / np.linalg.norm(a, axis=-1) / np.linalg.norm(b, axis=-1)),  # noqa: E501
         "alpha2": np.arctan2(sw[:, 2], (sw[:, 0] * G[:, 0] + sw[:, 1] * G[:, 1]) / rho),
-        "alpha": -q[:, 1] - np.pi / 2, **{f"theta{i + 1}": q[:, i] for i in range(4)},
+        "alpha": -q[:, 1] - np.pi / 2, "beta": q[:, 2] - np.pi / 2, "gamma": q[:, 0],
+        **{f"theta{i + 1}": q[:, i] for i in range(4)},  # the motor angles by eq. 12
     }  # fmt: skip
+
+
+def _targets_on(arm, seed: int) -> dict:
+    from analysis.kinematics.arm import Status
+
+    st = _st()
+    L1, L2, L3, h = st.lengths(arm)
+    q = st.level_configurations(arm, 400, np.random.default_rng(seed))
+    extra = np.vstack([st.QUADRANT_TARGETS, [[30.0, 10.0, 100.0], [L2 + L3, 0.0, L1 - h]]])
+    G = np.vstack([arm.fk(q), extra])
+    v = _values(arm, G[arm.solve(G).status == Status.OK])
+    n = len(v["X0"])
+    return {k: np.broadcast_to(np.asarray(x, dtype=float), (n,)) for k, x in v.items()}
 
 
 @B.domain("targets")
 def _targets():
-    """400 seeded level configurations the arm solves back (within its elbow stop), the four
-    quadrant targets, a target whose wrist is behind the base axis and the initial pose."""
-    from analysis.kinematics.arm import Status
-
-    arm, st = _arm(), _st()
-    L1, L2, L3, h = st.lengths(arm)
-    q = st.level_configurations(arm, 400, np.random.default_rng(20210401))
-    extra = np.vstack([st.QUADRANT_TARGETS, [[30.0, 10.0, 100.0], [L2 + L3, 0.0, L1 - h]]])
-    G = np.vstack([arm.fk(q), extra])
-    return _values(arm, G[arm.solve(G).status == Status.OK])
+    """On the assumed arm and on one with L2 = 150 mm (so that no check leans on the assumed
+    L1 = L2: a formula with L1 and L2 swapped fails): 400 seeded level configurations each arm
+    solves back (within its elbow stop), the four quadrant targets, a target whose wrist is
+    behind the base axis and the initial pose."""
+    a, b = _targets_on(_arm(), 20210401), _targets_on(_arm(L2=150.0), 20210402)
+    return {k: np.concatenate([a[k], b[k]]) for k in a}
 
 
 @B.domain("front")
@@ -142,8 +152,12 @@ def _initial():
     arm = _arm()
     q = np.array([float(paper.parse(p["rhs"])) for p in paper.record("eq7")["parts"][:4]])
     back = arm.ik(arm.fk(q))
+    f = arm.frames(q[None])[0]  # frames 2 (shoulder), 3 (elbow), 4 (wrist) of the chain
+    upper, fore = f[3] - f[2], f[4] - f[3]
     return {"included_deg": np.array([180.0 - np.degrees(abs(t3))]),
-            "ik_returns_eq7": np.array([bool(np.allclose(back, q, atol=1e-9))])}  # fmt: skip
+            "ik_returns_eq7": np.array([bool(np.allclose(back, q, atol=1e-9))]),
+            "upper_arm_vertical": np.array([bool(np.allclose(upper[:2], 0, atol=1e-9))]),
+            "forearm_perpendicular": np.array([bool(abs(upper @ fore) < 1e-9)])}  # fmt: skip
 
 
 @B.domain("quadrant_targets")
@@ -177,6 +191,16 @@ def _assumed():
     return {"marked_assumed": np.array([all(d.parameters[k].status == "assumed" for k in ("L1", "L2", "L3", "h"))]),  # noqa: E501
             "isosceles": np.array([L1 == L2]), "solved": np.array([bool((arm.solve(G).status == Status.OK).all())]),  # noqa: E501
             "quadrants": np.array([len(quads)]), "z_positive": np.array([bool((st.QUADRANT_TARGETS[:, 2] > 0).all())])}  # noqa: E501
+
+
+@B.domain("citations")
+def _citations():
+    """Sec. 3 cites the D-H method as [2]; sec. 4 dates it 1955: does [2] carry that year?"""
+    import re
+
+    paper = context("palletizer").paper
+    year = re.search(r"(\d{4})年", paper.record("dh_method").text)[1]
+    return {"dh_year_matches": np.array([year in paper.record("references.2").text])}
 
 
 # --- predicates and facts ---------------------------------------------------------------------
