@@ -29,7 +29,9 @@ engine (wall and in-scan scans per second) beside awlsim's scans of the same arm
 Derived closed forms (benchmarks/derived.py): EAIK's solution sets against the derived
 ones on the seed arms and 120 random arms (20 per family and D-H convention, 50
 configurations each), and the derived seed arms' compiled kernels against numpy and against
-the hand-written kernels.
+the hand-written kernels. The families engineers own (benchmarks/families.py): the PUMA 560's
+and the UR5's eight-branch kernels against EAIK and IK-Geo on the same poses, every family's
+solution sets against EAIK, IK-Geo and pyplcopen's kinematics.
 
 Usage: ``python benchmarks/run.py --out build/bench.json [--n 2000000] [--rounds 4]``
 """
@@ -220,6 +222,11 @@ def main(argv=None) -> int:
     from derived import derived_kernels, eaik_agreement
 
     derived = {"eaik_agreement": eaik_agreement(), "kernels": derived_kernels()}
+    # the families engineers own: the six-axis kernels against EAIK and IK-Geo, every
+    # family against its oracles (benchmarks/families.py)
+    from families import agreement, sixaxis
+
+    families = {"sixaxis": sixaxis(), "agreement": agreement()}
     load_after = os.getloadavg()
 
     def ratio(a, b):
@@ -236,6 +243,8 @@ def main(argv=None) -> int:
         "public API within 1.25 x its kernel": (ratio("kernel", "compiled_out"), 1.25),
         "CLI answers in < 0.3 s": (cli, 0.3),
         "GR-1 machine, 10 s at 4 ms on the ST engine < 2 s": (machine_scan["gr1"]["wall_s"], 2.0),
+        **{f"{k} IK, 8 branches, >= 10 x EAIK's batch": (v["compiled / eaik"], 10.0)
+           for k, v in families["sixaxis"].items()},
     }
     doc = {
         "rates_per_s": rate,
@@ -258,6 +267,7 @@ def main(argv=None) -> int:
         "plc_scan_us": plc_scan,
         "machine_scan": machine_scan,
         "derived_closed_forms": derived,
+        "families": families,
         "vectorization": vec,
         "machine": {
             "cpu_count": os.cpu_count(),
@@ -304,6 +314,17 @@ def main(argv=None) -> int:
             f"derived kernel {k:<10} = numpy to {v['max_angle_diff_rad']:.1e} rad, "
             f"{v['derived / hand-written (rate)']:.2f} x the hand-written kernel's rate"
         )
+    for k, v in families["sixaxis"].items():
+        r = v["rates_poses_per_s"]
+        print(f"six-axis {k:<8} compiled {r['compiled']:,.0f}/s, numpy {r['numpy']:,.0f}/s, "
+              f"EAIK {r.get('eaik', 0):,.0f}/s, IK-Geo {r.get('ikgeo', 0):,.0f}/s "
+              f"(8 branches; first call {v['first_compiled_call_s']:.0f} s)")
+    for k, v in families["agreement"].items():
+        if "equal" in v:
+            print(f"{k:<30} {v['equal']}/{v['configurations']} equal sets, {v['oracle_empty']} "
+                  f"oracle empty, {v['oracle_subset']} subset, {v['disagree']} disagree")
+        else:
+            print(f"{k:<30} {v}")
     print(f"load {load_before[0]:.2f} -> {load_after[0]:.2f}; wrote {path}")
     _plot(doc, path.with_suffix(".svg"))
     return 0

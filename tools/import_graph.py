@@ -8,8 +8,15 @@ module level or inside a function, under ``TYPE_CHECKING`` excepted); ``from pkg
 is an edge to ``pkg.name`` when that is a module, else to ``pkg``. A package's
 ``__init__`` is the module ``pkg``. Cycles are the strongly connected components of more than
 one module (Tarjan). Floors, lowest first: the shared base (``validate``, ``paths``,
-``fonts``, ``papers``), ``kinematics``, ``audit``/``studies``/``plc``, ``app``; an edge from a
-lower floor to a higher one is an arrow up.
+``fonts``, ``papers``, ``safe_io``, ``escape``), ``kinematics``, ``audit``/``studies``/``plc``,
+``app``; an edge from a lower floor to a higher one is an arrow up, allowed only with a
+stated reason in :data:`REASONS`. A *private import* is ``from analysis.x import _name``
+(or ``import analysis.x._y``) from outside the module or package that owns the name:
+:data:`PRIVATE_OK` lists the packages whose private submodules their own ``__init__`` and
+siblings may import.
+
+``--check`` exits 1 when a cycle, an arrow up without a reason or a private import is found
+(``tests/test_structure.py`` runs it).
 """
 
 from __future__ import annotations
@@ -21,8 +28,11 @@ import sys
 from pathlib import Path
 
 SRC = Path(__file__).resolve().parents[1] / "src"
-FLOORS = {"validate": 0, "paths": 0, "fonts": 0, "papers": 0, "safe_io": 0, "kinematics": 1,
-          "audit": 2, "studies": 2, "plc": 2, "app": 3, "__main__": 3, "": 0}  # fmt: skip
+FLOORS = {"validate": 0, "paths": 0, "fonts": 0, "papers": 0, "safe_io": 0, "escape": 0,
+          "kinematics": 1, "audit": 2, "studies": 2, "plc": 2, "app": 3, "__main__": 3,
+          "": 0}  # fmt: skip
+REASONS: dict[tuple[str, str], str] = {}
+"""(importer, imported) -> why this arrow up the floors is needed. Empty: there is none."""
 
 
 def modules() -> dict[str, Path]:
@@ -128,6 +138,42 @@ def cycles(graph: dict[str, set[str]]) -> list[list[str]]:
     return out
 
 
+def private_imports(mods: dict[str, Path]) -> list[tuple[str, str]]:
+    """(importer, "module.name") for every private name imported from another module: a
+    name or a module path part that starts with one underscore, imported from outside the
+    package that holds it (``analysis.safe_io`` may import ``analysis.safe_io._read``)."""
+    out = []
+    for name, path in mods.items():
+        pkg = name if path.name == "__init__.py" else name.rpartition(".")[0]
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.ImportFrom):
+                base = node.module or ""
+                if node.level:
+                    up = pkg.split(".")
+                    up = up[: len(up) - node.level + 1]
+                    base = ".".join([*up, *([base] if base else [])])
+                targets = [f"{base}.{a.name}" for a in node.names]
+            elif isinstance(node, ast.Import):
+                targets = [a.name for a in node.names]
+            else:
+                continue
+            for target in targets:
+                if not target.startswith("analysis."):
+                    continue
+                parts = target.split(".")
+                first = next((i for i, s in enumerate(parts) if _private(s)), None)
+                if first is None:
+                    continue
+                owner = ".".join(parts[:first])  # the package or module that holds the name
+                if name != owner and not name.startswith(owner + "."):
+                    out.append((name, target))
+    return sorted(out)
+
+
+def _private(part: str) -> bool:
+    return part.startswith("_") and not part.startswith("__")
+
+
 def floor(mod: str) -> int:
     parts = mod.split(".")
     return FLOORS.get(parts[1] if len(parts) > 1 else "", 0)
@@ -152,6 +198,8 @@ def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--under", default="analysis", help="report cycles among these modules")
     ap.add_argument("--json", action="store_true")
+    ap.add_argument("--check", action="store_true",
+                    help="exit 1 on a cycle, an arrow up without a reason or a private import")
     args = ap.parse_args(argv)
     mods = modules()
     e = edges(mods)
@@ -161,11 +209,14 @@ def main(argv=None) -> int:
         (m, t) for m, v in e.items() for t, _ in v
         if t and floor(t) > floor(m) and m.startswith(args.under)
     )  # fmt: skip
+    unreasoned = [a for a in up if a not in REASONS]
+    private = [p for p in private_imports(mods) if p[0].startswith(args.under)]
     n_edges = sum(len(v) for v in e.values())
     n_fn = sum(1 for v in e.values() for _, f in v if f)
     big_mods, big_fns = sizes({k: p for k, p in mods.items() if k.startswith(args.under)})
     doc = {"modules": len(mods), "edges": n_edges, "function_level": n_fn, "cycles": cyc,
-           "arrows_up": up, "modules_over_600": big_mods,
+           "arrows_up": [[m, t, REASONS.get((m, t))] for m, t in up],
+           "private_imports": private, "modules_over_600": big_mods,
            "functions_over_100": big_fns}  # fmt: skip
     if args.json:
         print(json.dumps(doc, indent=1))
@@ -176,10 +227,13 @@ def main(argv=None) -> int:
             print("  " + " <-> ".join(c))
         print(f"arrows up the floors from {args.under}: {len(up)}")
         for m, t in up:
-            print(f"  {m} -> {t}")
+            print(f"  {m} -> {t}: {REASONS.get((m, t), 'NO REASON GIVEN')}")
+        print(f"private names imported across modules: {len(private)}")
+        for m, t in private:
+            print(f"  {m} imports {t}")
         print(f"modules over 600 lines: {big_mods}")
         print(f"functions over 100 lines: {big_fns}")
-    return 0
+    return 1 if args.check and (cyc or unreasoned or private) else 0
 
 
 if __name__ == "__main__":

@@ -299,3 +299,66 @@ def test_alpha_of_any_size_is_read_by_its_sine_and_cosine(published):
     many[3] += 20 * math.pi
     a, b = arm.solve(p[None]), arm.solve(many[None])
     assert np.allclose(a.theta, b.theta, atol=1e-9)
+
+
+@pytest.mark.slow
+def test_the_closed_forms_are_formulas_too(published):
+    """The same derived closed forms evaluated as SymPy expressions (the audit's backend,
+    analysis.kinematics.symbolic) equal the numpy solution (angles modulo a turn: SymPy's
+    wrap is the identity): the 2R planar arm and the SCARA, one branch each, at a target."""
+    import sympy as sp
+
+    from analysis.kinematics.symbolic import sympy_ops
+
+    for name in ("planar2r", "cobra600"):
+        arm = published[name]
+        cf = arm.closed_form
+        syms = sp.symbols(" ".join(arm.inputs), real=True)
+        P = {k: sp.Float(v) for k, v in arm.params.items()}
+        q = cf.ik(sympy_ops, syms, P, tol=sp.Float(1e-6))["branches"][arm.branches[0]]
+        x = arm.target(arm.sample_q(np.random.default_rng(4), 1, branch=arm.branches[0])[0])
+        got = [float(sp.N(e.subs(dict(zip(syms, x, strict=True))))) for e in q]
+        want = arm.solve(x[None]).theta[0, 0]
+        rev = np.array([u == "rad" for u in arm.joint_units])
+        d = np.subtract(got, want)  # SymPy's wrap is the identity: angles modulo a turn
+        assert np.abs(np.where(rev, _wrap(d), d)).max() < 1e-9, (name, got, want)
+
+
+@pytest.mark.parametrize("name", ["puma560", "ur5"])
+def test_branch_names_mean_what_they_say(name, published, rng):
+    """noflip: the wrist's middle joint in [0, pi]; flip: in [-pi, 0]; front and back share
+    nothing but the target; up and down bend the elbow opposite ways (theta3's sign, the
+    forearm continuing the upper arm at q = 0 for the UR5)."""
+    arm = published[name]
+    q = arm.sample_q(rng, 300)
+    sol = arm.solve(arm.target(q), limits=False)
+    idx = {b: i for i, b in enumerate(arm.branches)}
+    for b, i in idx.items():
+        q5 = sol.theta[:, i, 4][sol.ok[:, i]]
+        assert ((q5 >= -1e-12) if b.endswith("noflip") else (q5 <= 1e-12)).all(), b
+    for side in ("front", "back"):
+        up = sol.theta[:, idx[f"{side}-up-noflip"], 2]
+        down = sol.theta[:, idx[f"{side}-down-noflip"], 2]
+        both = np.isfinite(up) & np.isfinite(down)
+        if name == "ur5":
+            assert (np.sign(up[both]) == -np.sign(down[both])).all()
+        assert not np.allclose(up[both], down[both])
+
+
+def test_gantry_strokes_are_its_reach(published):
+    """The gantry's strokes bound its reach: within the tolerance past one end the slide is
+    put on it (the tool within the tolerance of the target), past two ends by 0.8 of it each
+    (1.13 of it apart, a corner) refused, with the distance."""
+    arm = published["gantry"]
+    tol = 1e-6
+    q = np.array([1200.0, 800.0, -100.0, 0.3])  # x and y at their upper ends
+    p = arm.target(q)
+    one = p.copy()
+    one[0] += 0.8 * tol
+    sol = arm.solve(one[None], tol=tol)
+    assert sol.ok[0, 0] and sol.theta[0, 0, 0] == 1200.0
+    assert np.linalg.norm(arm.target(sol.theta[0, 0])[:3] - one[:3]) <= tol
+    two = p.copy()
+    two[:2] += 0.8 * tol
+    sol = arm.solve(two[None], tol=tol)
+    assert sol.status[0] == Status.OUT_OF_REACH and sol.outside_mm[0] > tol

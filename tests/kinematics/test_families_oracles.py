@@ -23,6 +23,8 @@ from analysis.kinematics.derive import plcopen_oracle as po
 from analysis.kinematics.derive.oracle import available as eaik_available
 from analysis.kinematics.derive.samples_more import random_family_arm
 
+pytestmark = pytest.mark.slow  # oracles in other processes and libraries: make test only
+
 REVOLUTE_FAMILIES = ("2R-planar", "3R-planar", "6R-wrist", "6R-parallel")
 
 needs_eaik = pytest.mark.skipif(

@@ -13,7 +13,7 @@ singular-set and joint-limit boundaries, bad and huge inputs), as the seed arms'
 
 The six-axis programs are printed for an S7-1500 / CODESYS (ST and SCL); their counts stay
 within a REAL's exact whole numbers (2^24). What does not fit an S7-200:
-test_what_an_s7_200_cannot_hold.
+test_what_an_s7_200_holds_and_what_it_cannot.
 """
 
 from __future__ import annotations
@@ -40,10 +40,35 @@ def engine():
         pytest.skip(str(exc))
 
 
-@pytest.fixture(scope="module", params=ARMS)
-def case(request):
-    arm = load_arm(request.param)
+@pytest.fixture(scope="module", params=[*ARMS, "puma560.urdf", "ur5_ros.urdf"])
+def case(request, tmp_path_factory):
+    """A published arm by name, or loaded from a URDF (the writer's PUMA 560; a UR5 in
+    ROS-Industrial's frames, tests/kinematics/test_families_urdf.py), and its sweep."""
+    source = request.param
+    if source.endswith(".urdf"):
+        from analysis.kinematics.urdf import arm_urdf
+
+        from .test_families_urdf import ur5_ros_style
+
+        path = tmp_path_factory.mktemp("urdf") / source
+        path.write_text(ur5_ros_style() if source.startswith("ur5") else arm_urdf("puma560"),
+                        encoding="utf-8")  # fmt: skip
+        source = str(path)
+    arm = load_arm(source)
     return arm, sweep_targets(arm)
+
+
+@pytest.mark.slow  # builds the sweeps the next test runs
+def test_the_sweep_has_the_seed_arms_kinds(case):
+    """Every arm's sweep has the seed arms' kinds: half pulses, wrap cuts, a reach boundary
+    (out of reach or a joint's stroke, 1e-3 .. 1 mm either side), and the six-axis arms'
+    singular sets (the wrist flip: position and orientation rays)."""
+    arm, targets = case
+    kinds = set(targets["kind"])
+    assert {"config", "box", "half-pulse", "cut", "bad", "huge"} <= kinds, kinds
+    assert kinds & {"out-of-reach-1mm", "joint-limits-1mm"}, kinds
+    if arm.n_joints == 6:
+        assert {"flip-1mm", "flip-tol"} <= kinds and kinds & {"out-of-reach-1mm"}, kinds
 
 
 @pytest.mark.slow  # a sweep of about 1,100 targets per arm on the engine: make test only
@@ -75,15 +100,75 @@ def test_counts_fit_a_real(name):
     assert (np.abs(arm.pulse_values(hi[None])) <= 2**24).all()
 
 
-def test_what_an_s7_200_cannot_hold():
-    """The six-axis IK block is printed for the S7-200 too (its REAL instructions and the
-    ATAN2/ACOS subroutines), but the S7-200 has two pulse-train outputs (Q0.0, Q0.1 on a CPU
-    224XP) for six joints: the machine program's six axes do not fit it (tests of the machine
-    program: tests/plc/machine). Here: the program and its memory map are printed and fit
-    the CPU's V memory."""
-    from analysis.plc.generate import generate
+@pytest.mark.slow
+@pytest.mark.parametrize("name", ["puma560", "ur5"])
+def test_what_an_s7_200_holds_and_what_it_cannot(name):
+    """The six-axis IK block fits an S7-200 (README, "Six axes on an S7-200"): printed in its
+    REAL instructions with the ATAN2/ACOS subroutines (it has no ATAN), within a CPU 224's V
+    memory, and run on the S7-200 evaluator (analysis.plc.stl_eval) over every third target
+    of each sweep kind: no count off by more than one where both accept, each explained, a
+    refused target's outputs unchanged. What it cannot hold is the machine: the CPU's two
+    pulse-train outputs (Q0.0, Q0.1) drive two of the six axes, and the PLCopen motion
+    blocks have no S7-200 form (the machine program is printed for st, scl, plcopen-xml).
 
-    for name in ("puma560", "ur5"):
-        text, map_text = generate(load_arm(name), "s7-200")
-        assert "SBR" in text or "CALL" in text
-        assert '"dialect": "s7-200"' in map_text
+    Measured: on two PUMA targets exactly at theta3's limit (-135 deg) the program (the
+    evaluator and awlsim alike) accepts what Python refuses: the float32 model of the
+    S7-200 program computes theta3 one ulp beyond the limit, the program on it. Such a
+    target is only allowed at a joint limit, within 1e-6 rad of it."""
+    import json
+
+    from analysis.plc.generate import generate
+    from analysis.plc.memmap import MemoryMap
+    from analysis.plc.runner import S7200Runner
+
+    arm = load_arm(name)
+    text, map_text = generate(arm, "s7-200")
+    doc = json.loads(map_text)
+    assert doc["dialect"] == "s7-200" and "CALL   SBR" in text and "ATAN " not in text
+    assert max(m["last"] for m in doc["memory"] if m["area"] == "V") < 8192  # CPU 224
+    frame = sweep_targets(arm)
+    rows = np.sort(np.concatenate([np.flatnonzero(frame["kind"] == k)[::3]
+                                   for k in frame["kind"].unique()]))  # fmt: skip
+    sub = frame.iloc[rows].reset_index(drop=True)
+    xyz = sub[input_columns(arm)].to_numpy(dtype=float)
+    runner = S7200Runner(text, MemoryMap.from_dict(doc))
+    res = runner.solve(xyz, sentinel=SENTINEL)
+    assert not runner.stopped and len(set(res.status.tolist())) >= 4
+    c = compare(res, sub, arm, None, "s7-200", SENTINEL, "subroutine")
+    assert c.flag_mismatch == 0 and c.unchanged_ok and c.all_explained, c.mismatch_table
+    t = c.mismatch_table
+    step = t[~t["cut"]]
+    assert (step["plc"] - step["python"]).abs().max() <= 1 if len(step) else True
+    # accepted where Python refuses: only at a joint limit, within 1e-6 rad of it
+    finite = np.flatnonzero(np.isfinite(xyz).all(axis=1))  # NaN/inf: refused (status 6)
+    assert (res.status[np.setdiff1d(np.arange(len(xyz)), finite)] != 0).all()
+    py = arm.solve(xyz[finite], [arm.branches[0]])
+    odd = finite[(res.status[finite] == 0) & ~py.ok[:, 0]]
+    assert len(odd) <= c.unsafe <= 2
+    q = arm.solve(xyz[odd], [arm.branches[0]], limits=False).theta[:, 0]
+    lo, hi = arm.bounds[:, 0], arm.bounds[:, 1]
+    assert (np.minimum(np.abs(q - lo), np.abs(q - hi)).min(axis=1) < 1e-6).all()
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", ["puma560", "planar2r", "gantry"])
+def test_machine_program_with_six_axes(name):
+    """The machine program (analysis.plc.machine: PLCopen motion blocks beside the IK block)
+    of the six-axis PUMA 560 and of the planar arm and the gantry through every scenario
+    on the ST engine, held to the scenarios' own checks."""
+    from analysis.plc.generate import generate
+    from analysis.plc.machine.program import machine_name
+    from analysis.plc.machine.run import run_scenario
+    from analysis.plc.machine.scenarios import check, scenarios
+    from analysis.plc.machine.spec import machine_spec
+
+    try:
+        st_engine.machine_engine_path()
+    except st_engine.EngineMissing as exc:
+        pytest.skip(str(exc))
+    arm = load_arm(name)
+    spec = machine_spec(arm)
+    text, _ = generate(arm, "st")
+    for key, sc in scenarios(arm).items():
+        tr = run_scenario(text, machine_name(spec), spec, sc.rows)
+        assert check(sc, tr, spec) == [], (name, key)

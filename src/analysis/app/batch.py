@@ -40,6 +40,7 @@ from pathlib import Path
 import numpy as np
 
 from analysis import validate
+from analysis.app.explain import batch_reasons
 from analysis.kinematics.arm import Arm
 from analysis.kinematics.status import STATUS_TEXT, Status
 from analysis.safe_io import InputError, check_paths, iter_record_chunks, output_stream
@@ -72,6 +73,17 @@ def input_columns(arm: Arm) -> tuple[str, ...]:
         point.get(name) or f"{name}_{unit}"
         for name, unit in zip(arm.inputs, arm.user_units, strict=True)
     )
+
+
+def input_aliases(columns: tuple[str, ...]) -> dict[str, tuple[str, ...]]:
+    """Other names a header may give the input ``columns``: the name without its unit
+    (``x`` for ``x_mm``, ``alpha`` for ``alpha_deg``), read as that column where the header
+    has it and not the full name.
+
+    >>> input_aliases(("x_mm", "y_mm", "z_mm"))
+    {'x_mm': ('x',), 'y_mm': ('y',), 'z_mm': ('z',)}
+    """
+    return {c: (c.rsplit("_", 1)[0],) for c in columns if "_" in c}
 
 
 def output_columns(arm: Arm) -> list[str]:
@@ -164,15 +176,16 @@ def solve_csv(
     bad number), ``OutputError`` (cannot write, or the output is an input, a device or a
     FIFO) or ``ValueError`` (bad options); the output is then untouched.
     """
-    if isinstance(chunk_rows, bool) or not isinstance(chunk_rows, int) or not (
-        1 <= chunk_rows <= 10_000_000
+    if (
+        isinstance(chunk_rows, bool)
+        or not isinstance(chunk_rows, int)
+        or not (1 <= chunk_rows <= 10_000_000)
     ):
         raise ValueError(f"--chunk-rows {chunk_rows!r} must be a whole number in 1 .. 10,000,000")
     tol = validate.tolerance_mm(tol, "--tol")
     check_paths(inputs=[*arm.input_files, *(p for p in (input_path, params) if p)],
                 outputs=[output_path], make_parents=make_dirs)  # fmt: skip
     names = arm.branch_names(branch or arm.branches[0])
-    nb, nj = len(names), arm.n_joints
     columns = input_columns(arm)
     header, chunks = iter_record_chunks(
         input_path,
@@ -182,6 +195,7 @@ def solve_csv(
         chunk_rows=chunk_rows,
         delimiter=delimiter,
         bad_numbers="raise" if strict else "mark",
+        aliases=input_aliases(columns),
     )
     status_text = np.array([STATUS_TEXT[Status(s)] for s in range(len(Status))], dtype=object)
     counts: Counter = Counter()
@@ -191,59 +205,24 @@ def solve_csv(
         writer.writerow(output_header(header, output_columns(arm)))
         for rec in chunks:
             values = np.stack([rec.numbers[c] for c in columns], axis=-1)
-            problems = [
-                a or b
-                for a, b in zip(
-                    rec.problems,
-                    _range_problems(arm, values, columns, rec.lines, input_path),
-                    strict=True,
-                )
-            ]
+            problems = _problems(arm, rec, values, columns, input_path)
             if strict and any(problems):
                 raise ValueError(next(p for p in problems if p))
             for s in range(0, len(values), WRITE_ROWS):
                 e = min(s + WRITE_ROWS, len(values))
-                k = e - s
                 reason = problems[s:e]
-                valid = np.array([r is None for r in reason])
-                theta = np.full((k, nb, nj), np.nan)
-                ok = np.zeros((k, nb), dtype=bool)
-                status = np.full(k, int(Status.INVALID), dtype=np.int64)
-                row_status = np.full((k, nb), int(Status.INVALID), dtype=np.int64)
-                if valid.any():
-                    sol = arm.solve(
-                        arm.from_user(values[s:e][valid]),
-                        names,
-                        tol=tol,
-                        theta1_on_axis=theta1_on_axis,
-                    )
-                    theta[valid], ok[valid] = sol.theta, sol.ok
-                    status[valid] = sol.status
-                    row_status[valid] = sol.branch_status  # each branch's own reason
+                theta, ok, status, row_status, outside = _solve_part(
+                    arm, values[s:e], reason, names, tol, theta1_on_axis
+                )
                 counts.update(status_text[status].tolist())
-                total += k
+                total += e - s
                 solved += int(ok.any(axis=-1).sum())
-                row_status = row_status.reshape(-1)
-                flat_ok = ok.reshape(-1)
-                out: list[list[str]] = []
-                for col in rec.cells:
-                    part = col[s:e]
-                    out.append(part if nb == 1 else [v for v in part for _ in range(nb)])
-                out.append(list(names) * k)
-                out.append(["true" if v else "false" for v in flat_ok.tolist()])
-                flat = theta.reshape(k * nb, nj)
-                user = arm.joints_to_user(np.where(flat_ok[:, None], flat, 0.0))  # deg | mm
-                for j in range(nj):
-                    out.append(_fmt_angles(user[:, j], flat_ok))
-                pulses = np.zeros((k * nb, nj), dtype=np.int64)
-                if flat_ok.any():
-                    pulses[flat_ok] = arm.pulses(flat[flat_ok])
-                for j in range(nj):
-                    given = zip(pulses[:, j].tolist(), flat_ok.tolist(), strict=True)
-                    out.append([str(c) if good else "" for c, good in given])
-                out.append(status_text[row_status].tolist())
-                out.append([r or "" for r in reason for _ in range(nb)])
-                writer.writerows(zip(*out, strict=True))
+                cells = [col[s:e] for col in rec.cells]
+                row_text = status_text[row_status.reshape(-1)].tolist()
+                said = batch_reasons(
+                    row_text, np.repeat(outside, len(names)), list(names) * (e - s)
+                )
+                writer.writerows(_rows(arm, cells, names, theta, ok, row_text, reason, said))
                 if progress is not None:
                     progress(total)
     return {
@@ -255,3 +234,62 @@ def solve_csv(
         "solved": solved,
         "status": {k: counts.get(k, 0) for k in STATUS_TEXT.values() if counts.get(k, 0)},
     }
+
+
+def _problems(arm: Arm, rec, values: np.ndarray, columns, path) -> list[str | None]:
+    """Per record of a chunk: why it is not solved (a bad number as read, or a coordinate
+    out of range), or None."""
+    ranges = _range_problems(arm, values, columns, rec.lines, path)
+    return [a or b for a, b in zip(rec.problems, ranges, strict=True)]
+
+
+def _solve_part(arm: Arm, values: np.ndarray, reason, names, tol, theta1_on_axis):
+    """Solve the valid rows of one part (``reason`` None): joint values ``(k, nb, nj)``
+    (NaN where not solved), ``ok`` ``(k, nb)``, each target's status and each branch's own
+    (``Status.INVALID`` for a row not solved), and each target's distance outside the reach
+    [mm]."""
+    k, nb, nj = len(values), len(names), arm.n_joints
+    valid = np.array([r is None for r in reason])
+    theta = np.full((k, nb, nj), np.nan)
+    ok = np.zeros((k, nb), dtype=bool)
+    status = np.full(k, int(Status.INVALID), dtype=np.int64)
+    row_status = np.full((k, nb), int(Status.INVALID), dtype=np.int64)
+    outside = np.zeros(k)
+    if valid.any():
+        sol = arm.solve(
+            arm.from_user(values[valid]),
+            names,
+            tol=tol,
+            theta1_on_axis=theta1_on_axis,
+        )
+        theta[valid], ok[valid] = sol.theta, sol.ok
+        status[valid] = sol.status
+        row_status[valid] = sol.branch_status  # each branch's own reason
+        outside[valid] = sol.outside_mm
+    return theta, ok, status, row_status, outside
+
+
+def _rows(arm: Arm, cells, names, theta, ok, row_text, reason, said):
+    """The output rows of one part, one per target and branch: the input cells as read,
+    branch, reachable, the joint values (deg | mm), the pulses, status and reason (a bad
+    number's, else ``said``: why the row is not ok)."""
+    k, nb, nj = theta.shape
+    flat_ok = ok.reshape(-1)
+    out: list[list[str]] = []
+    for part in cells:
+        out.append(part if nb == 1 else [v for v in part for _ in range(nb)])
+    out.append(list(names) * k)
+    out.append(["true" if v else "false" for v in flat_ok.tolist()])
+    flat = theta.reshape(k * nb, nj)
+    user = arm.joints_to_user(np.where(flat_ok[:, None], flat, 0.0))  # deg | mm
+    for j in range(nj):
+        out.append(_fmt_angles(user[:, j], flat_ok))
+    pulses = np.zeros((k * nb, nj), dtype=np.int64)
+    if flat_ok.any():
+        pulses[flat_ok] = arm.pulses(flat[flat_ok])
+    for j in range(nj):
+        given = zip(pulses[:, j].tolist(), flat_ok.tolist(), strict=True)
+        out.append([str(c) if good else "" for c, good in given])
+    out.append(row_text)
+    out.append([r or said[i * nb + j] for i, r in enumerate(reason) for j in range(nb)])
+    return zip(*out, strict=True)

@@ -59,7 +59,7 @@ __all__ = [
 ]
 
 
-def _mul(a, b):
+def exact_mul(a, b):
     """a * b, exact for the structural zeros and ones of a D-H row (plain numbers)."""
     if isinstance(a, (int, float)):
         if a == 0:
@@ -78,7 +78,7 @@ def _mul(a, b):
     return a * b
 
 
-def _add(a, b):
+def exact_add(a, b):
     """a + b, dropping plain-number zeros."""
     if isinstance(a, (int, float)) and a == 0:
         return b
@@ -96,15 +96,15 @@ def _link_elements(ct, st, ca, sa, a, d, convention: Convention) -> list[list]:
     """
     if convention == "standard":
         return [
-            [ct, -_mul(st, ca), _mul(st, sa), _mul(a, ct)],
-            [st, _mul(ct, ca), -_mul(ct, sa), _mul(a, st)],
+            [ct, -exact_mul(st, ca), exact_mul(st, sa), exact_mul(a, ct)],
+            [st, exact_mul(ct, ca), -exact_mul(ct, sa), exact_mul(a, st)],
             [0, sa, ca, d],
         ]
     if convention == "modified":
         return [
             [ct, -st, 0, a],
-            [_mul(st, ca), _mul(ct, ca), -sa, -_mul(d, sa)],
-            [_mul(st, sa), _mul(ct, sa), ca, _mul(d, ca)],
+            [exact_mul(st, ca), exact_mul(ct, ca), -sa, -exact_mul(d, sa)],
+            [exact_mul(st, sa), exact_mul(ct, sa), ca, exact_mul(d, ca)],
         ]
     raise ValueError(f"unknown D-H convention {convention!r}; expected one of {CONVENTIONS}")
 
@@ -119,14 +119,17 @@ def exact_cos_sin(angle: float) -> tuple[float, float]:
     return math.cos(angle), math.sin(angle)
 
 
-def _compose(T: list[list], A: list[list]) -> list[list]:
+def compose_blocks(T: list[list], A: list[list]) -> list[list]:
     """Product of two 3x4 blocks of homogeneous transforms (last rows [0 0 0 1])."""
     out = []
     for i in range(3):
         row = []
         for j in range(4):
-            v = _add(_add(_mul(T[i][0], A[0][j]), _mul(T[i][1], A[1][j])), _mul(T[i][2], A[2][j]))
-            row.append(_add(v, T[i][3]) if j == 3 else v)
+            v = exact_add(
+                exact_add(exact_mul(T[i][0], A[0][j]), exact_mul(T[i][1], A[1][j])),
+                exact_mul(T[i][2], A[2][j]),
+            )
+            row.append(exact_add(v, T[i][3]) if j == 3 else v)
         out.append(row)
     return out
 
@@ -152,15 +155,15 @@ def chain_transforms(m, table: DHTable, q: Sequence | None = None) -> list[list[
         d = row.d
         if row.kind == "revolute" and q is not None:
             qi = next(it)
-            theta = _add(qi, row.theta_offset) if row.theta_offset else qi
+            theta = exact_add(qi, row.theta_offset) if row.theta_offset else qi
             ct, st = m.cos(theta), m.sin(theta)
         else:
             ct, st = exact_cos_sin(row.theta_offset)
             if row.kind == "prismatic" and q is not None:  # the joint value adds to d [mm]
-                d = _add(next(it), d)
+                d = exact_add(next(it), d)
         ca, sa = exact_cos_sin(row.alpha)
         A = _link_elements(ct, st, ca, sa, row.a, d, table.convention)
-        T = A if T is None else _compose(T, A)
+        T = A if T is None else compose_blocks(T, A)
         out.append(T)
     return out
 

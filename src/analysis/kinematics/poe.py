@@ -21,7 +21,7 @@ The matrix exponential of ``[S] theta`` (Rodrigues, seed 002 eqs. 3-5)::
     p = (I theta + (1 - cos(theta)) [w] + (theta - sin(theta)) [w]^2) v
 
 holds for both kinds: with ``w = 0`` it reduces to ``R = I, p = v theta``. One function body
-(:func:`_exp6_entries`) holds it and is called with NumPy (arrays, any leading shape) or
+(:func:`exp6_entries`) holds it and is called with NumPy (arrays, any leading shape) or
 with SymPy (symbols), so the numeric and symbolic paths cannot drift apart (the same design
 as :mod:`analysis.kinematics.dh`).
 
@@ -68,7 +68,7 @@ transforms are unit to ~1e-15; a hand-typed non-unit axis is off by far more."""
 
 
 # --------------------------------------------------------------------------- the formula
-def _exp6_entries(w, v, th, sin, cos) -> list[list]:
+def exp6_entries(w, v, th, sin, cos) -> list[list]:
     """The top 3x4 block of ``exp([S] th)`` for ``S = (w, v)``; the last row is [0 0 0 1].
 
     ``w``, ``v``: three components each (NumPy arrays broadcastable against ``th``, or SymPy
@@ -233,7 +233,7 @@ def exp6(screws: npt.ArrayLike, theta: npt.ArrayLike) -> npt.NDArray[np.float64]
         th = th[..., None]
     elif th.ndim == 0 or th.shape[-1] != S.shape[0]:
         raise ValueError(f"joint array has shape {th.shape}; expected (..., {S.shape[0]})")
-    rows = _exp6_entries(S[:, :3].T, S[:, 3:].T, th, np.sin, np.cos)
+    rows = exp6_entries(S[:, :3].T, S[:, 3:].T, th, np.sin, np.cos)
     out = np.zeros((*th.shape, 4, 4))
     for i, row in enumerate(rows):
         for j, value in enumerate(row):
@@ -330,7 +330,7 @@ def exp6_sym(screw: Sequence, theta) -> sp.Matrix:
         raise ValueError(f"screw has {len(entries)} entries; expected 6")
     if all(e.is_number for e in entries):
         check_screws([float(e) for e in entries])
-    rows = _exp6_entries(entries[:3], entries[3:], sp.sympify(theta), sp.sin, sp.cos)
+    rows = exp6_entries(entries[:3], entries[3:], sp.sympify(theta), sp.sin, sp.cos)
     return sp.Matrix([*[[sp.expand(e) for e in r] for r in rows], [0, 0, 0, 1]])
 
 

@@ -21,7 +21,7 @@ Kinds (in this order; a kind may be empty for an arm that has no such boundary):
 ``<status>-1mm``
     Each boundary of the reachable set that a target crosses when its position moves in
     its own vertical half-plane (the plane of the base axis: the arm's plane, so a pose's
-    orientation stays takeable), found by bisection on the solver's status and named by
+    orientation stays takeable; a planar arm's own plane), found by bisection on the solver's status and named by
     the status there (``out-of-reach-1mm``, ``inside-reach-1mm``, ``joint-limits-1mm``,
     ...): 1e-3 .. 1 mm on either side of it. Horizontal rays along the waist's direction,
     half of them each way (joint limits ignored), find the axis, where the waist flips
@@ -276,8 +276,14 @@ def _clear(arm: Arm, branch: str, p) -> npt.NDArray[np.bool_]:
 
 def _half_plane_rays(p, rng, position):
     """Unit steps (n, k) in the vertical half-plane of each target's position (radial and
-    vertical components only), zero on the angle inputs."""
+    vertical components only), zero on the angle inputs; a planar arm's (two position
+    inputs): any direction in its plane."""
     n = len(p)
+    if len(position) == 2:
+        a = rng.uniform(-np.pi, np.pi, n)
+        d = np.zeros_like(p)
+        d[:, position[0]], d[:, position[1]] = np.cos(a), np.sin(a)
+        return d
     xyz = p[:, position]
     rho = np.hypot(xyz[:, 0], xyz[:, 1])
     er = np.stack([xyz[:, 0], xyz[:, 1]], -1) / np.where(rho > 0, rho, 1.0)[:, None]
@@ -339,7 +345,7 @@ def _boundaries(s: _Sweep) -> Parts:
     q_b = arm.sample_q(rng, n_b + n_x + n_a, branch=branch)
     start = arm.target(q_b)
     found: list[tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], str]] = []
-    if len(position) == 3 and n_b:
+    if len(position) in (2, 3) and n_b:
         st = start[:n_b]
         found.append((*boundary_targets(arm, branch, st, _half_plane_rays(st, rng, position),
                                         rng, angle=False), "1mm"))  # fmt: skip

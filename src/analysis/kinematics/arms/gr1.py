@@ -191,15 +191,49 @@ def ik(
     a2, a3, a4, d1 = P["a2"], P["a3"], P["a4"], P["d1"]
     outer = m.let("outer", a2 + a3)
     inner = m.let("inner", m.abs(a2 - a3))
+    refusals, z0 = _box(m, (px, py, pz), outer, a4, d1, tol)
+    axis_tol = tol if axis_tol is None else axis_tol
+    phi, theta1, c1, s1 = _waist(m, px, py, axis_tol, theta1_on_axis, refusals)
+    off, t234, t5 = _hand(m, (alpha, beta, gamma), c1, s1, orientation_tol, margin_rad,
+                          refusals)  # fmt: skip
+    c234 = m.let("c234", m.cos(t234))
+    s234 = m.let("s234", m.sin(t234))
+    radial = m.let("radial", px * c1 + py * s1)
+    lengths = (a2, a3, a4, outer, inner)
+    sides = {}
+    for side in ("front", "back"):
+        sides[side] = _wrist(m, side, radial, z0, (c234, s234), lengths, tol, axis_tol, precise)
+    branches, branch_refusals = _branches(m, phi, theta1, t234, t5, sides)
+    out_f, out_b = sides["front"][4], sides["back"][4]
+    return {
+        "branches": branches,
+        "refusals": refusals,
+        "branch_refusals": branch_refusals,
+        "outside": m.select(m.lt(out_f, out_b), out_f, out_b),
+        "off_plane": off,
+        "wrist": {s: v[5] for s, v in sides.items()},
+    }
+
+
+def _box(m, position, outer, a4, d1, tol):
+    """The box ``|px|, |py|, |pz - d1| <= a2 + a3 + a4``, checked first: beyond
+    it the pose is out of reach anyway, and inside it no square below overflows a REAL (not
+    in the thesis: its sec. 4.2 takes every pose as reachable). Returns the refusals so far
+    and ``z0 = pz - d1``."""
+    px, py, pz = position
     m.section("box: |px|, |py|, |pz - d1| <= a2 + a3 + a4 (farther, no pose is reachable)")
     z0 = m.let("z0", pz - d1)
-    # the box first: beyond it the pose is out of reach anyway, and inside it no square
-    # below overflows a REAL
     box = (outer + a4) + tol
     out_box = m.any_(m.gt(m.abs(px), box), m.gt(m.abs(py), box), m.gt(m.abs(z0), box))
-    refusals = [(Status.OUT_OF_REACH, out_box)]
+    return [(Status.OUT_OF_REACH, out_box)], z0
+
+
+def _waist(m, px, py, axis_tol, theta1_on_axis, refusals):
+    """theta1 = atan2(py, px) (sec. 4.2, p. 18, prints ``theta1 = arctan(py/px)``,
+    ``theta1' = theta1 + 180``), and c1, s1 = px/rho, py/rho; on the base axis
+    (rho <= axis_tol) theta1 is undefined: refused, or ``theta1_on_axis`` given.
+    Returns (atan2(py, px) unwrapped, theta1, c1, s1)."""
     m.section("theta1 = atan2(py, px) (sec. 4.2 prints arctan(py/px)); the base axis")
-    axis_tol = tol if axis_tol is None else axis_tol
     rho = m.let("rho", m.sqrt(px * px + py * py))
     on_axis = m.le(rho, axis_tol)
     phi = m.atan2(py, px)
@@ -212,9 +246,18 @@ def ik(
         c1 = m.select(on_axis, m.cos(theta1_on_axis), c1)
         s1 = m.select(on_axis, m.sin(theta1_on_axis), s1)
     c1, s1 = m.let("cos_theta1", c1), m.let("sin_theta1", s1)
-    theta1 = m.let("theta1", m.wrap(phi))
+    return phi, m.let("theta1", m.wrap(phi)), c1, s1
+
+
+def _hand(m, rpy, c1, s1, orientation_tol, margin_rad, refusals):
+    """The hand's angles from the orientation n, o, a = the columns of RPY(alpha, beta,
+    gamma) (eq. 3.15): theta234 = atan2(c1 ax + s1 ay, -az) (sec. 4.2, p. 18, prints
+    ``theta234 = arctan(oz / (c1 ox + s1 oy))``) and theta5 = atan2(s1 nx - c1 ny,
+    s1 ox - c1 oy) (p. 18, prints arctan). The approach vector must lie in the arm plane,
+    ``s1 ax - c1 ay = 0`` (not printed): refused beyond ``orientation_tol`` narrowed by
+    ``margin_rad``. Returns (s1 ax - c1 ay, theta234, theta5)."""
     m.section("orientation n, o, a (eq. 3.15); a must lie in the arm plane: s1 ax - c1 ay = 0")
-    (nx, ny, _), (ox, oy, _), (ax, ay, az) = rpy_columns(m, alpha, beta, gamma)
+    (nx, ny, _), (ox, oy, _), (ax, ay, az) = rpy_columns(m, *rpy)
     off = m.let("off_plane", s1 * ax - c1 * ay)
     if orientation_tol is not None:
         narrowed = float(orientation_tol) - float(margin_rad)
@@ -228,49 +271,62 @@ def ik(
     m.section("theta234 = atan2(c1 ax + s1 ay, -az), theta5 = atan2(s1 nx - c1 ny, s1 ox - c1 oy)")
     t234 = m.let("theta234", m.atan2(c1 * ax + s1 * ay, -az))
     t5 = m.let("theta5", m.atan2(s1 * nx - c1 * ny, s1 * ox - c1 * oy))
-    c234 = m.let("c234", m.cos(t234))
-    s234 = m.let("s234", m.sin(t234))
-    radial = m.let("radial", px * c1 + py * s1)
-    sides = {}
-    for side in ("front", "back"):
-        # back: c1, s1 -> -c1, -s1 and theta234 -> -theta234 (the hand reversed)
-        sign = ("", "-") if side == "front" else ("-", "+")
-        m.section(f"{side}: wrist r = {sign[0]}(px c1 + py s1) - a4 c234, "
-                  f"z = pz - d1 {sign[1]} a4 s234; c3 (sec. 4.2)")  # fmt: skip
-        if side == "front":
-            r = m.let("r_front", radial - a4 * c234)
-            z = m.let("z_front", z0 - a4 * s234)
-        else:
-            r = m.let("r_back", -radial - a4 * c234)
-            z = m.let("z_back", z0 + a4 * s234)
-        d2 = m.let(f"d2_{side}", r * r + z * z)
-        d = m.let(f"d_{side}", m.sqrt(d2))
-        beyond = m.let(f"beyond_{side}", d - outer)
-        within = m.let(f"within_{side}", inner - d)
-        conds = [
-            (Status.OUT_OF_REACH, m.gt(beyond, tol)),
-            (Status.INSIDE_REACH, m.gt(within, tol)),
-            (Status.DEGENERATE, m.le(d, axis_tol)),
-        ]
-        den = 2.0 * a2 * a3
-        c3 = m.let(f"c3_{side}", m.clip((d2 - (a2 * a2 + a3 * a3)) / den, -1.0, 1.0))
-        if precise:
-            # sin(theta3) >= 0 from 1 -/+ c3 in factored form, not from c3: with a2 = a3 the
-            # wrist near the shoulder has c3 near -1, where 1 + c3 computed from c3 keeps half
-            # the digits and an error in theta3 moves the wrist by a3 times it (2.0e-6 mm at
-            # 2.0e-6 mm from the shoulder, solved with limits=False)
-            om3 = m.clip((outer - d) * (outer + d) / den, 0.0, 2.0)  # 1 - c3
-            op3 = m.clip((d - inner) * (d + inner) / den, 0.0, 2.0)  # 1 + c3
-            s3 = m.sqrt(om3 * op3)
-            t3 = m.let(f"acos_c3_{side}", m.atan2(s3, c3))  # acos(c3), in [0, pi]
-        else:  # the PLC programs' form (their float32 model is bit-exact on awlsim)
-            t3 = m.let(f"acos_c3_{side}", m.acos(c3))  # [0, pi]
-            s3 = m.sqrt((1.0 - c3) * (1.0 + c3))  # sin(acos c3) >= 0
-        m.section(f"{side}: theta2 = atan2(z, r) -/+ atan2(a3 s3, a2 + a3 c3)")
-        base = m.let(f"atan2_zr_{side}", m.atan2(z, r))
-        elbow = m.let(f"atan2_elbow_{side}", m.atan2(a3 * s3, a2 + a3 * c3))
-        outside = m.select(m.gt(beyond, within), beyond, within)
-        sides[side] = (conds, t3, base, elbow, outside, (r, z))
+    return off, t234, t5
+
+
+def _wrist(m, side, radial, z0, hand, lengths, tol, axis_tol, precise):
+    """One side's wrist (r, z) in the arm plane, its reach conditions, acos(c3) and the two
+    angles of theta2 (sec. 4.2, p. 19): ``c3 = ((px c1 + py s1 - c234 a4)^2 + (pz - s234
+    a4)^2 - a2^2 - a3^2) / (2 a2 a3)``, ``s3 = -/+ sqrt(1 - c3^2)``, ``theta3 =
+    arctan(s3/c3)``; theta2 = atan2(z, r) -/+ atan2(a3 s3, a2 + a3 c3), the angle of the
+    thesis's ``s2/c2`` quotient. The back side: c1, s1 -> -c1, -s1 and theta234 ->
+    -theta234 (the hand reversed). Returns (conditions, acos(c3), atan2(z, r), the elbow
+    angle, the signed distance outside the reach [mm], (r, z))."""
+    (c234, s234), (a2, a3, a4, outer, inner) = hand, lengths
+    # back: c1, s1 -> -c1, -s1 and theta234 -> -theta234 (the hand reversed)
+    sign = ("", "-") if side == "front" else ("-", "+")
+    m.section(f"{side}: wrist r = {sign[0]}(px c1 + py s1) - a4 c234, "
+              f"z = pz - d1 {sign[1]} a4 s234; c3 (sec. 4.2)")  # fmt: skip
+    if side == "front":
+        r = m.let("r_front", radial - a4 * c234)
+        z = m.let("z_front", z0 - a4 * s234)
+    else:
+        r = m.let("r_back", -radial - a4 * c234)
+        z = m.let("z_back", z0 + a4 * s234)
+    d2 = m.let(f"d2_{side}", r * r + z * z)
+    d = m.let(f"d_{side}", m.sqrt(d2))
+    beyond = m.let(f"beyond_{side}", d - outer)
+    within = m.let(f"within_{side}", inner - d)
+    conds = [
+        (Status.OUT_OF_REACH, m.gt(beyond, tol)),
+        (Status.INSIDE_REACH, m.gt(within, tol)),
+        (Status.DEGENERATE, m.le(d, axis_tol)),
+    ]
+    den = 2.0 * a2 * a3
+    c3 = m.let(f"c3_{side}", m.clip((d2 - (a2 * a2 + a3 * a3)) / den, -1.0, 1.0))
+    if precise:
+        # sin(theta3) >= 0 from 1 -/+ c3 in factored form, not from c3: with a2 = a3 the
+        # wrist near the shoulder has c3 near -1, where 1 + c3 computed from c3 keeps half
+        # the digits and an error in theta3 moves the wrist by a3 times it (2.0e-6 mm at
+        # 2.0e-6 mm from the shoulder, solved with limits=False)
+        om3 = m.clip((outer - d) * (outer + d) / den, 0.0, 2.0)  # 1 - c3
+        op3 = m.clip((d - inner) * (d + inner) / den, 0.0, 2.0)  # 1 + c3
+        s3 = m.sqrt(om3 * op3)
+        t3 = m.let(f"acos_c3_{side}", m.atan2(s3, c3))  # acos(c3), in [0, pi]
+    else:  # the PLC programs' form (their float32 model is bit-exact on awlsim)
+        t3 = m.let(f"acos_c3_{side}", m.acos(c3))  # [0, pi]
+        s3 = m.sqrt((1.0 - c3) * (1.0 + c3))  # sin(acos c3) >= 0
+    m.section(f"{side}: theta2 = atan2(z, r) -/+ atan2(a3 s3, a2 + a3 c3)")
+    base = m.let(f"atan2_zr_{side}", m.atan2(z, r))
+    elbow = m.let(f"atan2_elbow_{side}", m.atan2(a3 * s3, a2 + a3 * c3))
+    outside = m.select(m.gt(beyond, within), beyond, within)
+    return conds, t3, base, elbow, outside, (r, z)
+
+
+def _branches(m, phi, theta1, t234, t5, sides):
+    """The four branches, waist front/back and elbow up/down, with theta4 = theta234 -
+    theta2 - theta3 (sec. 4.2, p. 19). Returns ({name: (theta1 .. theta5)},
+    {name: [(Status, condition)]})."""
     m.section("the branches: waist front/back, elbow up/down; theta4 = theta234 - theta2 - theta3")
     theta1_back = m.let("theta1_back", m.wrap(phi + m.pi))
     t5_back = m.let("theta5_back", m.wrap(t5 + m.pi))
@@ -287,15 +343,7 @@ def ik(
         branches[name] = (theta1 if front else theta1_back, theta2, theta3, theta4,
                           t5 if front else t5_back)  # fmt: skip
         branch_refusals[name] = conds
-    out_f, out_b = sides["front"][4], sides["back"][4]
-    return {
-        "branches": branches,
-        "refusals": refusals,
-        "branch_refusals": branch_refusals,
-        "outside": m.select(m.lt(out_f, out_b), out_f, out_b),
-        "off_plane": off,
-        "wrist": {s: v[5] for s, v in sides.items()},
-    }
+    return branches, branch_refusals
 
 
 def refusal(status: Status, p, P, *, tol: float, distance: float) -> tuple[str, float]:

@@ -41,7 +41,7 @@ Forward kinematics (:func:`fk`): the passive joints from the sliders (the role o
     theta10 = theta3, theta11 = -theta3, theta12 = psi, theta13 = -psi  (secondary chain)
 
 then the product of exponentials of the main chain (seed 002 eq. 9, the twists of eqs. 7-8:
-:func:`analysis.kinematics.poe._exp6_entries`, the project's one Rodrigues formula)::
+:func:`analysis.kinematics.poe.exp6_entries`, the project's one Rodrigues formula)::
 
     g_st = exp(xi1 theta1) exp(xi2 z) exp(xi3 theta3) ... exp(xi8 theta8) g_st(0)
 
@@ -96,8 +96,8 @@ from __future__ import annotations
 
 import math
 
-from analysis.kinematics.dh import _add, _compose, _mul
-from analysis.kinematics.poe import _exp6_entries
+from analysis.kinematics.dh import compose_blocks, exact_add, exact_mul
+from analysis.kinematics.poe import exp6_entries
 from analysis.kinematics.rpy import rpy_columns
 from analysis.kinematics.status import Status
 
@@ -183,11 +183,11 @@ def points(P) -> dict:
 
 def _revolute(w, q) -> tuple:
     """A revolute twist (omega, -omega x q) through point ``q`` (seed 002 eq. 7)."""
-    # v = q x omega = -(omega x q); _mul drops the exact zeros of the axis directions
+    # v = q x omega = -(omega x q); exact_mul drops the exact zeros of the axis directions
     v = (
-        _add(_mul(q[1], w[2]), _mul(-1.0, _mul(q[2], w[1]))),
-        _add(_mul(q[2], w[0]), _mul(-1.0, _mul(q[0], w[2]))),
-        _add(_mul(q[0], w[1]), _mul(-1.0, _mul(q[1], w[0]))),
+        exact_add(exact_mul(q[1], w[2]), exact_mul(-1.0, exact_mul(q[2], w[1]))),
+        exact_add(exact_mul(q[2], w[0]), exact_mul(-1.0, exact_mul(q[0], w[2]))),
+        exact_add(exact_mul(q[0], w[1]), exact_mul(-1.0, exact_mul(q[1], w[0]))),
     )
     return (tuple(w), v)
 
@@ -262,15 +262,21 @@ def passive(m, z, x, P) -> dict:
 
 
 def _exp(m, twist, th):
-    """exp([xi] th) as a 3x4 block (:func:`analysis.kinematics.poe._exp6_entries`)."""
+    """exp([xi] th) as a 3x4 block (:func:`analysis.kinematics.poe.exp6_entries`)."""
     w, v = twist
-    return _exp6_entries(w, v, th, m.sin, m.cos)
+    return exp6_entries(w, v, th, m.sin, m.cos)
 
 
 def _apply(T, p) -> tuple:
     """T (3x4 block) applied to point p."""
     return tuple(
-        _add(_add(_add(_mul(T[i][0], p[0]), _mul(T[i][1], p[1])), _mul(T[i][2], p[2])), T[i][3])
+        exact_add(
+            exact_add(
+                exact_add(exact_mul(T[i][0], p[0]), exact_mul(T[i][1], p[1])),
+                exact_mul(T[i][2], p[2]),
+            ),
+            T[i][3],
+        )
         for i in range(3)
     )
 
@@ -280,7 +286,7 @@ def _product(m, twists, values) -> list:
     out, T = [], None
     for tw, q in zip(twists, values, strict=True):
         E = _exp(m, tw, q)
-        T = E if T is None else _compose(T, E)
+        T = E if T is None else compose_blocks(T, E)
         out.append(T)
     return out
 

@@ -1,4 +1,5 @@
-"""A closed form derived from the D-H table, for the families the seed papers belong to.
+"""A closed form derived from the D-H table, for the seed papers' families and the ones
+engineers own (six-axis industrial arms, SCARAs, planar arms, gantries).
 
 A description without ``closed_form`` (``data/arms/*.toml`` or a user's file) gets one
 derived here (:func:`derive`, called by the loader, :func:`analysis.kinematics.loader.
@@ -58,6 +59,18 @@ shells; inside the cylinder a lateral offset keeps the target out of; on the wai
 (``orientation``); then per branch where the front and back solutions differ (4R, 5R): the
 solved point beyond or inside its reach, on the shoulder axis (``degenerate``).
 
+The six-axis families extend these steps (:mod:`.positioning` writes them, :mod:`.wrist`
+the wrists): an arm with a spherical wrist (PUMA, KUKA, ABB, Fanuc; Pieper's condition) is
+the 3R decomposition of its wrist centre, where the pose puts it, then the wrist by PK2 and
+PK1 (eight branches: ``<side>-<elbow>-<wrist>``, the wrist ``noflip`` or ``flip``); an arm of
+the Universal Robots family is the 4R decomposition of the point where axes 5 and 6 meet,
+its pitch from the wrist (q5 from axis 6's angle to the parallel axes, q6 by PK1, the pitch
+from axis 5) per wrist solution. The wrist flip (axis 6 along axis 4, or along the parallel
+axes) is refused per branch (``degenerate``), the pose still exact on either side of it.
+Planar arms and SCARAs (:mod:`.planar`) and gantries (:mod:`.gantry`) have closed forms of
+their own on the same subproblems; :mod:`.families` lists every family and its inputs, and
+:mod:`.forms` picks the class.
+
 Angles: theta1, theta2 and the pitch joints are wrapped to (-pi, pi]; theta3 is not wrapped
 where the forearm continues the upper arm at q = 0 (the seeds' case: ``-/+acos`` by branch,
 continuous at the folded elbow), else wrapped.
@@ -65,7 +78,8 @@ continuous at the folded elbow), else wrapped.
 Why derived here rather than by a library: EAIK (the ``bench`` extra) derives and solves
 such decompositions in C++, but yields numbers, not a closed form the project's backends can
 record (compiled kernel, float32 model, PLC programs); it is the oracle instead
-(:mod:`.oracle`). IKFast generates C++ and needs OpenRAVE.
+(:mod:`.oracle`), with pyplcopen's own kinematics (:mod:`.plcopen_oracle`) and IK-Geo
+(``make bench``). IKFast generates C++ and needs OpenRAVE.
 """
 
 from __future__ import annotations

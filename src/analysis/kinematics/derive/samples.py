@@ -22,7 +22,7 @@ __all__ = ["random_arm"]
 _PARALLEL = (0.0, 180.0)
 
 
-def _twist(rng, kind: str) -> float:
+def random_twist(rng, kind: str) -> float:
     """A twist [deg]: "parallel" (0 or 180), "across" (|sin| >= 0.2) or "any"."""
     if kind == "parallel":
         return float(rng.choice(_PARALLEL))
@@ -35,7 +35,7 @@ def _twist(rng, kind: str) -> float:
     return float(rng.uniform(-180.0, 180.0))
 
 
-def _length(rng, scale: float, p_zero: float = 0.4) -> float:
+def random_length(rng, scale: float, p_zero: float = 0.4) -> float:
     return 0.0 if rng.random() < p_zero else float(round(rng.uniform(-scale, scale), 3))
 
 
@@ -50,11 +50,11 @@ def random_arm(rng: np.random.Generator, family: str, convention: str, name: str
         rel.append("across")
     if convention == "standard":
         # row i's alpha turns axis i (z_{i-1}) into axis i+1 (z_i); the last row's is free
-        alphas = [_twist(rng, k) for k in rel] + [_twist(rng, "any")]
+        alphas = [random_twist(rng, k) for k in rel] + [random_twist(rng, "any")]
     else:
         # row i's alpha_{i-1} turns axis i-1 into axis i; row 1's tilts the waist
-        alphas = [_twist(rng, "any") if rng.random() < 0.3 else 0.0]
-        alphas += [_twist(rng, k) for k in rel]
+        alphas = [random_twist(rng, "any") if rng.random() < 0.3 else 0.0]
+        alphas += [random_twist(rng, k) for k in rel]
     params: dict[str, float] = {}
     rows = []
     for i in range(n):
@@ -68,7 +68,7 @@ def random_arm(rng: np.random.Generator, family: str, convention: str, name: str
             v = (
                 float(round(rng.uniform(150.0, 400.0) * rng.choice((-1, 1)), 3))
                 if big
-                else _length(rng, 120.0)
+                else random_length(rng, 120.0)
             )
             if v != 0.0 and rng.random() < 0.6:
                 pname = f"{key}{i + 1}"
@@ -90,9 +90,13 @@ def random_arm(rng: np.random.Generator, family: str, convention: str, name: str
             {
                 "joint": "tool",
                 "kind": "fixed",
-                "alpha_deg": _twist(rng, "any"),
-                "a": float(round(rng.uniform(150.0, 400.0), 3)) if forearm else _length(rng, 100.0),
-                "d": _length(rng, 100.0),
+                "alpha_deg": random_twist(rng, "any"),
+                "a": (
+                    float(round(rng.uniform(150.0, 400.0), 3))
+                    if forearm
+                    else random_length(rng, 100.0)
+                ),
+                "d": random_length(rng, 100.0),
                 "theta_offset_deg": float(
                     rng.choice((0.0, 90.0, round(rng.uniform(-180, 180), 2)))
                 ),

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from analysis.kinematics.derive.samples import _length, _twist
+from analysis.kinematics.derive.samples import random_length, random_twist
 
 __all__ = ["NEW_FAMILIES", "TRIES", "random_family_arm"]
 
@@ -78,12 +78,12 @@ def _angle(rng, kind: str) -> float:
     if kind == "perp":
         return float(rng.choice((90.0, -90.0)))
     if kind == "base":
-        return _twist(rng, "any") if rng.random() < 0.3 else 0.0
+        return random_twist(rng, "any") if rng.random() < 0.3 else 0.0
     if kind == "base2":
         return float(rng.choice((0.0, 180.0)))
     if kind in ("base4", "axis"):
         return float(rng.choice((0.0, 90.0, -90.0, 180.0)))
-    return _twist(rng, kind)
+    return random_twist(rng, kind)
 
 
 def _rows(rng, spec: str) -> tuple[list[dict], dict]:
@@ -97,7 +97,7 @@ def _rows(rng, spec: str) -> tuple[list[dict], dict]:
         for key, k in (("a", a_kind), ("d", d_kind)):
             v = 0.0 if k == "zero" else (
                 float(round(rng.uniform(150.0, 400.0) * rng.choice((-1, 1)), 3)) if k == "big"
-                else _length(rng, 120.0))  # fmt: skip
+                else random_length(rng, 120.0))  # fmt: skip
             if v != 0.0 and rng.random() < 0.5:
                 params[f"{key}{i + 1}"] = v
                 v = f"{key}{i + 1}"

@@ -3,7 +3,7 @@
 Vectors are 3-tuples whose entries are plain numbers (the joint axes: rotations of a D-H
 chain at q = 0 depend on its twists and offsets only) or values of ``m`` (positions: the
 lengths may be traced parameters, SymPy symbols or floats). Plain-number zeros and ones are
-kept exact (:func:`analysis.kinematics.dh._mul`), so a recorded closed form carries no
+kept exact (:func:`analysis.kinematics.dh.exact_mul`), so a recorded closed form carries no
 ``0 * x`` terms of the structural zeros of a D-H table.
 
 Subproblems (Murray, Li & Sastry, *A Mathematical Introduction to Robotic Manipulation*,
@@ -30,7 +30,7 @@ kernel vectorizes them and the PLC program lowers them to straight-line REAL cod
 
 from __future__ import annotations
 
-from analysis.kinematics.dh import _add, _mul
+from analysis.kinematics.dh import exact_add, exact_mul
 
 __all__ = [
     "across",
@@ -53,38 +53,38 @@ def mul(k, x):
     """``k x`` for a plain number ``k`` and a value of ``m``: exact where ``k`` is 0 or +-1,
     as the recorder simplifies it (a numpy ``0.0 * x`` is an array of zeros that would turn
     a constant it meets into a REAL of the PLC model, where the program folds it)."""
-    return _mul(k, x)
+    return exact_mul(k, x)
 
 
 def add(a, b) -> tuple:
     """a + b."""
-    return tuple(_add(x, y) for x, y in zip(a, b, strict=True))
+    return tuple(exact_add(x, y) for x, y in zip(a, b, strict=True))
 
 
 def sub(a, b) -> tuple:
     """a - b."""
-    return tuple(_add(x, _mul(-1.0, y)) for x, y in zip(a, b, strict=True))
+    return tuple(exact_add(x, exact_mul(-1.0, y)) for x, y in zip(a, b, strict=True))
 
 
 def scale(k, a) -> tuple:
     """k a (k a number or a value of ``m``)."""
-    return tuple(_mul(k, x) for x in a)
+    return tuple(exact_mul(k, x) for x in a)
 
 
 def dot(a, b):
     """a . b, summed in index order (x, then y, then z)."""
     out = 0.0
     for x, y in zip(a, b, strict=True):
-        out = _add(out, _mul(x, y))
+        out = exact_add(out, exact_mul(x, y))
     return out
 
 
 def cross(a, b) -> tuple:
     """a x b."""
     return (
-        _add(_mul(a[1], b[2]), _mul(-1.0, _mul(a[2], b[1]))),
-        _add(_mul(a[2], b[0]), _mul(-1.0, _mul(a[0], b[2]))),
-        _add(_mul(a[0], b[1]), _mul(-1.0, _mul(a[1], b[0]))),
+        exact_add(exact_mul(a[1], b[2]), exact_mul(-1.0, exact_mul(a[2], b[1]))),
+        exact_add(exact_mul(a[2], b[0]), exact_mul(-1.0, exact_mul(a[0], b[2]))),
+        exact_add(exact_mul(a[0], b[1]), exact_mul(-1.0, exact_mul(a[1], b[0]))),
     )
 
 
@@ -103,7 +103,8 @@ def rotate(w, a, c, s) -> tuple:
     ``s`` (Rodrigues): ``a c + (w x a) s + w (w . a)(1 - c)``."""
     wa = dot(w, a)
     return add(
-        add(scale(c, a), scale(s, cross(w, a))), scale(_mul(wa, _add(1.0, _mul(-1.0, c))), w)
+        add(scale(c, a), scale(s, cross(w, a))),
+        scale(exact_mul(wa, exact_add(1.0, exact_mul(-1.0, c))), w),
     )
 
 

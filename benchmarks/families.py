@@ -1,0 +1,218 @@
+"""``make bench``: the families engineers own, derived from D-H tables (analysis.kinematics.
+derive): the six-axis kernels against EAIK and IK-Geo, and every family against its oracles.
+
+- ``sixaxis``: the PUMA 560 (family 6R-wrist) and the UR5 (6R-parallel), all eight branches,
+  on the same seeded poses: the compiled kernel (``Arm.solve(backend="compiled")``: generated
+  from the derived closed form, Numba, the machine's threads), its numpy evaluation, EAIK's
+  batched IK (C++, ``IK_batched`` on as many worker threads) and IK-Geo (the Rust ``ik-geo``
+  wheel, one ``get_ik`` call per pose: it has no batch call); poses per second of wall time,
+  interleaved rounds, the median kept. The kernel's first call compiles it (minutes for an
+  eight-branch kernel; then read from the disk cache): reported apart.
+- ``agreement``: solution sets compared as today's bench does (equal sets, the oracle empty
+  or a subset, disagreements: must be 0), per family and D-H convention: EAIK on random arms
+  of every revolute family (analysis.kinematics.derive.samples_more) and on the published
+  arms, IK-Geo on the PUMA 560 and the UR5, pyplcopen's kinematics on the arms it models
+  (analysis.kinematics.derive.plcopen_oracle), and pyplcopen's SerialChain FK on the
+  published six-axis arms.
+"""
+
+from __future__ import annotations
+
+import statistics
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+from analysis.kinematics import compiled
+from analysis.kinematics.arm import load_arm
+from analysis.kinematics.derive import plcopen_oracle as po
+from analysis.kinematics.derive.chain import home
+from analysis.kinematics.derive.oracle import (
+    available as eaik_available,
+    compare_solution_sets,
+    eaik_robot,
+)
+from analysis.kinematics.derive.positioning import meet
+from analysis.kinematics.derive.samples_more import random_family_arm
+from analysis.kinematics.ops import numpy_ops
+from analysis.kinematics.rpy import pose_from_transform
+
+SIX = {"puma560": "spherical_two_parallel", "ur5": "three_parallel_two_intersecting"}
+"""IK-Geo's decomposition of each published six-axis arm."""
+REVOLUTE = ("2R-planar", "3R-planar", "6R-wrist", "6R-parallel")
+
+
+def ikgeo_robot(arm):
+    """IK-Geo's model of ``arm`` (a POE: the axes at q = 0 and the offsets between points on
+    them, the points where the wrist axes meet taken as IK-Geo's decompositions require), or
+    None without the wheel."""
+    try:
+        from ik_geo import Robot
+    except ImportError:
+        return None
+    h = home(numpy_ops, arm.table)
+    H = np.array(h.axes)
+    pts = [np.array([float(c) for c in p]) for p in h.points]
+    if arm.closed_form.family == "6R-wrist":
+        w = np.array([float(c) for c in meet(h.points[3], H[3], h.points[4], H[4])])
+        pts[3] = pts[4] = pts[5] = w
+    else:
+        c = np.array([float(c) for c in meet(h.points[4], H[4], h.points[5], H[5])])
+        pts[4] = pts[5] = c
+    tool = np.array([float(c) for c in h.position])
+    P = [pts[0], *(pts[i + 1] - pts[i] for i in range(5)), tool - pts[5]]
+    return getattr(Robot, SIX[arm.name])(H.tolist(), np.array(P).tolist()), h.rotation
+
+
+def _ikgeo_solve(robot, R0, T):
+    """IK-Geo's exact solutions of poses ``T`` (its rotation the transpose of ours, the
+    tool's rotation at q = 0 taken off)."""
+    return [[np.asarray(s[0]) for s in robot.get_ik((t[:3, :3] @ R0.T).T, t[:3, 3]) if not s[1]]
+            for t in T]  # fmt: skip
+
+
+def sixaxis(n: int = 200_000, n_peer: int = 20_000, rounds: int = 3, seed: int = 32) -> dict:
+    """Rates [poses/s] and their ratios on the published six-axis arms (module docstring)."""
+    out = {}
+    threads = compiled.threads()
+    for name in SIX:
+        arm = load_arm(name)
+        rng = np.random.default_rng(seed)
+        q = rng.uniform(-np.pi, np.pi, (n, 6))
+        T = arm.table.fk(q)
+        p = pose_from_transform(T)
+        t0 = time.perf_counter()
+        arm.solve(p[:10], limits=False, backend="compiled")
+        first = time.perf_counter() - t0
+        c = arm.solve(p[:n_peer], limits=False, backend="compiled")
+        r = arm.solve(p[:n_peer], limits=False)
+        same = {"statuses_equal": bool((c.status == r.status).all() and (c.ok == r.ok).all()),
+                "max_angle_diff_rad": float(np.nanmax(np.abs(c.theta - r.theta)))}  # fmt: skip
+        cases = {
+            "compiled": (n, lambda: arm.solve(p, limits=False, backend="compiled")),
+            "numpy": (n_peer, lambda: arm.solve(p[:n_peer], limits=False)),
+        }
+        if eaik_available():
+            robot = eaik_robot(arm)
+            poses = [T[i] for i in range(n_peer)]
+            cases["eaik"] = (n_peer, lambda: robot.IK_batched(poses, threads))
+        geo = ikgeo_robot(arm)
+        if geo is not None:
+            cases["ikgeo"] = (n_peer // 4, lambda: _ikgeo_solve(geo[0], geo[1], T[: n_peer // 4]))
+        times = {k: [] for k in cases}
+        for _ in range(rounds):
+            for k, (_, fn) in cases.items():
+                t0 = time.perf_counter()
+                fn()
+                times[k].append(time.perf_counter() - t0)
+        rate = {k: cases[k][0] / statistics.median(v) for k, v in times.items()}
+        out[name] = {
+            "family": arm.closed_form.family,
+            "branches": len(arm.branches),
+            "rates_poses_per_s": rate,
+            "compiled / eaik": rate["compiled"] / rate["eaik"] if "eaik" in rate else None,
+            "compiled / ikgeo": rate["compiled"] / rate["ikgeo"] if "ikgeo" in rate else None,
+            "compiled / numpy": rate["compiled"] / rate["numpy"],
+            "first_compiled_call_s": first,
+            "compiled = numpy": same,
+            "threads": threads,
+        }
+    return out
+
+
+def _tally(rows: dict, key: str, a) -> None:
+    row = rows.setdefault(key, {"family": a.family, "arms": 0, "configurations": 0,
+                                "equal": 0, "oracle_empty": 0, "oracle_subset": 0,
+                                "disagree": 0, "solutions": 0, "max_fk_ik_residual_mm": 0.0})  # fmt: skip
+    row["arms"] += 1
+    row["configurations"] += a.n
+    row["equal"] += a.equal
+    row["oracle_empty"] += a.eaik_empty
+    row["oracle_subset"] += a.eaik_subset
+    row["disagree"] += a.disagree
+    row["solutions"] += a.solutions
+    row["max_fk_ik_residual_mm"] = max(row["max_fk_ik_residual_mm"], a.max_residual_mm)
+
+
+def _ikgeo_agreement(rows: dict, n_q: int, rng) -> None:
+    from analysis.kinematics.derive.oracle import Agreement, _unique, _verdict
+
+    for name in SIX:
+        arm = load_arm(name)
+        geo = ikgeo_robot(arm)
+        if geo is None:
+            return
+        q = rng.uniform(-np.pi, np.pi, (n_q, 6))
+        T = arm.table.fk(q)
+        sol = arm.solve(pose_from_transform(T), limits=False)
+        theirs = _ikgeo_solve(geo[0], geo[1], T)
+        tally = dict.fromkeys(("equal", "empty", "subset", "disagree"), 0)
+        for i in range(n_q):
+            ours = [sol.theta[i, b] for b in range(8) if sol.ok[i, b]]
+            tally[_verdict(_unique(ours), _unique(theirs[i]))] += 1
+        _tally(rows, f"IK-Geo {name}", Agreement(arm.closed_form.family, n_q, tally["equal"],
+               tally["empty"], tally["subset"], tally["disagree"], int(sol.ok.sum()), 0, 0.0))  # fmt: skip
+
+
+def _plcopen_agreement(rows: dict, folder: Path, n_q: int, rng) -> None:
+    if not po.available():
+        rows["pyplcopen"] = {"skipped": "the driver is not built (make st-engine)"}
+        return
+    for k in range(5):
+        l1, l2 = (float(v) for v in rng.uniform(150.0, 400.0, 2))
+        path = folder / f"scara{k}.toml"
+        path.write_text(po.scara_text(l1, l2), encoding="utf-8")
+        arm = load_arm(str(path))
+        q = rng.uniform([-3.0, -3.0, -200.0], [3.0, 3.0, 200.0], (n_q, 3))
+        _tally(rows, "pyplcopen Scara", po.compare_seeded(arm, f"scara {l1!r} {l2!r} 1",
+                                                          arm.target(q), rng))  # fmt: skip
+        offset = rng.uniform(-300.0, 300.0, 3)
+        path = folder / f"gantry{k}.toml"
+        path.write_text(po.gantry_text(offset), encoding="utf-8")
+        arm = load_arm(str(path))
+        q = rng.uniform(-500.0, 500.0, (n_q, 3))
+        _tally(rows, "pyplcopen CartesianGantry", po.compare_seeded(
+            arm, f"gantry 3 1 1 1 {po._fmt(offset)}", arm.target(q), rng))  # fmt: skip
+        dims = [float(v) for v in rng.uniform(100.0, 500.0, 4)]
+        path = folder / f"wrist{k}.toml"
+        path.write_text(po.wrist6r_text(*dims), encoding="utf-8")
+        arm = load_arm(str(path))
+        q = rng.uniform(-3.0, 3.0, (n_q, 6))
+        _tally(rows, "pyplcopen SphericalWrist6R", po.compare_seeded(
+            arm, "wrist6r " + " ".join(repr(d) for d in dims), arm.target(q), rng))  # fmt: skip
+    for name in SIX:
+        arm = load_arm(name)
+        q = rng.uniform(-np.pi, np.pi, (10_000, 6))
+        rows[f"pyplcopen SerialChain FK {name}"] = {
+            "configurations": len(q),
+            "max_abs_diff": float(np.abs(po.fk_chain(arm.table, q) - arm.table.fk(q)).max()),
+        }
+
+
+def agreement(n_arms: int = 10, n_q: int = 30, seed: int = 2032) -> dict:
+    """Solution sets against EAIK, IK-Geo and pyplcopen (module docstring)."""
+    rows: dict = {}
+    rng = np.random.default_rng(seed)
+    with tempfile.TemporaryDirectory() as tmp:
+        folder = Path(tmp)
+        if eaik_available():
+            for fam in REVOLUTE:
+                for conv in ("standard", "modified"):
+                    for k in range(n_arms):
+                        path = folder / f"a{fam[0]}{conv[0]}{k}.toml"
+                        path.write_text(random_family_arm(rng, fam, conv, path.stem),
+                                        encoding="utf-8")  # fmt: skip
+                        arm = load_arm(str(path))
+                        q = rng.uniform(arm.bounds[:, 0], arm.bounds[:, 1], (n_q, arm.n_joints))
+                        _tally(rows, f"EAIK {fam} {conv}", compare_solution_sets(arm, q))
+            for name in (*SIX, "planar2r"):
+                arm = load_arm(name)
+                q = rng.uniform(-np.pi, np.pi, (10 * n_q, arm.n_joints))
+                _tally(rows, f"EAIK {name}", compare_solution_sets(arm, q))
+        else:
+            rows["EAIK"] = {"skipped": "EAIK is not installed (requirements-bench.lock)"}
+        _ikgeo_agreement(rows, 10 * n_q, rng)
+        _plcopen_agreement(rows, folder, n_q, rng)
+    return rows
