@@ -35,7 +35,8 @@
 // before the scan), each of OUTPUTS after the scan, then the scan's fault code
 // (st::ScanError, 0 ok).
 // A scan fault stops the run after its row: "fault CODE NAME at cycle K" on stderr, exit 4.
-// Compile diagnostics: "line L col C: code: message" on stderr, exit 3. On exit the time
+// Compile diagnostics: "line L col C: code: message" on stderr, exit 3 (a code budget of 1 MiB,
+// as st_run's). On exit the time
 // spent in scans: "scan_ns <n> cycles <m>" on stderr.
 #include "axis/state.h"
 #include "rt/error_text.h"
@@ -136,7 +137,9 @@ std::string read_file(const char *path, bool &ok)
 
 bool compile_or_report(const std::string &source, st::CompileResult &out)
 {
-    out = st::compile(source);
+    st::CompileOptions options;
+    options.max_code_bytes = 1U << 20;  // as st_run: the default 64 KiB is not a six-axis arm's
+    out = st::compile(source, options);
     if(out.ok) return true;
     for(const st::Diagnostic &d : out.diagnostics)
         std::fprintf(stderr, "line %d col %d: %s: %s\n", d.line, d.column,
