@@ -38,7 +38,10 @@ def test_stop_distance_against_both_bounds(machine_engine, arm):
     assert (round(min(jerk), 3), round(max(jerk), 3)) == (jlo, jhi)
     assert (round(min(issue), 3), round(max(issue), 3)) == (ilo, ihi)
     over = [d["farthest"] / d["rest"] - 1 for d in rows]
-    assert round(100 * max(o for o, d in zip(over, rows) if d["rest"] > 0.1), 2) == over_pct
+    assert (
+        round(100 * max(o for o, d in zip(over, rows, strict=True) if d["rest"] > 0.1), 2)
+        == over_pct
+    )
     assert max(over) < 0.11 and max(d["farthest"] / d["jerk_bound"] for d in rows) < 1.008
 
 
