@@ -77,6 +77,7 @@ def test_every_help_example_runs_and_exits_0(tmp_path, capsys, monkeypatch):
         (tmp_path / name).write_text("x_mm,y_mm,z_mm\n100,100,600\n200,500,600\n")
     (tmp_path / "s.csv").write_text("t_s,name,value\n0,Enable,TRUE\n")
     shutil.copyfile(data_dir() / "arms" / "palletizer.toml", tmp_path / "my_arm.toml")
+    shutil.copytree(Path(__file__).parents[1] / "audit" / "example", tmp_path / "example")
     failed, ran = [], 0
     for line in examples:
         if "--dialect st" in line and "stl-run" in line and not engine:
