@@ -286,3 +286,28 @@ def test_base_axis_offers_theta1_and_fk_says_which_branch(explorer_page, shots):
     assert note.startswith("picker: left out of this page") and "make lab" in note
     page.locator(".static-explorer .explorer-fk").uncheck()
     _select_arm(page, "grabber")
+
+
+def test_the_branch_table_is_whole_for_five_joints(explorer_page, shots):
+    """Issue 31 polish: the branch table's status column was clipped for arms with 4-5
+    joints; at 1366 px every cell of it lies inside the explorer, for every arm."""
+    page = explorer_page
+    page.set_viewport_size({"width": 1366, "height": 900})
+    for name in ("grabber", "palletizer", "gr1"):
+        _select_arm(page, name)
+        page.wait_for_function(
+            "() => document.querySelectorAll('.static-explorer .explorer-table td').length"
+        )
+        out = page.evaluate(
+            """() => { const box = document.querySelector('.static-explorer')
+                           .getBoundingClientRect();
+                const t = document.querySelector('.static-explorer .explorer-table');
+                const cells = [...t.querySelectorAll('th, td')];
+                return {cols: t.querySelectorAll('thead th').length,
+                        clipped: cells.filter(c => c.getBoundingClientRect().right > box.right + 1
+                                                   || c.scrollWidth > c.clientWidth + 1)
+                                      .map(c => c.innerText)}; }"""
+        )
+        assert not out["clipped"], (name, out)
+    page.locator(".static-explorer .explorer-table").scroll_into_view_if_needed()
+    page.screenshot(path=shots / "site-explorer-table-gr1.png")
