@@ -9,8 +9,9 @@ beneath the command's function (``cmd_stl``; ``_cmd_stl`` before the CLI split),
 thousands of steps that say nothing about the structure), leaving out the file I/O
 (``safe_io``) that every command shares. Consecutive
 calls within one file are one *stop*; a stop in a file the walk had already left is a
-*return*. The description is a fresh copy of ``data/arms/grabber.toml`` (so it is read,
-not taken from a cache).
+*return*. The description is a fresh copy of ``data/arms/grabber.toml`` of the version
+walked (so it is read, not taken from a cache): ``PYTHONPATH=<old checkout>/src`` walks an
+old version with its own data.
 """
 
 from __future__ import annotations
@@ -36,6 +37,8 @@ WATCH = {
     ("model.py", "__init__"): "Arm built",
     ("__init__.py", "probe"): "closed form recorded (probe)",
     ("emit.py", "allocate"): "work area allocated",
+    ("s7200.py", "allocate"): "work area allocated",
+    ("memmap.py", "check_program"): "work area checked (check_program)",
     ("memmap.py", "check_end"): "bounds checked (check_end)",
 }
 """Calls counted anywhere beneath the command: how often one fact is resolved."""
@@ -97,9 +100,12 @@ def main(argv=None) -> int:
     ap.add_argument("--dialect", default="s7-300")
     ap.add_argument("--json", action="store_true")
     args = ap.parse_args(argv)
+    import analysis
+
+    data = Path(analysis.__file__).resolve().parents[2] / "data"  # the walked version's data
     folder = Path(tempfile.mkdtemp())
-    shutil.copy(ROOT / "data" / "arms" / "grabber.toml", folder / "walk.toml")
-    shutil.copy(ROOT / "data" / "table3.csv", folder / "table3.csv")
+    shutil.copy(data / "arms" / "grabber.toml", folder / "walk.toml")
+    shutil.copy(data / "table3.csv", folder / "table3.csv")
     cmd = ["stl", "--arm", str(folder / "walk.toml"), "--dialect", args.dialect,
            "-o", str(folder / "out.awl"), "--map", str(folder / "out.json")]  # fmt: skip
     try:

@@ -402,6 +402,33 @@ def test_a_broken_closed_form_is_refused_when_the_arm_loads(tmp_path, replace, m
         load_arm(str(_broken(tmp_path, replace)))
 
 
+def test_a_closed_form_file_leaves_nothing_next_to_the_description(planar, monkeypatch):
+    """Loading a ``.py`` closed form runs it but writes nothing: no ``__pycache__`` with its
+    bytecode in the user's folder (issue 27.6: nothing created that was not asked for), even
+    where Python would write bytecode (PYTHONDONTWRITEBYTECODE unset)."""
+    import sys
+
+    monkeypatch.setattr(sys, "dont_write_bytecode", False)
+    before = sorted(p.name for p in planar.parent.iterdir())
+    arm = load_arm(str(planar))
+    assert np.isfinite(arm.fk(np.radians([30.0, 40.0]))).all()
+    assert sorted(p.name for p in planar.parent.iterdir()) == before
+
+
+def test_a_closed_form_file_is_read_bounded(tmp_path):
+    """A ``.py`` closed form larger than the loader reads (1 MiB, as a description) is
+    refused in one line naming the limit, before any of it runs."""
+    from analysis.kinematics.arms import CLOSED_FORM_BYTES
+
+    marker = tmp_path / "ran"
+    code = f"open({str(marker)!r}, 'w').write('x')\n" + "#" * CLOSED_FORM_BYTES + "\n"
+    path = _folder(tmp_path, PLANAR_2R_TOML.format(closed_form="planar2r.py"),
+                   code + PLANAR_2R, "planar2r")  # fmt: skip
+    with pytest.raises(ValueError, match=r"larger than 1,048,576 bytes"):
+        load_arm(str(path))
+    assert not marker.exists()
+
+
 def test_theta1_on_axis_for_an_arm_without_it_is_an_error(planar):
     arm = load_arm(str(planar))
     with pytest.raises(ValueError, match="has no base-axis singularity"):

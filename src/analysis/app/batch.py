@@ -40,6 +40,7 @@ from pathlib import Path
 import numpy as np
 
 from analysis import validate
+from analysis.app.explain import batch_reasons
 from analysis.kinematics.arm import Arm
 from analysis.kinematics.status import STATUS_TEXT, Status
 from analysis.safe_io import InputError, check_paths, iter_record_chunks, output_stream
@@ -72,6 +73,17 @@ def input_columns(arm: Arm) -> tuple[str, ...]:
         point.get(name) or f"{name}_{unit}"
         for name, unit in zip(arm.inputs, arm.user_units, strict=True)
     )
+
+
+def input_aliases(columns: tuple[str, ...]) -> dict[str, tuple[str, ...]]:
+    """Other names a header may give the input ``columns``: the name without its unit
+    (``x`` for ``x_mm``, ``alpha`` for ``alpha_deg``), read as that column where the header
+    has it and not the full name.
+
+    >>> input_aliases(("x_mm", "y_mm", "z_mm"))
+    {'x_mm': ('x',), 'y_mm': ('y',), 'z_mm': ('z',)}
+    """
+    return {c: (c.rsplit("_", 1)[0],) for c in columns if "_" in c}
 
 
 def output_columns(arm: Arm) -> list[str]:
@@ -164,8 +176,10 @@ def solve_csv(
     bad number), ``OutputError`` (cannot write, or the output is an input, a device or a
     FIFO) or ``ValueError`` (bad options); the output is then untouched.
     """
-    if isinstance(chunk_rows, bool) or not isinstance(chunk_rows, int) or not (
-        1 <= chunk_rows <= 10_000_000
+    if (
+        isinstance(chunk_rows, bool)
+        or not isinstance(chunk_rows, int)
+        or not (1 <= chunk_rows <= 10_000_000)
     ):
         raise ValueError(f"--chunk-rows {chunk_rows!r} must be a whole number in 1 .. 10,000,000")
     tol = validate.tolerance_mm(tol, "--tol")
@@ -181,6 +195,7 @@ def solve_csv(
         chunk_rows=chunk_rows,
         delimiter=delimiter,
         bad_numbers="raise" if strict else "mark",
+        aliases=input_aliases(columns),
     )
     status_text = np.array([STATUS_TEXT[Status(s)] for s in range(len(Status))], dtype=object)
     counts: Counter = Counter()
@@ -196,7 +211,7 @@ def solve_csv(
             for s in range(0, len(values), WRITE_ROWS):
                 e = min(s + WRITE_ROWS, len(values))
                 reason = problems[s:e]
-                theta, ok, status, row_status = _solve_part(
+                theta, ok, status, row_status, outside = _solve_part(
                     arm, values[s:e], reason, names, tol, theta1_on_axis
                 )
                 counts.update(status_text[status].tolist())
@@ -204,7 +219,10 @@ def solve_csv(
                 solved += int(ok.any(axis=-1).sum())
                 cells = [col[s:e] for col in rec.cells]
                 row_text = status_text[row_status.reshape(-1)].tolist()
-                writer.writerows(_rows(arm, cells, names, theta, ok, row_text, reason))
+                said = batch_reasons(
+                    row_text, np.repeat(outside, len(names)), list(names) * (e - s)
+                )
+                writer.writerows(_rows(arm, cells, names, theta, ok, row_text, reason, said))
                 if progress is not None:
                     progress(total)
     return {
@@ -228,13 +246,15 @@ def _problems(arm: Arm, rec, values: np.ndarray, columns, path) -> list[str | No
 def _solve_part(arm: Arm, values: np.ndarray, reason, names, tol, theta1_on_axis):
     """Solve the valid rows of one part (``reason`` None): joint values ``(k, nb, nj)``
     (NaN where not solved), ``ok`` ``(k, nb)``, each target's status and each branch's own
-    (``Status.INVALID`` for a row not solved)."""
+    (``Status.INVALID`` for a row not solved), and each target's distance outside the reach
+    [mm]."""
     k, nb, nj = len(values), len(names), arm.n_joints
     valid = np.array([r is None for r in reason])
     theta = np.full((k, nb, nj), np.nan)
     ok = np.zeros((k, nb), dtype=bool)
     status = np.full(k, int(Status.INVALID), dtype=np.int64)
     row_status = np.full((k, nb), int(Status.INVALID), dtype=np.int64)
+    outside = np.zeros(k)
     if valid.any():
         sol = arm.solve(
             arm.from_user(values[valid]),
@@ -245,12 +265,14 @@ def _solve_part(arm: Arm, values: np.ndarray, reason, names, tol, theta1_on_axis
         theta[valid], ok[valid] = sol.theta, sol.ok
         status[valid] = sol.status
         row_status[valid] = sol.branch_status  # each branch's own reason
-    return theta, ok, status, row_status
+        outside[valid] = sol.outside_mm
+    return theta, ok, status, row_status, outside
 
 
-def _rows(arm: Arm, cells, names, theta, ok, row_text, reason):
+def _rows(arm: Arm, cells, names, theta, ok, row_text, reason, said):
     """The output rows of one part, one per target and branch: the input cells as read,
-    branch, reachable, the joint values (deg | mm), the pulses, status and reason."""
+    branch, reachable, the joint values (deg | mm), the pulses, status and reason (a bad
+    number's, else ``said``: why the row is not ok)."""
     k, nb, nj = theta.shape
     flat_ok = ok.reshape(-1)
     out: list[list[str]] = []
@@ -269,5 +291,5 @@ def _rows(arm: Arm, cells, names, theta, ok, row_text, reason):
         given = zip(pulses[:, j].tolist(), flat_ok.tolist(), strict=True)
         out.append([str(c) if good else "" for c, good in given])
     out.append(row_text)
-    out.append([r or "" for r in reason for _ in range(nb)])
+    out.append([r or said[i * nb + j] for i, r in enumerate(reason) for j in range(nb)])
     return zip(*out, strict=True)

@@ -160,6 +160,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     args = _parser().parse_args(list(sys.argv[1:] if argv is None else argv))
     if sys.stdout is None:  # started with standard output closed (>&-): no answer is lost
         sys.stdout = _ClosedStdout()
+    if sys.stdin is None:  # started with standard input closed (<&-): `-` is refused in one line
+        sys.stdin = _ClosedStdin()
     old = _install_signals()
     try:
         with warnings.catch_warnings():
@@ -208,6 +210,19 @@ class _ClosedStdout:
 
     def flush(self) -> None:
         pass
+
+
+class _ClosedStdin:
+    """Standard input when the process started without one: reading ``-`` (``ik --input -``,
+    ``stl-run -``) is refused in one line instead of an AttributeError traceback."""
+
+    closed = True
+
+    def isatty(self) -> bool:
+        return False
+
+    def __getattr__(self, name: str):  # read, buffer, readline, fileno, ...
+        raise ValueError("cannot read -: standard input is closed (<&-)")
 
 
 def _broken_pipe() -> int:

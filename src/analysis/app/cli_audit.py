@@ -102,6 +102,9 @@ def add_errata(sub) -> None:
 def cmd_report(args: argparse.Namespace) -> int:
     from analysis.app.report import build_report
 
+    if str(args.out) == "-":
+        raise ValueError("--out -: the report is a folder of pages, not one stream; give a "
+                         "folder (default build/report)")  # fmt: skip
     index = build_report(args.out, notebooks=args.notebooks or None)
     print(index)
     return 0

@@ -84,7 +84,15 @@ def to_json(doc) -> str:
             return [clean(x) for x in v]
         return v
 
-    return json.dumps(clean(doc), allow_nan=False, ensure_ascii=False)
+    text = json.dumps(clean(doc), allow_nan=False, ensure_ascii=False)
+    # A file name that is no UTF-8 reaches us with lone surrogates (os.fsdecode); written as
+    # they are, stdout would hold bytes that are no UTF-8. As \uDCxx escapes (what
+    # ensure_ascii writes for them) the JSON is UTF-8, and json.loads + os.fsencode give the
+    # name's bytes back. Outside strings JSON has no surrogate to replace.
+    return _SURROGATE.sub(lambda m: f"\\u{ord(m.group(0)):04x}", text)
+
+
+_SURROGATE = re.compile("[\ud800-\udfff]")
 
 
 class Progress:

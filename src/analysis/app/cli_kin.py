@@ -164,7 +164,7 @@ def _ik_single(args: argparse.Namespace, arm) -> int:
     out = []
     for name, theta in sols.items():
         values = (arm.joints_to_user(theta) + 0.0).tolist()  # degrees | mm; no "-0.00"
-        sol = {"branch": name}
+        sol = {"branch": name, "status": "ok"}
         if revolute:
             sol["theta_deg"] = values
         else:
@@ -196,12 +196,9 @@ def _ik_single(args: argparse.Namespace, arm) -> int:
             f"{arm.name} has {len(arm.branches)} branches; {len(out)} of the {len(names)} "
             f"requested solve this target"
         )
-    doc = {"target": given, "reachable": True, "solutions": out}
-    if arm.name != "grabber":
-        doc["arm"] = arm.name
-    if len(names) > 1:
-        doc["branches"] = len(arm.branches)
-        doc["missing"] = missing
+    # one shape for every arm and --branch: the arm, each requested branch with its status
+    doc = {"arm": arm.name, "target": given, "reachable": True, "solutions": out,
+           "branches": len(arm.branches), "missing": missing}  # fmt: skip
     emit(args, doc, "\n".join(lines))
     return 0
 
@@ -300,9 +297,9 @@ def add_ik(sub) -> None:
         "stops at the first). '-' reads standard input or writes standard output.",
         epilog="examples:\n  python -m analysis ik 100 100 600 --json\n"
         "  python -m analysis ik 0 0 900 --theta1-on-axis 30\n"
-        "  python -m analysis ik 300 100 50 0 90 10 --arm gr1 --branch all\n"
+        "  python -m analysis ik 336.804 194.454 -4.425 -60 80 90 --arm gr1 --branch all\n"
         "  python -m analysis ik --input targets.csv --output solved.csv --branch all\n"
-        "  python -m analysis ik -1e3 0 600                 (a leading minus needs no --)",
+        "  python -m analysis ik -100 100 600               (a leading minus needs no --)",
         formatter_class=HelpFormatter,
     )
     p.add_argument(

@@ -221,7 +221,10 @@ def run(
     wanted = [parse_read(r, dialect) for r in reads]
     if not wanted:
         raise ValueError("nothing to read: give at least one --read ADDRESS:TYPE")
-    session = cls.session(program, cpu=cpu, source=source)
+    try:
+        session = cls.session(program, cpu=cpu, source=source)
+    except ValueError as exc:  # the program does not parse: say what was expected
+        raise ValueError(f"{exc}{_dialect_hint(program, dialect)}") from None
     for addr, typ, v, explicit in writes:
         session.write(typ, addr, v, explicit)
     session.scan(scans)
@@ -229,6 +232,27 @@ def run(
     if session.fault is not None:
         raise _Refused(f"the CPU went to STOP: {session.fault}", values)
     return {"values": values}
+
+
+_LOOKS_LIKE = (  # (dialect, a sign of its text): the first that matches names the guess
+    ("plcopen-xml", re.compile(r"\A\s*(<\?xml|<project\b)")),
+    ("s7-200", re.compile(r"^ORGANIZATION_BLOCK \w+:OB\d|^Network \d", re.M)),
+    ("s7-300", re.compile(r"^ORGANIZATION_BLOCK OB\s*\d|^NETWORK\s*$", re.M)),
+    ("st", re.compile(r"\A\s*\(\*|^\s*(PROGRAM|FUNCTION_BLOCK|VAR)\b", re.M)),
+)
+
+
+def _dialect_hint(text: str, dialect: str) -> str:
+    """After a program's parse error: the dialect ``stl-run`` expected and, where the text
+    looks like another one, that one (an ST file given as S7-200 STL fails on its first
+    ``(*``)."""
+    from analysis.plc.dialects import printer_class
+
+    hint = f" (--dialect {dialect} expects {printer_class(dialect).title}"
+    guess = next((d for d, sign in _LOOKS_LIKE if sign.search(text[:20_000])), None)
+    if guess is not None and guess != dialect:
+        hint += f"; this text looks like {printer_class(guess).title}: --dialect {guess}"
+    return hint + ")"
 
 
 def _read_program(args: argparse.Namespace) -> tuple[str, str]:
@@ -272,7 +296,7 @@ def _cmd_stl_run(args: argparse.Namespace) -> int:
         raise
     except Exception as exc:
         if type(exc).__module__.startswith("awlsim"):  # awlsim's own parse/run errors
-            raise ValueError(f"awlsim: {exc}") from None
+            raise ValueError(f"awlsim: {exc}{_dialect_hint(text, args.dialect)}") from None
         raise
     if args.json:
         print(json.dumps({"values": {k: _json_value(v) for k, v in out["values"].items()}}))
@@ -285,7 +309,7 @@ def _cmd_stl_run(args: argparse.Namespace) -> int:
 def _cmd_stl_run_st(args: argparse.Namespace) -> int:
     """``--dialect st|plcopen-xml`` (:mod:`analysis.plc.machine.offline`)."""
     from analysis.plc.machine import offline
-    from analysis.safe_io import check_paths, read_table, write_text_atomic
+    from analysis.safe_io import check_paths, output_stream, read_table
 
     if args.cpu is not None:
         raise ValueError(f"--cpu applies to --dialect s7-200 (a {args.dialect} program names "
@@ -297,6 +321,9 @@ def _cmd_stl_run_st(args: argparse.Namespace) -> int:
                          "variables itself")  # fmt: skip
     inputs = [p for p in (args.program, args.scenario, args.map) if p and str(p) != "-"]
     if args.trace is not None:
+        if str(args.trace) == "-" and args.json:
+            raise ValueError("--json prints the summary on stdout, which --trace - writes the "
+                             "trace to: give a trace file, or leave out --json")  # fmt: skip
         check_paths(inputs=inputs, outputs=[args.trace], make_parents=args.mkdir)
     text, _ = _read_program(args)
     mapdoc = _map(args.map) if args.map else None
@@ -314,15 +341,17 @@ def _cmd_stl_run_st(args: argparse.Namespace) -> int:
     outs, axes, run, types = offline.run_trace(
         source, table, cycle_s=args.cycle_ms / 1000.0, settle_s=args.settle_s, mapdoc=mapdoc,
         program=args.program_name)  # fmt: skip
-    write_text_atomic(args.trace, offline.trace_csv(outs, axes, run, types), newline="",
-                      make_parents=args.mkdir)  # fmt: skip
+    # --trace -: the CSV on stdout (output_stream), the summary on stderr
+    with output_stream(args.trace, newline="", make_parents=args.mkdir) as fh:
+        fh.write(offline.trace_csv(outs, axes, run, types))
     summary = {"trace": str(args.trace), "cycles": len(run.t), "cycle_ms": args.cycle_ms,
                "axes": [a.name for a in axes], "outputs": outs}  # fmt: skip
     if args.json:
         print(json.dumps(summary))
     else:
         print(f"wrote {args.trace} ({len(run.t)} cycles of {args.cycle_ms:g} ms, "
-              f"{len(axes)} axes, {len(outs)} outputs)")
+              f"{len(axes)} axes, {len(outs)} outputs)",
+              file=sys.stderr if str(args.trace) == "-" else sys.stdout)  # fmt: skip
     return 0
 
 
@@ -424,6 +453,8 @@ def cmd_stl(args: argparse.Namespace) -> int:
     outputs = [args.output, *([args.map] if args.map else []), *extra]
     if str(args.output) == "-" and (args.json or str(args.map) == "-"):
         raise UsageError("-o - writes the program to stdout: --json and --map - cannot share it")
+    if str(args.map) == "-" and args.json:
+        raise UsageError("--map - writes the map to stdout: --json cannot share it")
     arm = arm_from_args(args)
     check_paths(  # no output may be an input: the description, its tables, --params, --layout
         inputs=[*arm.input_files, *(p for p in (args.layout, args.params) if p)],
@@ -481,7 +512,7 @@ def cmd_stl(args: argparse.Namespace) -> int:
                 f"wrote {args.output} ({args.dialect}, {arm.name} {doc['branch']}, "
                 f"{doc['lines']} lines){also}"
             ),
-            file=sys.stderr if str(args.output) == "-" else sys.stdout,
+            file=sys.stderr if "-" in (str(args.output), str(args.map)) else sys.stdout,
         )
     return 0
 

@@ -29,7 +29,8 @@ import numpy.typing as npt
 from analysis.kinematics.status import STATUS_TEXT, Status
 
 __all__ = [
-    "TEMPLATES", "Explanation", "explain", "line_search", "nearest_target", "reach_sphere",
+    "TEMPLATES", "Explanation", "batch_reasons", "explain", "line_search", "nearest_target",
+    "reach_sphere",
     "search_range", "target_text", "templates_js",
 ]  # fmt: skip
 
@@ -195,6 +196,32 @@ def explain(arm, p, status: Status | int, outside: float, branch: str, *,
         )  # fmt: skip
     sentence = TEMPLATES[word].format_map(fields)
     return Explanation(word, sentence, None if nearest is None else tuple(map(float, nearest)))
+
+
+BATCH_CHOOSE = "give --theta1-on-axis DEG"
+"""The CLI's way to choose the waist angle on the axis (the explorers': :data:`CHOOSE_THETA1`)."""
+
+
+def batch_reasons(words: list[str], outside: npt.ArrayLike, branches: list[str]) -> list[str]:
+    """The ``reason`` cells of batch rows (:func:`analysis.app.batch.solve_csv`) by their
+    status ``words``, distances ``outside`` [mm] and ``branches``: the explorers' sentence
+    (:data:`TEMPLATES`) about "the target" (its coordinates are in the row), without the
+    nearest reachable target (a search per row) and with the CLI's way to choose θ1; ""
+    for an "ok" row.
+
+    >>> batch_reasons(["ok", "out-of-reach", "base-axis"], [0.0, 12.5, 0.0], ["a", "a", "a"])[1:]
+    ['the target is 12.500 mm beyond the reach', 'the target lies on the base axis, where the \
+waist angle θ1 is undefined: give --theta1-on-axis DEG']
+    """
+    out = []
+    for word, d, b in zip(words, np.asarray(outside, dtype=float).tolist(), branches, strict=True):
+        if word == "ok":
+            out.append("")
+            continue
+        fields = {"target": "the target", "outside": f"{abs(d):.3f}", "branch": b,
+                  "choose": BATCH_CHOOSE}  # fmt: skip
+        out.append(TEMPLATES[word].replace("; {nearest_sentence}", "").format_map(fields))
+    return out
 
 
 def templates_js() -> str:

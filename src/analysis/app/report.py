@@ -91,9 +91,10 @@ _MARKER = ".analysis-report"
 
 
 def _refuse_foreign(path: Path) -> None:
-    """FileExistsError if ``path`` is a non-empty folder this module did not write."""
+    """FileExistsError if ``path`` is a non-empty folder this module did not write: only its
+    marker file says so (an ``index.html`` may be anyone's web site)."""
     if path.exists():
-        ours = (path / _MARKER).exists() or (path / "index.html").exists()
+        ours = (path / _MARKER).is_file()
         if any(path.iterdir()) and not ours:
             raise FileExistsError(f"{path} is not empty and not a report build: not deleting it")
 

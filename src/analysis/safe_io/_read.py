@@ -10,7 +10,7 @@ import os
 import re
 import stat
 import sys
-from collections.abc import Iterator, Sequence
+from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from typing import IO, Any
 
@@ -130,7 +130,9 @@ class _Table:
         encoding: str,
         delimiter: str | None,
         bad_numbers: str = "raise",
+        aliases: Mapping[str, Sequence[str]] | None = None,
     ) -> None:
+        self.aliases = {k: tuple(v) for k, v in (aliases or {}).items()}
         if bad_numbers not in ("raise", "mark"):
             raise ValueError(f"bad_numbers must be 'raise' or 'mark', not {bad_numbers!r}")
         self.bad_numbers = bad_numbers
@@ -175,7 +177,7 @@ class _Table:
                 raise _decode_error(self.path, self.encoding, exc) from None
             self.first_text = peeked[-1] if peeked else ""
             if self.delimiter is None:
-                self.delimiter = _sniff(self.first_text, self.required)
+                self.delimiter = _sniff(self.first_text, self.required, self.aliases)
             self.reader = csv.reader(
                 itertools.chain(peeked, lines), delimiter=self.delimiter, strict=True
             )
@@ -202,6 +204,9 @@ class _Table:
             self.file.close()
             raise
 
+    def _or_alias(self, name: str) -> str:
+        return name + "".join(f" (or {a})" for a in self.aliases.get(name, ()))
+
     def _check_header(self, header: list[str]) -> None:
         names = [name.strip() for name in header]
         where = {}
@@ -221,11 +226,18 @@ class _Table:
                     name,
                 )
             where[name] = index
+        written = list(names)
+        for canon, others in self.aliases.items():  # x -> x_mm where x_mm is not there
+            given = [a for a in others if a in where]
+            if canon not in where and len(given) == 1:
+                where[canon] = where.pop(given[0])
+                names[where[canon] - 1] = canon
         missing = [n for n in self.required if n not in where]
         if missing:
             raise InputError(
-                f"missing required column(s) {', '.join(missing)} (the header has: "
-                f"{', '.join(names)}){_delimiter_hint(self.first_text, self.delimiter)}",
+                f"missing required column(s) {', '.join(map(self._or_alias, missing))} "
+                f"(the header has: "
+                f"{', '.join(written)}){_delimiter_hint(self.first_text, self.delimiter)}",
                 self.path,
                 self.header_line,
             )
@@ -352,9 +364,7 @@ class _Table:
                 problems[i] = str(InputError(problem, self.path, line, name))
         return values
 
-    def records(
-        self, chunk_rows: int | None, chunk_bytes: int | None
-    ) -> Iterator[Records]:
+    def records(self, chunk_rows: int | None, chunk_bytes: int | None) -> Iterator[Records]:
         """The chunks as :class:`Records` (raw text of every cell, numbers parsed)."""
         with self.file:
             for columns, ends in self._raw_chunks(chunk_rows, chunk_bytes):
@@ -407,12 +417,13 @@ def _split(line: str, delimiter: str) -> list[str]:
     return [name.strip().strip('"').strip() for name in line.rstrip("\r\n").split(delimiter)]
 
 
-def _sniff(line: str, required: Sequence[str]) -> str:
+def _sniff(line: str, required: Sequence[str], aliases: Mapping[str, Sequence[str]]) -> str:
     """The delimiter of a header line: the first of :data:`DELIMITERS` under which it has
-    every required column (else the one that splits it into the most fields, else ",")."""
+    every required column or one of its ``aliases`` (else the one that splits it into the
+    most fields, else ",")."""
     for d in DELIMITERS:
         names = _split(line, d)
-        if required and all(r in names for r in required):
+        if required and all(r in names or set(aliases.get(r, ())) & set(names) for r in required):
             return d
     if not required:
         counts = {d: line.count(d) for d in DELIMITERS}
@@ -501,6 +512,7 @@ def iter_record_chunks(
     encoding: str = "utf-8",
     delimiter: str | None = None,
     bad_numbers: str = "raise",
+    aliases: Mapping[str, Sequence[str]] | None = None,
 ) -> tuple[list[str], Iterator[Records]]:
     """Stream a CSV table as :class:`Records`: every cell's text as given (for an output
     that echoes its input byte for byte) and the numeric columns parsed.
@@ -514,12 +526,15 @@ def iter_record_chunks(
     reason in ``problems`` and NaN in ``numbers``. Structural errors (header, field counts,
     quoting, encoding) raise :class:`InputError` as :func:`read_table` does.
 
+    ``aliases`` {column: other names}: a header without ``column`` but with exactly one of
+    its other names (``x`` for ``x_mm``) reads that one as ``column``.
+
     Returns ``(header, chunks)``: the header's names as written, and the iterator.
     """
     if isinstance(chunk_rows, bool) or not isinstance(chunk_rows, int) or chunk_rows < 1:
         raise ValueError(f"chunk_rows must be a positive integer, not {chunk_rows!r}")
     table = _Table(
-        path, required, optional, numeric, allow_extra, encoding, delimiter, bad_numbers
+        path, required, optional, numeric, allow_extra, encoding, delimiter, bad_numbers, aliases
     )
     table.open()
     return list(table.header), table.records(chunk_rows, chunk_bytes)

@@ -434,26 +434,34 @@ def known() -> list[str]:
     return sorted(m.name for m in pkgutil.iter_modules(__path__) if not m.name.startswith("_"))
 
 
+CLOSED_FORM_BYTES = 1 << 20
+"""The most of a closed-form file read (1 MiB, as for a description): the file is read
+bounded and only if regular (:func:`analysis.safe_io.read_text`) before any of it runs."""
+
+
 @cache
 def from_file(path: str, stamp: tuple) -> ClosedForm:
     """The closed form in the Python file ``path`` (a user's own, ``closed_form =
-    "my_arm.py"`` next to the description), imported, and so run, once per version
-    ``stamp`` of the file. The loader decides which files may be imported
-    (:func:`analysis.kinematics.loader.closed_form_file`)."""
+    "my_arm.py"`` next to the description), run once per version ``stamp`` of the file as
+    a module of its own. The loader decides which files may be run
+    (:func:`analysis.kinematics.loader.closed_form_file`). The source is read bounded
+    (:data:`CLOSED_FORM_BYTES`) and compiled here rather than imported, so that nothing is
+    written beside it (an import writes ``__pycache__`` into the user's folder)."""
     import hashlib
-    import importlib.util
     import sys
+    import types
 
+    from analysis.safe_io import read_text
+
+    source = read_text(path, CLOSED_FORM_BYTES, "closed form")
     digest = hashlib.sha256(f"{path}{stamp}".encode()).hexdigest()[:16]
-    spec = importlib.util.spec_from_file_location(f"analysis_user_closed_form_{digest}", path)
-    if spec is None or spec.loader is None:
-        raise ValueError(f"closed form {path}: not a Python file")
-    mod = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = mod
+    mod = types.ModuleType(f"analysis_user_closed_form_{digest}")
+    mod.__file__ = path
+    sys.modules[mod.__name__] = mod
     try:
-        spec.loader.exec_module(mod)
+        exec(compile(source, path, "exec", dont_inherit=True), mod.__dict__)  # asked for: README
     except Exception as exc:  # the user's code: report it as a load error, with its reason
-        del sys.modules[spec.name]
+        del sys.modules[mod.__name__]
         raise ValueError(
             f"closed form {path} does not import: {type(exc).__name__}: {exc}"
         ) from None
