@@ -39,12 +39,25 @@ def test_manifestation(paper, mid):
     m = reg.register(paper).manifestation(mid)
     if m.status == "holds":
         assert m.verify(m.checked), f"{mid}: what the paper prints fails its check"
+    elif m.status == "uncertain":  # not an error: the ambiguity itself is what is shown
+        _assert_ambiguous(paper, m)
     else:
         assert not m.holds(m.checked), f"{mid}: the printed text passes the check"
     assert m.verify(m.corrected), f"{mid}: the correction {m.corrected!r} fails its check"
-    if m.status == "uncertain":
-        assert len({m.holds(t) for t in m.readings}) == 2, f"{mid}: the readings agree"
     assert not m.verify("nonsense") and not m.verify(m.corrected + "  # note")
+
+
+def _assert_ambiguous(paper, m):
+    """An uncertain row proves its ambiguity (counting rule 5): at least two readings, each
+    computed, that differ in verdict (what each implies), the correction one of them, and the
+    cause names the lost records that would decide (type ``lost`` in the paper's data)."""
+    assert len(m.readings) >= 2 and m.corrected in m.readings, m.id
+    verdicts = [m.holds(t) for t in m.readings]
+    assert len(set(verdicts)) == 2, f"{m.id}: the readings agree ({verdicts})"
+    cause = reg.register(paper).cause(m.cause)
+    paper_data = context(paper).paper
+    assert cause.decided_by, f"{m.cause}: no lost data named that would decide"
+    assert all(paper_data.record(r).type == "lost" for r in cause.decided_by), cause.decided_by
 
 
 @pytest.mark.parametrize(("paper", "cid"), list(_rows("cause")))
@@ -187,3 +200,23 @@ def test_summary_schema_refuses(change, message):
         schema.check_summary("paper", raw)
     schema.check_summary("paper", {"headline": "A short verdict.", "worst": "{facts.x} mm",
                                    "verdict": "v", "take_away": "t"})  # fmt: skip
+
+
+_TEMPLATE = re.compile(r"\{[A-Za-z_][\w.]*(?:\[[^\]{}]*\])*(?:![rsa])?(?::[^{}]*)?\}")
+"""A replacement field of str.format left in a text ({facts.dims}, {printed.value:.2f})."""
+
+
+@pytest.mark.parametrize("paper", PAPERS)
+def test_every_template_is_rendered(paper):
+    """No generated text keeps a '{...}' field: titles, evidence, consequences, what a row
+    rests on, the alternatives, the summary, the register file and the README block."""
+    r = reg.register(paper)
+    texts = [*r.summary.values(), reg.render_markdown([paper])]
+    for c in r.causes:
+        texts += [c.title, c.evidence, c.consequence, *c.rests_on]
+        for m in c.manifestations:
+            texts += [m.evidence, *m.rests_on, *m.alternatives]
+    left = sorted({f for t in texts for f in _TEMPLATE.findall(t)})
+    assert not left, left
+    generated = {k for row in r.rows() for k in (row["evidence"], row["rests_on"])}
+    assert not [t for t in generated if _TEMPLATE.search(t)]

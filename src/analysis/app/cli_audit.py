@@ -74,7 +74,8 @@ def add_errata(sub) -> None:
         "record whose check fails and that no cause explains.",
         epilog="examples:\n  python -m analysis errata --check\n"
         "  python -m analysis errata --paper grabber\n"
-        "  python -m analysis errata --paper-file tests/audit/example/paper.toml",
+        "  python -m analysis errata --paper-file example/paper.toml --register "
+        "example/register.toml",
         formatter_class=HelpFormatter,
     )
     g = p.add_mutually_exclusive_group()

@@ -196,12 +196,13 @@ def _manifestation(cause: dict, m: dict, ctx, check, by_ref=None) -> Manifestati
     }  # fmt: skip
     try:
         evidence = m.get("evidence", "").format_map(ns)
+        rests_on = tuple(t.format_map(ns) for t in mm.rests_on)
     except (AttributeError, KeyError, IndexError, TypeError, ValueError) as exc:
         raise ValueError(
             f"{mm.id}: evidence template needs {exc!r}; printed check gave {ns['printed']}, "
             f"corrected {ns['corrected']}"
         ) from None
-    return _with(mm, evidence=evidence)
+    return _with(mm, evidence=evidence, rests_on=rests_on)
 
 
 def _with(m: Manifestation, **changes) -> Manifestation:
@@ -303,15 +304,18 @@ def build(ctx, raw: dict) -> Register:
         if ms:  # a cause's template may name its first manifestation's checks
             ns.update(printed=ms[0].result(ms[0].checked), corrected=ms[0].result(ms[0].corrected))
         try:
-            title, evidence = (c[k].format_map(ns) if k in c else "" for k in ("title", "evidence"))
+            title, evidence, consequence = (c[k].format_map(ns) if k in c else ""
+                                            for k in ("title", "evidence", "consequence"))
+            rests_on = tuple(t.format_map(ns) for t in c.get("rests_on", ()))
         except (AttributeError, KeyError, IndexError, TypeError, ValueError) as exc:
             raise ValueError(f"{c['id']}: evidence template needs {exc!r}; {ns}") from None
         causes.append(
             Cause(
                 id=c["id"], title=title, status=c["status"], kind=c["kind"],
                 evidence=evidence, manifestations=tuple(ms),
-                severity=c.get("severity", ""), consequence=c.get("consequence", ""),
-                rests_on=tuple(c.get("rests_on", ())), extra=_also(c, ctx, check),
+                severity=c.get("severity", ""), consequence=consequence,
+                rests_on=rests_on, extra=_also(c, ctx, check),
+                decided_by=tuple(c.get("decided_by", ())),
             )
         )
     summary: dict = {}
@@ -442,8 +446,15 @@ def generated(papers=None) -> dict[Path, str]:
     return out
 
 
+_KEEP = 32
+"""Answers kept per data folder (one per selection of papers and state of the inputs)."""
+
+
 def _cache_dir() -> Path:
-    return build_dir() / "errata-cache"
+    """The answers' cache, one per data folder (a test's copy of data/ keeps its own, so that
+    what changed is said against the same folder's last build)."""
+    key = hashlib.sha256(str(data_dir().resolve()).encode()).hexdigest()[:12]
+    return build_dir() / "errata-cache" / key
 
 
 def _audited(papers) -> list[str]:
@@ -468,6 +479,9 @@ def _answers(papers, inputs: dict[str, str], files: dict[Path, str] | None = Non
     key = f"{_inputs_hash(inputs)}-{'-'.join(papers)}"
     (d / f"{key}.json").write_text(json.dumps(out, ensure_ascii=False), encoding="utf-8")
     (d / "inputs.json").write_text(json.dumps(inputs), encoding="utf-8")
+    stored = sorted((p for p in d.glob("*-*.json")), key=lambda p: p.stat().st_mtime)
+    for old in stored[:-_KEEP]:  # bounded: the newest answers only
+        old.unlink(missing_ok=True)
     return out
 
 

@@ -164,8 +164,14 @@ class Cause:
     consequence: str = ""
     rests_on: tuple[str, ...] = ()
     extra: Callable = field(default=lambda: True, repr=False, compare=False)
+    decided_by: tuple[str, ...] = ()
+    """Uncertain: the paper's records of what the extraction lost (type ``lost``) that would
+    decide between the readings (counting rule 5)."""
 
     def __post_init__(self) -> None:
+        if (self.status == "uncertain") != bool(self.decided_by):
+            raise ValueError(f"cause {self.id}: an uncertain cause, and only one, names the lost "
+                             f"data that would decide it (decided_by)")  # fmt: skip
         if not _ID.match(self.id) or "/" in self.id:
             raise ValueError(f"cause id {self.id!r}: lowercase words joined by '-'")
         if self.status not in STATUSES:

@@ -4,8 +4,11 @@ The text is ``<quantifier> <domain>: <body>``:
 
 - ``forall D: P`` / ``exists D: P`` - the predicate P holds at every / some sample of D;
 - ``count D: P = N`` - P holds at exactly N samples;
-- ``max D: E = V`` / ``min D: E = V`` - the largest / smallest value of E over D is V, at the
-  decimals V is written with (``max workspace: tip_error_mm = 1.20`` holds for 1.2049).
+- ``max D: E = V`` / ``min D: E = V`` - the largest / smallest value of E over D is V: within
+  the check's stated ``tol``, else within half a unit of V's last decimal but never more than
+  5e-4 of |V| (1e-9 for V = 0), so that V must be the computed value, not a rounding of it:
+  ``max workspace: joint_error_deg = 0.045`` holds for 0.04499, ``... = 0`` and ``... = 0.04``
+  do not.
 
 P and E are SymPy text over the domain's names (a domain is a named set of samples the paper
 defines: :meth:`analysis.audit.context.Bespoke.domain`; its arrays may be measured values,
@@ -72,7 +75,7 @@ def body_values(body: str, domain) -> np.ndarray:
 
 def evaluate_claim(text: str, ctx, tol: float | None = None) -> Result:
     """The claim decided on its domain; a maximum or minimum within ``tol`` of the number
-    stated (default: half a unit of its last decimal)."""
+    stated (default: half a unit of its last decimal, at most 5e-4 of it, 1e-9 at 0)."""
     quant, dname, body, number = parse_claim(text)
     value = body_values(body, ctx.domain(dname))
     if quant in ("forall", "exists", "count"):
@@ -84,7 +87,10 @@ def evaluate_claim(text: str, ctx, tol: float | None = None) -> Result:
         ok = bool(value.all()) if quant == "forall" else bool(value.any())
         return Result(ok, {"count": n_true, "n": len(value)})
     x = float(np.max(value) if quant == "max" else np.min(value))
-    tol = 0.5 * 10.0 ** -decimals(number) + 1e-12 if tol is None else float(tol)
+    if tol is None:
+        v = abs(float(number))
+        tol = min(0.5 * 10.0 ** -decimals(number), 5e-4 * v) + 1e-12 if v else 1e-9
+    tol = float(tol)
     return Result(abs(x - float(number)) <= tol, {"value": x, "n": len(value), "tol": tol})
 
 

@@ -7,9 +7,13 @@ sample of ``spec["domain"]`` the fragment runs on a V-memory image holding ``inp
 (address -> expression of the domain's symbols, as REALs) and each address of ``expect``
 (address -> expression) must read back its value: as a DINT exactly (``read = {addr = "dint"}``)
 or as a REAL within ``tol`` (default 1e-4 relative: a few float32 ulps over a handful of
-operations). ``CALL ARCTAN, IN, OUT`` / ``CALL ARCCOS`` are Siemens' library routines (radians,
-as the evaluator has them); ``CALL ATAN2, Y, X, OUT`` is the generated program's subroutine of
-that name (:mod:`analysis.plc`: float32 atan2). ``mode = "order"``: the text is a network order
+operations). ``wrong`` counts the samples (rows) at which any address reads wrong, ``n`` the
+samples: both in rows. ``enter``: the instructions that precede a fragment in its network (``LD
+SM0.0; LPS``: the logic stack it is printed inside), run before it, so that a fragment that pops
+the stack (``LPP``) runs its next instruction as the whole network would. ``CALL ARCTAN, IN,
+OUT`` / ``CALL ARCCOS`` are Siemens' library routines (radians, as the evaluator has them);
+``CALL ATAN2, Y, X, OUT`` is the generated program's subroutine of that name
+(:mod:`analysis.plc`: float32 atan2). ``mode = "order"``: the text is a network order
 (``3, 4, 6, 5``, a permutation of the figures) and ``address`` must be written by an earlier
 network before network ``reader`` reads it.
 
@@ -121,6 +125,7 @@ def stl(text: str, spec, ctx) -> Result:
     ins = {a: [_expected(e, {k: (v[i] if np.ndim(v) else v) for k, v in values.items()}, None)
                for i in range(n)] for a, e in spec.get("inputs", {}).items()}  # fmt: skip
     prefix = ctx.paper.text(spec["within"]) + "\n" if "within" in spec else ""
+    prefix += spec["enter"].replace(";", "\n") + "\n" if "enter" in spec else ""
     out = instructions(text)[-1].args[-1]  # "@out": what the text's last instruction writes
     expect = {(out if a == "@out" else a): e for a, e in spec["expect"].items()}
     read = spec.get("read", {})
@@ -133,14 +138,14 @@ def stl(text: str, spec, ctx) -> Result:
         for a, e in expect.items():
             got[a].append(mem.dint(a) if read.get(a) == "dint" else float(mem.real(a)))
             want[a].append(_expected(e, point, mem))
-    wrong = []
+    wrong: set[int] = set()
     for a, w in want.items():
         g, w = np.asarray(got[a], dtype=float), np.asarray(w, dtype=float)
         if read.get(a) == "dint":
             bad = g != np.round(w)
         else:
             bad = ~(np.abs(g - w) <= spec.get("tol", 1e-4) * np.maximum(1.0, np.abs(w)))
-        wrong += [(a, int(i)) for i in np.flatnonzero(bad)]
+        wrong |= {int(i) for i in np.flatnonzero(bad)}
     first = {a: got[a][0] for a in want}
     return Result(not wrong, {"n": n, "wrong": len(wrong), "first": first,
                               "want": {a: float(want[a][0]) for a in want}})  # fmt: skip

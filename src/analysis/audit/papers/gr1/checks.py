@@ -60,6 +60,7 @@ B.domain("partner_citations")(gl.partner_citations)
 B.value("vb6_env")(lambda config, end: (gl.listing_env(config, end or None, _probe()), None))
 B.fact("move")(gl.move_facts)
 B.fact("variants")(gl.listing_variants)
+B.fact("other_presets")(lambda: "; ".join(gl.alternative_presets()) or "none")
 
 
 @B.value("pulses")

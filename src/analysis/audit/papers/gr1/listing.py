@@ -364,6 +364,26 @@ def corrected_move():
     return q, names, st.counter_presets(q[0], q[1]), turn
 
 
+@cache
+def alternative_presets() -> list[str]:
+    """The counter presets of every other move between Table 5-3's poses (orientation
+    projected) on branches within the assumed limits: the corrected move's presets are one of
+    these (its branches are the arm's first within the limits). One text per move: the branches
+    and the five presets C235 .. C239."""
+    arm = gr1_arm()
+    proj, _ = st.project_orientation(arm, st.thesis_poses())
+    sol = arm.solve(proj)
+    names = corrected_move()[1]
+    out = []
+    for i, a in enumerate(arm.branches):
+        for j, b in enumerate(arm.branches):
+            if not (sol.ok[0, i] and sol.ok[1, j]) or (a, b) == tuple(names):
+                continue
+            k = st.counter_presets(sol.theta[0, i], sol.theta[1, j])["preset"]
+            out.append(f"{a} -> {b}: " + ", ".join(str(int(v)) for v in k))
+    return out
+
+
 def relative_move_misses(spread_deg=None, n: int = 200, seed: int = 169) -> dict[str, np.ndarray]:
     """Where the corrected move, made relative (the counters count changes from wherever the
     arm stands), ends: from ``n`` starts within +-``spread_deg`` per joint of Table 5-3's

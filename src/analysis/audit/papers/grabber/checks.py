@@ -126,6 +126,8 @@ B.domain("listings")(lambda: {k: np.array([v]) for k, v in _gs().census().items(
 B.domain("hmi_targets")(lambda: _gs().hmi_targets())
 B.domain("table4_rows")(lambda: _gs().table4_rows())
 B.fact("executed")(lambda: _gs().executed())
+B.fact("movd")(lambda: _gs().movd_damage())
+B.fact("modes")(lambda: {k: int(v[0]) for k, v in _modes().items()})
 for _name in ("workspace", "stl_constants", "random_poses", "printed_data"):
     B.domain(_name)(lambda n=_name: getattr(_gs(), n.replace("-", "_"))())
 B.domain("z600_line")(lambda: _z600())
@@ -185,6 +187,42 @@ def _hardware():
     """The hardware sec. 2.3 names: the CPU's pulse-train outputs and the stepper motors."""
     cpu, motors = _paper().record("cpu")["cpu"], _paper().record("motors")["steppers"]
     return {"pto_outputs": np.array([PTO_OUTPUTS[cpu]]), "steppers": np.array([motors])}
+
+
+@B.domain("ik_citations")
+def _ik_citations():
+    """The works the introduction cites as robot inverse-kinematics research ([6], [8]-[11];
+    [10] and [11] are not in the extracted list): does the printed title name kinematics (运动学,
+    逆解, 逆向, kinematic, inverse, D-H)?"""
+    import re
+
+    keys = ("运动学", "逆解", "逆向", "kinematic", "inverse", "D-H")
+    titles = [_paper().record(f"references.{k}").text for k in (6, 8, 9)]
+    titles = [re.split(r"\[J\]", t)[0].split(". ", 1)[-1] for t in titles]  # the title alone
+    return {"on_kinematics": np.array([any(k.lower() in t.lower() for k in keys) for t in titles])}
+
+
+@B.domain("claimed_modes")
+def _modes():
+    """The modes secs. 2.1-2.2 claim (manual, automatic, cyclic, single run): can anything the
+    paper prints select one? Table 2's inputs named for a mode (手动, 自动, 循环, 单向, 切换,
+    选择, 模式) and the inputs the listings read (the operand census)."""
+    keys = ("手动", "自动", "循环", "单向", "切换", "选择", "模式")
+    inputs = _paper().record("table2")["inputs"]
+    named = sum(any(k in name for k in keys) for name, _, _ in inputs)
+    census = _gs().census()
+    read = int(census.get("start_reads", 0) + census.get("stop_reads", 0))
+    n = 4
+    return {"selectable": np.full(n, named > 0), "mode_inputs": np.full(n, named),
+            "table2_inputs": np.full(n, len(inputs)), "inputs_read": np.full(n, read)}
+
+
+@B.domain("sensing_inputs")
+def _sensing():
+    """Table 2's inputs: does any sense something (a position, a target, a limit), rather than
+    being a push button (按钮) an operator presses?"""
+    inputs = _paper().record("table2")["inputs"]
+    return {"senses": np.array(["按钮" not in name for name, _, _ in inputs])}
 
 
 # --- values and facts -------------------------------------------------------------------------

@@ -14,8 +14,8 @@ from analysis.kinematics.arm import paper_arm
 from analysis.papers import load
 from analysis.plc import stl_eval
 
-__all__ = ["census", "executed", "fig4_repaired", "front_up", "hmi_targets", "printed_data",
-           "random_poses", "stl_constants", "table4_rows", "targets_table4", "text", "workspace"]  # fmt: skip  # noqa: E501
+__all__ = ["census", "executed", "fig4_repaired", "front_up", "hmi_targets", "movd_damage",
+           "printed_data", "random_poses", "stl_constants", "table4_rows", "targets_table4", "text", "workspace"]  # fmt: skip  # noqa: E501
 
 
 def _paper():
@@ -132,6 +132,30 @@ def executed() -> dict[str, list[int]]:
         run = stl.parse_stl(figure_text(3, p) + "\n" + figure_text(4, p))
         out["ieee"].append(stl.evaluate(run).dint("VD16"))
         out["ftz"].append(stl.evaluate(run, ftz=True).dint("VD16"))
+    return out
+
+
+@cache
+def movd_damage() -> dict[str, list]:
+    """The whole printed program (Figures 3, 4, 6, 5 in one scan, byte-accurately, Figure 6's
+    VDD0 read as theta1 and Px) on every Table 4 target, Figure 3 as printed (MOVD of integers)
+    and with MOVR: what MOVD itself changes. Figure 4's c1 (VD16) is the same both ways (Py/Px of
+    two denormals is exact); Pz - L1 (VD72 in Figure 5, VD176 in Figure 6) becomes -660 (the
+    denormal Pz vanishes against 660), so theta2 and theta3 are computed for Pz = 0."""
+    from analysis.plc import stl_eval as stl
+    from analysis.plc.paper_listings import figure_text
+
+    vdd0 = {"COS": "VD12", "SIN": "VD12", "*R": "VD0", "MOVR": "VD0"}
+    keys = ("c1_movd", "c1_movr", "vd72_movd", "vd72_movr", "vd176_movd", "vd176_movr")
+    out: dict[str, list] = {k: [] for k in (*keys, "pz_minus_l1")}
+    for p in targets_table4():
+        for how, real in (("movd", False), ("movr", True)):
+            run = "\n".join(figure_text(f, p, real, vdd0) for f in (3, 4, 6, 5))
+            mem = stl.evaluate(stl.parse_stl(run))
+            out[f"c1_{how}"].append(mem.dint("VD16"))
+            out[f"vd72_{how}"].append(float(mem.real("VD72")))
+            out[f"vd176_{how}"].append(float(mem.real("VD176")))
+        out["pz_minus_l1"].append(float(p[2]) - 660.0)
     return out
 
 

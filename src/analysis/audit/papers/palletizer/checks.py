@@ -176,6 +176,25 @@ def _quadrants():
     return {"miss_printed_mm": best, "miss_corrected_mm": fixed}
 
 
+@B.domain("quadrant3")
+def _quadrant3():
+    """Targets in quadrant 3 (X0 < 0, Y0 < 0, every whole azimuth, 200 mm from the base axis):
+    eq. 6's waist angle under both readings of eq. 1's gamma' (signed arctan(Y0/X0), acute
+    arctan|Y0/X0|) against the target's azimuth atan2(Y0, X0) [deg, the smaller error of the two
+    readings], and the distance [mm] from the target to the vertical plane the waist turns the
+    arm into: a lower bound on any miss, since the chain (d_i = 0, sec. 4.2) keeps the gripper
+    in that plane whatever the lengths (no length enters)."""
+    az = np.radians(np.arange(-179.5, -90.0, 1.0))
+    x, y = 200.0 * np.cos(az), 200.0 * np.sin(az)
+    err = []
+    for gp in (np.arctan(y / x), np.arctan(np.abs(y / x))):
+        gamma = -np.pi / 2 + gp  # eq. 6's case X0 <= 0, Y0 < 0
+        err.append(np.abs((gamma - np.arctan2(y, x) + np.pi) % (2 * np.pi) - np.pi))
+    worst = np.minimum(*err)
+    return {"X0": x, "Y0": y, "rho_mm": np.hypot(x, y), "waist_error_deg": np.degrees(worst),
+            "plane_miss_mm": np.hypot(x, y) * np.abs(np.sin(worst))}  # fmt: skip
+
+
 @B.domain("assumed")
 def _assumed():
     """The assumed stand-ins against what the paper does state: lengths from the description
@@ -201,6 +220,20 @@ def _citations():
     paper = context("palletizer").paper
     year = re.search(r"(\d{4})年", paper.record("dh_method").text)[1]
     return {"dh_year_matches": np.array([year in paper.record("references.2").text])}
+
+
+@B.domain("own_test_citations")
+def _own_test():
+    """Sec. 5 cites [9] for the coding test of this paper's method (C++ on Linux): can a work of
+    [9]'s year report it (not before the paper's own year), in the language the text names?"""
+    import re
+
+    paper = context("palletizer").paper
+    own = int(re.search(r"(\d{4})", paper.title)[1])
+    ref = paper.record("references.9").text
+    year = int(re.findall(r"(\d{4})", ref)[-1])
+    return {"cited_year": np.array([year]), "paper_year": np.array([own]),
+            "can_report": np.array([year >= own]), "names_cpp": np.array(["C++" in ref])}
 
 
 # --- predicates and facts ---------------------------------------------------------------------
@@ -239,3 +272,16 @@ def convention(text: str, ctx):
 @B.fact()
 def dims():
     return _st().assumed_lengths(_arm())
+
+
+@B.fact()
+def quadrant_miss():
+    """The printed chain's largest miss [mm] over the four stand-in quadrant targets (the best
+    reading of H and of eq. 1's arctan; assumed lengths)."""
+    return float(np.max(context("palletizer").domain("quadrant_targets")["miss_printed_mm"]))
+
+
+@B.fact()
+def own_test():
+    d = {k: int(v[0]) for k, v in _own_test().items()}
+    return {**d, "gap": d["paper_year"] - d["cited_year"]}

@@ -62,7 +62,9 @@ def _topology():
 @B.domain("slider_pairs")
 def _pairs():
     """200 seeded slider settings (x, z) at which link 5 closes the loop A-G-B: how many
-    assemblies (the two intersections of |AG| = g, |GB| = b) close it to 1e-9 mm."""
+    assemblies (the two intersections of |AG| = g, |GB| = b) close it to 1e-9 mm, and how many
+    of them lie on one branch (the sign of the arccos fixed, as a closure equation that picks
+    the assembly as built would fix it)."""
     p = _pk().load_picker().params
     g, b = p["g"], p["b"]
     rng = np.random.default_rng(2016)
@@ -72,11 +74,13 @@ def _pairs():
     c = (R**2 + g**2 - b**2) / (2 * g * R)
     keep = np.abs(c) < 1
     dx, dz, c = dx[keep][:200], dz[keep][:200], c[keep][:200]
-    n = np.zeros(len(c), int)
+    n, on_branch = np.zeros(len(c), int), np.zeros(len(c), int)
     for s in (1, -1):
         t3 = np.arctan2(dx, dz) - s * np.arccos(c)
-        n += np.abs(np.hypot(dx - g * np.sin(t3), dz - g * np.cos(t3)) - b) < 1e-9
-    return {"n_assemblies": n}
+        closes = np.abs(np.hypot(dx - g * np.sin(t3), dz - g * np.cos(t3)) - b) < 1e-9
+        n += closes
+        on_branch += closes & (s == 1)  # a sign fixed once (the assembly as built) keeps one
+    return {"n_assemblies": n, "n_on_branch": on_branch}
 
 
 @B.domain("r3")
