@@ -80,6 +80,8 @@ html_theme_options = {
     # the front page opens with the four verdicts at a glance, which link to its sections: its
     # table gets the width of the right-hand contents column (every other page keeps it)
     "secondary_sidebar_items": {"**": ["page-toc"], "index": []},
+    # no "By analysis" (the author line names the package, not a person): the copyright only
+    "footer_content_items": ["copyright.html", "extra-footer.html"],
 }
 
 

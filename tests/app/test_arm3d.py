@@ -54,3 +54,31 @@ def test_bundle_is_plain_json_with_stable_div_id(arm):
     other = figure_bundle(arm_figure(arm, np.ones(3)), "k", "text")
     assert other["text/html"] != a["text/html"]
     assert a["text/html"].count("Plotly.newPlot") == 1 and "cdn" not in a["text/html"].lower()
+
+
+def test_trajectory_figure_plays_the_gr1_cubic_through_forward_kinematics():
+    """Issue 31 item 3: a trajectory (seed 004's cubic between the thesis's start and end
+    joints, Table 5-4) played with a time slider: each animation frame's arm ends at the
+    tool point that the D-H table's FK (apart from the explorer's) gives at its time."""
+    from analysis.app.arm3d import trajectory_figure
+    from analysis.audit.papers.gr1.thesis import printed_joints
+    from analysis.kinematics.arm import load_arm
+    from analysis.studies.trajectories import cubic_trajectory
+
+    arm = load_arm("gr1")
+    q0, qf = printed_joints()
+    t = np.linspace(0.0, 2.0, 201)
+    q = cubic_trajectory(q0, qf, 2.0, t)[0]
+    fig = trajectory_figure(arm, t, q, frames=21)
+    steps = fig.layout.sliders[0].steps
+    assert len(fig.frames) == len(steps) == 21
+    assert [s.label for s in steps] == [f.name for f in fig.frames] == [f"{v:.2f}" for v in t[::10]]
+    dh = arm.dh_table()
+    for f, k in zip(fig.frames, range(0, 201, 10), strict=True):
+        (tr,) = f.data
+        tip = dh.fk(q[k])[:3, 3]
+        np.testing.assert_allclose([tr.x[-1], tr.y[-1], tr.z[-1]], tip, atol=2e-3)
+    path = next(tr for tr in fig.data if tr.name == "tool path")
+    assert len(path.x) == len(t)
+    with pytest.raises(ValueError, match="expected \\(201, 5\\)"):
+        trajectory_figure(arm, t, q[:, :4])

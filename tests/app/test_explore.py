@@ -413,3 +413,28 @@ def test_explorer_takes_a_pose_arm():
     ex.target_sliders[3].value = 40.0  # an orientation out of the arm plane
     assert ex.report.status_text == "orientation"
     assert ex.table.value.count(">orientation<") == len(gr1.branches)
+
+
+@pytest.mark.parametrize(
+    ("name", "q_deg"), [("gr1", [30.0, 40.0, -60.0, -70.0, 10.0]), ("picker", None)]
+)
+def test_fk_line_shows_the_full_pose_of_fk_json(name, q_deg, capsys):
+    """Issue 31 item 3: the explorer's FK line is ``fk --json``'s pose (the tool point, its
+    RPY angles, a closed chain's passive joints) to the two decimals it shows."""
+    from analysis.app.cli import main
+    from analysis.app.explore_logic import fk_line, num
+
+    a = load_arm(name)
+    if q_deg is None:  # the picker: a configuration of its first branch
+        sol = a.solve(default_target(a), a.branches[:1])
+        q_deg = a.joints_to_user(sol.theta[0, 0]).round(6).tolist()
+    assert main(["fk", *map(str, q_deg), "--arm", name, "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    line = fk_line(a, a.joints_from_user(q_deg), None)
+    pose = (f"tool at ({', '.join(num(v, 2) for v in doc['position_mm'])}) mm, "
+            f"RPY ({', '.join(num(v, 2) for v in doc['rpy_deg'])})°")  # fmt: skip
+    assert pose in line, (pose, line)
+    for k, v in doc["joint_states"].items():
+        if k not in doc["joint_names"]:
+            assert f"θ{k[5:]} = {num(v, 2)}°" in line, (k, line)
+    assert ("passive joints" in line) == (name == "picker")

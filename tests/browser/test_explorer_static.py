@@ -23,6 +23,7 @@ import pytest
 from analysis.app.explore_logic import (
     available_arms,
     fk_line,
+    num,
     plain_message,
     pose_report,
     target_from_joints,
@@ -31,6 +32,16 @@ from analysis.kinematics.arm import load_arm, paper_arm
 
 from .screen import STALE_RGB, assert_arm_on_screen
 from .screen import close as _close
+
+
+def _fk_json(arm: str, q_deg) -> dict:
+    """``python -m analysis fk Q... --arm ARM --json`` as a user runs it."""
+    import subprocess
+    import sys
+
+    cmd = [sys.executable, "-m", "analysis", "fk", *map(str, q_deg), "--arm", arm, "--json"]
+    return json.loads(subprocess.run(cmd, capture_output=True, text=True, check=True).stdout)
+
 
 PATH = "notebooks/09_explore.html"
 PLOT = ".static-explorer .js-plotly-plot"
@@ -260,6 +271,11 @@ def test_base_axis_offers_theta1_and_fk_says_which_branch(explorer_page, shots):
     rep = pose_report(pal, target_from_joints(pal, q), theta1_on_axis=float(q[0]))
     assert drawn["message"] == fk_line(pal, q, rep), drawn["message"]
     assert "branch: none (" in drawn["message"]
+    # the full pose is fk --json's (issue 31 item 3), to the two decimals shown
+    doc = _fk_json("palletizer", q_deg)
+    pose = (f"tool at ({', '.join(num(v, 2) for v in doc['position_mm'])}) mm, "
+            f"RPY ({', '.join(num(v, 2) for v in doc['rpy_deg'])})°")  # fmt: skip
+    assert pose in drawn["message"], (pose, drawn["message"])
     caption = page.locator(".static-explorer .explorer-table caption").inner_text()
     assert caption == "other solutions for this point"
     np.testing.assert_allclose(drawn["arm"], pal.frames(q), atol=2e-3)  # all frames, as drawn
@@ -270,3 +286,28 @@ def test_base_axis_offers_theta1_and_fk_says_which_branch(explorer_page, shots):
     assert note.startswith("picker: left out of this page") and "make lab" in note
     page.locator(".static-explorer .explorer-fk").uncheck()
     _select_arm(page, "grabber")
+
+
+def test_the_branch_table_is_whole_for_five_joints(explorer_page, shots):
+    """Issue 31 polish: the branch table's status column was clipped for arms with 4-5
+    joints; at 1366 px every cell of it lies inside the explorer, for every arm."""
+    page = explorer_page
+    page.set_viewport_size({"width": 1366, "height": 900})
+    for name in ("grabber", "palletizer", "gr1"):
+        _select_arm(page, name)
+        page.wait_for_function(
+            "() => document.querySelectorAll('.static-explorer .explorer-table td').length"
+        )
+        out = page.evaluate(
+            """() => { const box = document.querySelector('.static-explorer')
+                           .getBoundingClientRect();
+                const t = document.querySelector('.static-explorer .explorer-table');
+                const cells = [...t.querySelectorAll('th, td')];
+                return {cols: t.querySelectorAll('thead th').length,
+                        clipped: cells.filter(c => c.getBoundingClientRect().right > box.right + 1
+                                                   || c.scrollWidth > c.clientWidth + 1)
+                                      .map(c => c.innerText)}; }"""
+        )
+        assert not out["clipped"], (name, out)
+    page.locator(".static-explorer .explorer-table").scroll_into_view_if_needed()
+    page.screenshot(path=shots / "site-explorer-table-gr1.png")

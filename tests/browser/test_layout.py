@@ -335,3 +335,34 @@ def test_cjk_text_is_drawn_from_the_sites_own_font(context, site_url, site_dir, 
         page.close()
     assert checked, "no page with CJK text (the citations print the papers' Chinese titles)"
     assert with_cjk, "no SVG figure with CJK text (03-table4-fk-error prints 无解)"
+
+
+def test_notebook_02_tables_fit_the_column_and_headings_typeset(page, site_url):
+    """Issue 31 item 4: notebook 02's printed-against-derived tables were 1,028-2,220 px wide
+    in a 755 px column (the derived column off the right edge), and its headings showed ASCII
+    maths ("cos^-1") beside MathJax: at 1366 px every table fits the article's column, and a
+    heading with maths has it typeset."""
+    page.set_viewport_size({"width": 1366, "height": 900})
+    page.goto(site_url + "notebooks/02_inverse_kinematics.html", wait_until="load")
+    page.wait_for_function("() => window.MathJax?.startup?.promise", timeout=20_000)
+    page.evaluate("() => MathJax.startup.promise")
+    wide = page.evaluate(
+        """() => { const col = document.querySelector('.bd-article').getBoundingClientRect();
+            return [...document.querySelectorAll('.bd-article table')]
+              .map(t => ({id: t.id || t.className, right: t.getBoundingClientRect().right,
+                          width: t.getBoundingClientRect().width}))
+              .filter(t => t.right > col.right + 1)
+              .map(t => `${t.id}: ${Math.round(t.width)} px, right edge ${Math.round(t.right)}`
+                        + ` > ${Math.round(col.right)}`); }"""
+    )
+    assert not wide, wide
+    ascii_maths = page.evaluate(
+        """() => [...document.querySelectorAll('.bd-article h2, .bd-article h3')]
+            .map(h => h.innerText).filter(t => /\\^-1|\\bsqrt\\(|\\*\\*/.test(t))"""
+    )
+    assert not ascii_maths, ascii_maths
+    typeset = page.evaluate(
+        """() => [...document.querySelectorAll('.bd-article h2')]
+            .filter(h => h.querySelector('mjx-container')).length"""
+    )
+    assert typeset >= 8, typeset  # eqs. 1-2, 3, 4, 5, 6, 10, 11-12, 15-16, 17-19

@@ -359,3 +359,10 @@ def test_explorer_3d_view_renders_and_rotates_offline(page, site_url, site_dir, 
     assert plot.evaluate(eye) != before
     page.screenshot(path=shots / "site-explorer-3d.png", full_page=False)
     assert page.blocked[n_blocked:] == [] and page.js_errors == []
+
+
+def test_footer_says_no_by_analysis(site_dir):
+    """Issue 31 polish: the footer read "By analysis" (the package named as the author)."""
+    for page in ("index.html", "register.html", "notebooks/09_explore.html"):
+        text = (site_dir / page).read_text(encoding="utf-8")
+        assert "By analysis" not in text and "Copyright" in text, page

@@ -58,7 +58,9 @@ try:  # the widget needs anywidget (pinned in requirements.lock); the figures do
 except ImportError:  # pragma: no cover
     anywidget = None
 
-__all__ = ["Arm3DWidget", "Box", "arm_figure", "figure_bundle", "workspace_box"]
+__all__ = [
+    "Arm3DWidget", "Box", "arm_figure", "figure_bundle", "trajectory_figure", "workspace_box",
+]  # fmt: skip
 
 PLOTLY_MIME = "application/vnd.plotly.v1+json"
 ROUND_MM = 3
@@ -259,6 +261,85 @@ def arm_figure(
     return go.Figure(data=traces, layout=_layout(arm, title, box, height))
 
 
+def trajectory_figure(
+    arm,
+    t: npt.ArrayLike,
+    q: npt.ArrayLike,
+    *,
+    title: str = "",
+    box: Box | None = None,
+    height: int = 560,
+    frames: int = 41,
+) -> go.Figure:
+    """A joint trajectory played in the 3D view: :func:`arm_figure` at the first sample, the
+    tool's whole path (dashed), the arm at ``frames`` times spread evenly over the samples
+    as plotly animation frames, a time slider (one step per frame, labelled in s) and
+    play / pause buttons. Works in JupyterLab and on the static site (plotly.js alone).
+
+    Parameters
+    ----------
+    t : array_like, shape (m,)
+        Times [s], increasing.
+    q : array_like, shape (m, n)
+        Joint values [rad | mm] at ``t`` (e.g. seed 004's cubic, eqs. 5.3-5.4).
+
+    >>> from analysis.kinematics.arm import load_arm
+    >>> fig = trajectory_figure(load_arm("gr1"), [0.0, 1.0], np.zeros((2, 5)), frames=2)
+    >>> len(fig.frames), [s.label for s in fig.layout.sliders[0].steps]
+    (2, ['0.00', '1.00'])
+    """
+    t, q = np.asarray(t, dtype=float), np.asarray(q, dtype=float)
+    if t.ndim != 1 or len(t) < 2 or not np.all(np.diff(t) > 0):
+        raise ValueError(f"t: {t.shape} times; expected at least 2, increasing")
+    if q.shape != (len(t), arm.n_joints):
+        raise ValueError(f"q: shape {q.shape}; expected ({len(t)}, {arm.n_joints})")
+    if not 2 <= frames <= 400:
+        raise ValueError(f"frames={frames}: 2 .. 400 animation frames")
+    idx = np.unique(np.linspace(0, len(t) - 1, min(frames, len(t))).round().astype(int))
+    pts = arm.frames(q[idx])  # (k, n_frames, 3): every pose in one call
+    path = arm.fk(q)
+    box = box or workspace_box(arm)
+    fig = arm_figure(arm, q[0], None, title=title, box=box, height=height)
+    fig.add_trace(
+        go.Scatter3d(
+            x=_round(path[:, 0]), y=_round(path[:, 1]), z=_round(path[:, 2]), mode="lines",
+            line={"color": "#2ca02c", "width": 4, "dash": "dot"}, name="tool path",
+            hoverinfo="skip",
+        )
+    )  # fmt: skip
+    arm_at = [k for k, tr in enumerate(fig.data) if tr.name == "arm"]
+    labels = [f"{v:.2f}" for v in t[idx]]
+    fig.frames = [
+        go.Frame(
+            data=[go.Scatter3d(x=_round(p[:, 0]), y=_round(p[:, 1]), z=_round(p[:, 2]))],
+            traces=arm_at,
+            name=label,
+        )
+        for p, label in zip(pts, labels, strict=True)
+    ]
+    still = {"mode": "immediate", "frame": {"duration": 0, "redraw": True},
+             "transition": {"duration": 0}}  # fmt: skip
+    fig.update_layout(
+        sliders=[{
+            "active": 0, "currentvalue": {"prefix": "t = ", "suffix": " s"},
+            "pad": {"t": 10}, "len": 0.75, "x": 0.25,
+            "steps": [{"method": "animate", "label": label, "args": [[label], still]}
+                      for label in labels],
+        }],
+        updatemenus=[{
+            "type": "buttons", "direction": "left", "x": 0.0, "y": 0.0, "xanchor": "left",
+            "yanchor": "top", "pad": {"t": 10},
+            "buttons": [
+                {"label": "▶ play", "method": "animate",
+                 "args": [None, {"frame": {"duration": 60, "redraw": True},
+                                 "fromcurrent": True, "transition": {"duration": 0}}]},
+                {"label": "❚❚ pause", "method": "animate", "args": [[None], still]},
+            ],
+        }],
+    )  # fmt: skip
+    return fig
+
+
 def figure_bundle(fig: go.Figure, key: str, text: str) -> dict[str, object]:
     """The MIME bundle that shows ``fig``: for JupyterLab, the report site and plain text.
 
@@ -275,6 +356,7 @@ def figure_bundle(fig: go.Figure, key: str, text: str) -> dict[str, object]:
     html = fig.to_html(
         include_plotlyjs=False,
         full_html=False,
+        auto_play=False,  # a trajectory (trajectory_figure) waits for its play button
         div_id=f"arm3d-{digest}",
         config=CONFIG,
         default_width="100%",

@@ -35,9 +35,10 @@ import math
 from typing import ClassVar
 
 from analysis.escape import js_comment, js_json
-from analysis.kinematics.dh import chain_frames
+from analysis.kinematics.dh import chain_transforms
 from analysis.kinematics.printing import INFIX, ExpressionPrinter
 from analysis.kinematics.pulses import pulse_count
+from analysis.kinematics.rpy import GIMBAL_LOCK_COS
 from analysis.kinematics.solution import DEFAULT_TOL_MM, solve_body
 from analysis.kinematics.status import STATUS_TEXT
 from analysis.kinematics.trace import Graph, Node, TraceOps
@@ -131,12 +132,16 @@ def solve_graph(arm, tol: float = DEFAULT_TOL_MM, *, on_axis: bool = False) -> G
 
 def frames_graph(arm) -> Graph:
     """The origins of the arm's frames 0..n (:meth:`Arm.frames`) recorded from its D-H chain,
-    outputs ``f<i>:<x|y|z>`` [mm] for joint inputs ``q0 .. q<n-1>`` [rad]."""
+    outputs ``f<i>:<x|y|z>`` [mm], and the tool frame's rotation (the last frame's, as
+    :func:`analysis.kinematics.forward.chain_points`), outputs ``R:<row><col>``, for joint
+    inputs ``q0 .. q<n-1>`` [rad]."""
     g = Graph()
     m = TraceOps(g)
     q = [g.input(f"q{j}") for j in range(arm.n_joints)]
-    origins = chain_frames(m, arm.table, q)
+    Ts = chain_transforms(m, arm.table, q)
+    origins = [(0.0, 0.0, 0.0), *((T[0][3], T[1][3], T[2][3]) for T in Ts)]
     g.outputs = {f"f{i}:{'xyz'[k]}": c for i, o in enumerate(origins) for k, c in enumerate(o)}
+    g.outputs |= {f"R:{r}{c}": Ts[-1][r][c] for r in range(3) for c in range(3)}
     return g
 
 
@@ -157,7 +162,7 @@ def _module(arm) -> str:
     from analysis.app.explain import CHOOSE_THETA1, ROUNDS, SCAN, TEMPLATES, reach_sphere
     from analysis.app.explore_logic import FK_CAPTION, IK_CAPTION
 
-    n_frames = len(frames_graph(arm).outputs) // 3
+    n_frames = (len(frames_graph(arm).outputs) - 9) // 3
     center, reach = reach_sphere(arm)
     on_axis = "theta1_on_axis" in arm.closed_form.options
     meta = {
@@ -175,6 +180,7 @@ def _module(arm) -> str:
         "center": list(center),
         "reach": reach,
         "on_axis": on_axis,
+        "gimbal_lock_cos": GIMBAL_LOCK_COS,
         "explain": {"templates": TEMPLATES, "choose": CHOOSE_THETA1, "scan": SCAN,
                     "rounds": ROUNDS, "captions": {"ik": IK_CAPTION, "fk": FK_CAPTION}},
     }
@@ -218,6 +224,10 @@ def _module(arm) -> str:
         "  for (let j = 0; j < arm.joints.length; j++) c.push(r['c' + j]);\n"
         "  return c;\n"
         "};\n"
+        "arm.tool_rotation = function (q) {\n"
+        "  const r = raw_frames(q);\n"
+        "  return [0, 1, 2].map((i) => [0, 1, 2].map((j) => r['R:' + i + j]));\n"
+        "};\n"
         "arm.frames = function (q) {\n"
         "  const r = raw_frames(q), pts = [];\n"
         "  for (let i = 0; i < arm.n_frames; i++) "
@@ -244,7 +254,11 @@ def arm_module_js(arm) -> str:
       [rad] (an arm that takes it), as ``theta1_on_axis``;
     * ``pulses(q)``: the whole pulses of joint values ``q`` (eqs. 20-22);
     * ``frames(q)``: the frame origins [[x, y, z], ...] [mm] for joint angles ``q`` [rad], as
-      :meth:`Arm.frames`.
+      :meth:`Arm.frames`;
+    * ``tool_rotation(q)``: the tool frame's rotation (3 rows), as
+      :func:`analysis.kinematics.pose.pose`'s ``rotation`` (its RPY angles are
+      ``js/static_explorer.js``'s ``rpy``, as :func:`analysis.kinematics.rpy.rpy_from_matrix`,
+      with ``gimbal_lock_cos``).
 
     Arms whose forward kinematics is not a D-H chain raise ``ValueError`` (the explorer then
     draws what the kernel sends)."""

@@ -437,21 +437,26 @@ def branch_of(arm: Arm, q: npt.ArrayLike, rep: PoseReport, tol_rad: float = 1e-6
 
 def fk_line(arm: Arm, q: npt.ArrayLike, rep: PoseReport | None) -> str:
     """The explorer's FK line for joint values ``q`` [rad | mm]: the joints and their whole
-    pulses, where the tool is (and its RPY for an arm whose IK takes a pose), and the branch
-    they belong to (:func:`branch_of`)."""
+    pulses, the full pose of ``fk --json`` (:func:`analysis.kinematics.pose.fk_document`: the
+    tool point, its RPY angles in the convention ``ik`` takes, a closed chain's passive
+    joints) to two decimals, and the branch they belong to (:func:`branch_of`)."""
+    from analysis.kinematics.pose import fk_document
+
     q = np.asarray(q, dtype=float)
-    user = arm.joints_to_user(q)
+    doc = fk_document(arm, arm.joints_to_user(q))
     joints = ", ".join(
         num(v, 2) + ("°" if u == "deg" else f" {u}")
-        for v, u in zip(user, arm.joint_user_units, strict=True)
+        for v, u in zip(doc["joint_values"], doc["joint_units"], strict=True)
     )
     pulses = ", ".join(str(int(c)) for c in arm.pulses(q))
-    point = ", ".join(num(v, 2) for v in arm.fk(q))
-    text = f"FK: joints ({joints}) → pulses ({pulses}); tool at ({point}) mm"
-    if set(RPY_INPUTS) <= set(arm.inputs):
-        t = arm.target(q)
-        rpy = [t[arm.inputs.index(k)] for k in RPY_INPUTS]
-        text += ", RPY (" + ", ".join(num(np.degrees(v), 2) for v in rpy) + ")°"
+    point = ", ".join(num(v, 2) for v in doc["position_mm"])
+    rpy = ", ".join(num(v, 2) for v in doc["rpy_deg"])
+    text = f"FK: joints ({joints}) → pulses ({pulses}); tool at ({point}) mm, RPY ({rpy})°"
+    passive = {k: v for k, v in doc["joint_states"].items() if k not in doc["joint_names"]}
+    if passive:
+        text += "; passive joints " + ", ".join(
+            f"{greek(k)} = {num(v, 2)}°" for k, v in passive.items()
+        )
     if rep is not None:
         b, why = branch_of(arm, q, rep)
         text += f"; branch: {b}" if b else f"; branch: none ({why})"

@@ -209,11 +209,25 @@
     /** A branch's own status word (as solved alone: explore_logic.pose_report's table). */
     function rowStatus(s, b) { return arm.status_text[s.branches[b].status]; }
 
-    /** explore_logic.fk_line: joints, pulses, the tool point and the branch they belong to. */
+    /** RPY angles [rad] of a rotation R (3 rows): analysis.kinematics.rpy.rpy_from_matrix
+     * (seed 004 eq. 3.18, beta in [-90, 90] deg; at gimbal lock alpha = 0). */
+    function rpy(R) {
+      const cb = Math.hypot(R[0][0], R[1][0]);
+      const beta = Math.atan2(-R[2][0], cb);
+      if (cb < arm.gimbal_lock_cos) {
+        const sign = R[2][0] < 0 ? 1 : -1;
+        return [0, beta, Math.atan2(sign * R[0][1], R[1][1])];
+      }
+      return [Math.atan2(R[1][0], R[0][0]), beta, Math.atan2(R[2][1], R[2][2])];
+    }
+
+    /** explore_logic.fk_line: joints, pulses, the full pose (fk --json: the tool point and
+     * its RPY angles) and the branch they belong to. */
     function fkLine(q, r) {
       const joints = q.map((v, j) => A.num(v / DEG, 2) + (arm.joint_units[j] === "deg" ? "°" : " " + arm.joint_units[j])).join(", ");
       const tool = r.frames[r.frames.length - 1];
-      let text = `FK: joints (${joints}) → pulses (${arm.pulses(q).join(", ")}); tool at (${tool.map((v) => A.num(v, 2)).join(", ")}) mm`;
+      const angles = rpy(arm.tool_rotation(q)).map((v) => A.num(v / DEG, 2)).join(", ");
+      let text = `FK: joints (${joints}) → pulses (${arm.pulses(q).join(", ")}); tool at (${tool.map((v) => A.num(v, 2)).join(", ")}) mm, RPY (${angles})°`;
       const pointOnly = arm.inputs.every((k) => AXIS[k]);
       if (pointOnly) {
         const s = arm.solve(tool, q[0]);
