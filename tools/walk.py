@@ -45,13 +45,13 @@ WATCH = {
 COUNTS: dict[str, int] = {}
 
 
-def walk(argv: list[str], depth: int) -> list[tuple[str, str]]:
+def walk(argv: list[str], depth: int, calls_only: bool = False) -> list[tuple[str, str]]:
     import analysis
 
     pkg = str(Path(analysis.__file__).resolve().parent)
     from analysis.app.cli import main
 
-    calls: list[tuple[str, str]] = []
+    calls: list[tuple[str, str, object]] = []
     level = [0]
     start = [None]
     COUNTS.clear()
@@ -67,7 +67,7 @@ def walk(argv: list[str], depth: int) -> list[tuple[str, str]]:
                 start[0] = level[0]
             inside = f.startswith(pkg) and "safe_io" not in f
             if start[0] is not None and inside and 0 < level[0] - start[0] <= depth:
-                calls.append((str(Path(f).relative_to(pkg)), frame.f_code.co_name))
+                calls.append((str(Path(f).relative_to(pkg)), frame.f_code.co_name, frame.f_code))
         elif event == "return":
             level[0] -= 1
             if start[0] is not None and level[0] < start[0]:
@@ -81,7 +81,29 @@ def walk(argv: list[str], depth: int) -> list[tuple[str, str]]:
         sys.setprofile(None)
     if rc:
         raise SystemExit(f"the command failed ({rc})")
-    return calls
+    if calls_only:
+        reads = _property_codes()
+        return [(f, fn) for f, fn, code in calls if not fn.startswith("<") and code not in reads]
+    return [(f, fn) for f, fn, _ in calls]
+
+
+def _property_codes() -> set:
+    """The code of every property getter of the package's classes (a read of a fact the
+    object holds, not a step of the walk)."""
+    import functools
+
+    out = set()
+    for name, mod in list(sys.modules.items()):
+        if not name.startswith("analysis") or mod is None:
+            continue
+        for cls in vars(mod).values():
+            if isinstance(cls, type) and cls.__module__ == name:
+                for attr in vars(cls).values():
+                    if isinstance(attr, property) and attr.fget is not None:
+                        out.add(attr.fget.__code__)
+                    elif isinstance(attr, functools.cached_property):
+                        out.add(attr.func.__code__)
+    return out
 
 
 def stops(calls):
@@ -99,6 +121,8 @@ def main(argv=None) -> int:
     ap.add_argument("--depth", type=int, default=4)
     ap.add_argument("--dialect", default="s7-300")
     ap.add_argument("--json", action="store_true")
+    ap.add_argument("--calls-only", action="store_true",
+                    help="leave out comprehensions and property reads (facts an object holds)")
     args = ap.parse_args(argv)
     import analysis
 
@@ -109,7 +133,7 @@ def main(argv=None) -> int:
     cmd = ["stl", "--arm", str(folder / "walk.toml"), "--dialect", args.dialect,
            "-o", str(folder / "out.awl"), "--map", str(folder / "out.json")]  # fmt: skip
     try:
-        s = stops(walk(cmd, args.depth))
+        s = stops(walk(cmd, args.depth, args.calls_only))
     finally:
         shutil.rmtree(folder)
     seen, returns = set(), 0
@@ -117,7 +141,8 @@ def main(argv=None) -> int:
         if f in seen and s[i - 1][0] != f:
             returns += 1
         seen.add(f)
-    doc = {"depth": args.depth, "files": len(seen), "stops": len(s), "returns": returns,
+    doc = {"depth": args.depth, "calls_only": args.calls_only, "files": len(seen),
+           "stops": len(s), "returns": returns,
            "counts": dict(sorted(COUNTS.items())),
            "walk": [f"{f}: {', '.join(dict.fromkeys(fns))}" for f, fns in s]}  # fmt: skip
     if args.json:

@@ -16,7 +16,7 @@ import pytest
 
 from analysis.audit import harness, records
 from analysis.audit import register as reg
-from analysis.audit.context import Context, bespoke
+from analysis.audit.context import Context, bespoke, context
 from analysis.papers import load, names
 
 EXAMPLE = Path(__file__).parent / "example"
@@ -105,3 +105,19 @@ def test_errata_reports_the_example_paper(capsys):
     code = main(["errata", "--paper-file", str(EXAMPLE / "paper.toml"),
                  "--register", str(EXAMPLE / "register.toml")])  # fmt: skip
     assert (code, capsys.readouterr().out.strip()) == (0, "explained")
+
+
+def test_each_never_drops_a_cell():
+    """A holds cause's [[cause.each]] whose check a cell fails (here a typo: A1's cells held
+    against A2's product) is an error naming the cell, not a cause with fewer rows."""
+    path = reg.source_path("grabber")
+    raw = tomllib.loads(path.read_text(encoding="utf-8"))
+    cause = next(c for c in raw["cause"] if c["id"] == "grabber-matrices-hold")
+    cause["each"] = [{"matrix": "A1", "check": {"kind": "matrix", "product": ["A2"]}}]
+    raw["cause"] = [cause]
+    cell = r"unexplained: grabber sec\. 1\.2 A_1 row 1 col 1 \(@A1\[1,1\]\)"
+    with pytest.raises(ValueError, match=cell):
+        reg.build(context("grabber"), raw)
+    cause["each"] = [{"matrix": "A1"}]  # the record's own check: every cell a row
+    built = reg.build(context("grabber"), raw)
+    assert len(built.cause("grabber-matrices-hold").manifestations) == 16

@@ -253,6 +253,7 @@ def _misspelt(draw):
     return doc, new, key
 
 
+@pytest.mark.slow  # make test-fast keeps its budget: the issue's classes run in make test
 @settings(max_examples=40, deadline=None)
 @given(case=_misspelt())
 def test_a_misspelt_or_unknown_key_is_refused_naming_it(tmp_path_factory, case):
@@ -276,6 +277,7 @@ LENGTH_UNITS = {"mm": 1.0, "cm": 10.0, "m": 1000.0, "in": 25.4}
 :data:`analysis.validate.LENGTH_UNITS`, which the test holds."""
 
 
+@pytest.mark.slow  # make test-fast keeps its budget: the issue's classes run in make test
 @settings(max_examples=12, deadline=None)
 @given(
     seed=st.sampled_from(["palletizer", "gr1"]),
@@ -357,6 +359,7 @@ def _malformed(draw):
     return doc, kind, "nope_mm"
 
 
+@pytest.mark.slow  # make test-fast keeps its budget: the issue's classes run in make test
 @settings(max_examples=40, deadline=None)
 @given(case=_malformed())
 def test_a_malformed_description_is_one_line_never_a_traceback(tmp_path_factory, case):
@@ -409,6 +412,7 @@ def _names_not_identifiers(draw):
     return doc, where, value
 
 
+@pytest.mark.slow  # make test-fast keeps its budget: the issue's classes run in make test
 @settings(max_examples=30, deadline=None)
 @given(case=_names_not_identifiers())
 def test_a_name_that_reaches_an_output_is_an_identifier_or_refused(tmp_path_factory, case):

@@ -34,3 +34,16 @@ def test_figure5_fragment_executes_its_round():
 
     assert check(alone, m.checked, context("grabber")).values["first"]["VD122"] == 1073571786
     assert got["wrong"] <= got["n"]  # rows against rows
+
+
+def test_every_fragment_that_pops_the_stack_runs_inside_its_network():
+    """A printed fragment with LPP/LRD (which read the logic stack its network pushed) is run
+    after the instructions it sits inside (check key 'enter'): otherwise the instruction after
+    the pop does not execute and the row would report a value nothing computed."""
+    for m in reg.register("grabber").manifestations:
+        if m.spec.get("kind") != "stl" or m.spec.get("mode") == "order":
+            continue
+        ops = [ln.split()[0] for ln in m.checked.splitlines() if ln.strip()]
+        if {"LPP", "LRD"} & set(ops):
+            assert "LPS" in ops[: ops.index(next(o for o in ops if o in ("LPP", "LRD")))] or (
+                "LPS" in m.spec.get("enter", "")), m.id

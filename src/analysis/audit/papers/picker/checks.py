@@ -83,6 +83,23 @@ def _pairs():
     return {"n_assemblies": n, "n_on_branch": on_branch}
 
 
+@B.domain("prior_methods")
+def _prior():
+    """The works the introduction reviews ([14]-[18], as it describes them): does a work
+    propose a method (方法) that builds or analyses kinematics from screw theory (旋量/螺旋理論)
+    for a robot with a closed or parallel chain beside a serial one (閉鏈級聯, 混聯, 串聯 and
+    並聯): the paper's own contribution?"""
+    cited = context("picker").paper.record("prior_work")["cited"]
+
+    def same(text: str) -> bool:
+        screw = "旋量理論" in text or "螺旋理論" in text
+        hybrid = "閉鏈級聯" in text or "混聯" in text or ("串聯" in text and "並聯" in text)
+        return screw and hybrid and "方法" in text
+
+    return {"same_method": np.array([same(t) for _, t in cited]),
+            "key": np.array([k for k, _ in cited])}  # fmt: skip
+
+
 @B.domain("r3")
 def _r3():
     """Candidate identity elements e of (R3, +): the zero vector and five seeded nonzero
