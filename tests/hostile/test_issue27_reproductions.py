@@ -466,3 +466,34 @@ def test_a_table_outside_its_folders_is_refused_by_the_rule(tmp_path_factory, wh
     assert "arm.toml: " in err and ("is not a plain file name" in err or (
         "resolves (through a symbolic link) outside" in err)), (how, err)  # fmt: skip
     assert "root:" not in err
+
+
+@pytest.mark.parametrize("unit", ["m", "cm", "in"])
+def test_a_unit_that_contradicts_its_columns_name_is_refused(tmp_path, unit):
+    """A parameter read from column ``d_mm`` with ``unit = "m"`` loaded L1 = 660,000 mm (the
+    unit overrode the column's own). Refused in one line naming the parameter, the unit and
+    the column; the column's unit given, or none, loads the seed's L1."""
+    from analysis.kinematics.arm import load_arm
+
+    base = load_arm("grabber")
+    for given_unit, refused in ((unit, True), ("mm", False), (None, False)):
+        doc = _seed("grabber")
+        l1 = doc["parameters"]["L1"]
+        assert l1["column"].endswith("_mm")
+        if given_unit is None:
+            l1.pop("unit", None)
+        else:
+            l1["unit"] = given_unit
+        folder = tmp_path / f"{given_unit}"
+        folder.mkdir()
+        path = _write(folder, doc)
+        out = cli("fk", "--arm", str(path), "0", "0", "0")
+        err = out.stderr.strip()
+        if refused:
+            assert out.code == 2 and "\n" not in err, err
+            assert f"parameters L1 unit: '{unit}' contradicts column 'd_mm'" in err, err
+        else:
+            assert out.code == 0, err
+            assert load_arm(str(path)).description.parameters["L1"].value == (
+                base.description.parameters["L1"].value
+            )

@@ -10,7 +10,8 @@ may hold); :class:`Reader` walks a parsed description against it:
 - **numbers** go through :mod:`analysis.validate` (real, finite, within the range the code
   supports; a boolean or a text is not a number); **lengths** carry a unit (:data:`analysis.
   validate.LENGTH_UNITS`: mm, cm, m, in) and are converted to millimetres, any other unit
-  refused;
+  refused; a length read from a table column whose name ends in its unit (``d_mm``) takes that
+  unit, and a ``unit`` that contradicts it is refused;
 - **names that reach an output** (the arm's ``name``, parameter, axis and joint names: PLC
   identifiers, MAP.json keys, URDF joint names, the explorer's script) follow
   :data:`IDENTIFIER`, the IEC 61131-3 identifier rule, ASCII only; link names (URDF link
