@@ -21,12 +21,12 @@ Kinds (in this order; a kind may be empty for an arm that has no such boundary):
 ``<status>-1mm``
     Each boundary of the reachable set that a target crosses when its position moves in
     its own vertical half-plane (the plane of the base axis: the arm's plane, so a pose's
-    orientation stays takeable; a planar arm's own plane), found by bisection on the solver's status and named by
-    the status there (``out-of-reach-1mm``, ``inside-reach-1mm``, ``joint-limits-1mm``,
-    ...): 1e-3 .. 1 mm on either side of it. Horizontal rays along the waist's direction,
-    half of them each way (joint limits ignored), find the axis, where the waist flips
-    (``base-axis-1mm``; five exactly on the crossing; ``flip-1mm`` where the arm's waist
-    turns fast there without a refusal: an offset shoulder).
+    orientation stays takeable; a planar arm's own plane), found by bisection on the solver's
+    status and named by the status there (``out-of-reach-1mm``, ``inside-reach-1mm``,
+    ``joint-limits-1mm``, ...): 1e-3 .. 1 mm on either side of it. Horizontal rays along the
+    waist's direction, half of them each way (joint limits ignored), find the axis, where
+    the waist flips (``base-axis-1mm``; five exactly on the crossing; ``flip-1mm`` where the
+    arm's waist turns fast there without a refusal: an offset shoulder).
 ``<status>-tol``
     The same for the angle inputs (a pose arm): the orientation moved from a takeable one
     until the status changes or the solution flips (``orientation-tol``: the GR-1's
