@@ -29,7 +29,7 @@ IEC 61131-3 identifiers (:func:`iec_identifier`)
     trailing ``_`` dropped; a name that is then empty, begins with a digit or is a reserved
     word gets the prefix ``v_``. Callers keep the identifiers of one scope distinct
     (:meth:`analysis.plc.st.StPrinter.declare`).
-XML (:func:`xml_text`, :func:`xml_attr`, :func:`xml_comment`)
+XML (:func:`xml_text`, :func:`xml_attr`, :func:`xml_comment`, :func:`xml_cdata`)
     Characters XML 1.0 does not allow (C0 controls but TAB, LF, CR; U+FFFE, U+FFFF; lone
     surrogates) removed, not escaped (``&#1;`` is no XML 1.0 either); ``& < >`` as entities;
     in an attribute also ``"`` and TAB, LF, CR as character references (an attribute value's
@@ -73,6 +73,7 @@ __all__ = [
     "plc_comment",
     "terminal",
     "xml_attr",
+    "xml_cdata",
     "xml_chars",
     "xml_comment",
     "xml_text",
@@ -160,6 +161,16 @@ def xml_text(text) -> str:
     """
     s = _XML_INVALID.sub("", str(text))
     return s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
+
+
+def xml_cdata(text) -> str:
+    """``text`` as the content of a CDATA section (``<![CDATA[`` ... ``]]>``): characters
+    XML forbids removed, and a ``]]>`` inside split across two sections.
+
+    >>> xml_cdata("a ]]> b")
+    'a ]]]]><![CDATA[> b'
+    """
+    return _XML_INVALID.sub("", str(text)).replace("]]>", "]]]]><![CDATA[>")
 
 
 def xml_attr(text) -> str:

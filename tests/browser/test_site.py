@@ -119,7 +119,7 @@ def test_maths_is_rendered_with_every_outside_request_blocked(
         for raw in ("$\\displaystyle", "\\displaystyle", "\\left[", "\\begin{matrix}"):
             assert raw not in state["text"], (p, raw)
         if p == "notebooks/02_inverse_kinematics.html":
-            page.locator("mjx-container").nth(2).scroll_into_view_if_needed()
+            page.locator(".bd-article mjx-container").nth(2).scroll_into_view_if_needed()
             page.screenshot(path=shots / "maths-02.png")
     assert blocked == [], f"requests outside 127.0.0.1: {blocked[:5]}"
     # the pages carry no address of a CDN or any outside script at all

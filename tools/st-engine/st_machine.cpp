@@ -8,24 +8,35 @@
 //   st_machine --vars SOURCE.st PROGRAM                    (prints "name<TAB>type" per variable)
 //   st_machine SOURCE.st PROGRAM CYCLE_NS N_CYCLES AXES WRITES OUTPUTS  < writes > trace
 //
-// AXES: ';'-separated "NAME,vmax,amax,jmax,lo,hi,start" in joint units per second (deg or
-// mm; lo/hi "nan" for no software limit), or "" for none. Each axis is configured in SI
-// with AxisModel::configure_si(CycleConfig::from_period_ns(CYCLE_NS), ...) (the limits its
-// homing uses; a motion FB's own Velocity/Acceleration/Jerk inputs reach the axis as they
-// are, i.e. per cycle: analysis.plc.st_engine explains where the program converts them),
-// set to `start` and left unpowered.
+// AXES: ';'-separated "NAME,vmax,amax,jmax,lo,hi,start[,coord,switch]" in joint units per
+// second (deg or mm; lo/hi "nan" for no software limit), or "" for none. Each axis is
+// configured in SI with AxisModel::configure_si(CycleConfig::from_period_ns(CYCLE_NS), ...)
+// (the limits its homing steps use; a motion FB's own Velocity/Acceleration/Jerk inputs
+// reach the axis as they are, i.e. per cycle: analysis.plc.st_engine explains where the
+// program converts them), left unpowered. `start` is where the axis physically stands at
+// power-up, `coord` what its encoder reads then (default `start`: the position the PLC
+// sees), `switch` the physical position of its reference switch (default "nan": none): the
+// axis' digital input 0 is TRUE while the axis stands at or beyond it (an absolute switch,
+// the cam ON on the positive side), written before every scan.
+// The physical position is the encoder's plus an offset; a scan that changes the encoder's
+// position (MC_SetPosition, MC_HomeDirect, a homing step's SetPosition: motion happens only
+// in AxisModel::cycle, after the scan) moves the offset by as much, so the physical position
+// stays where it is: a re-referenced axis does not jump.
 // WRITES: ','-separated variables the stdin records may write (a scalar of PROGRAM's VAR), or
 // "@K" for axis K's drive power-stage feedback (AxisModel::set_power_feedback: FALSE while
 // powered is an axis error, the drive's fault; TRUE restores it).
 // Each record on stdin is (int64 cycle, int64 index into WRITES, float64 value), little-
 // endian, in non-decreasing cycle order: it is stored before the scan of that cycle, the way
 // an HMI or a fieldbus writes a PLC's variables between two scans.
-// Per cycle k = 0 .. N_CYCLES-1: the writes of cycle k, one scan (Instance::scan), then every
-// axis advances one cycle (AxisModel::cycle). One row of IEEE binary64 per cycle on stdout:
-// q1..qN (each axis's position as the scan saw it), v1..vN (its velocity, per second), each
-// of OUTPUTS after the scan, then the scan's fault code (st::ScanError, 0 ok).
+// Per cycle k = 0 .. N_CYCLES-1: the writes of cycle k, the reference switches, one scan
+// (Instance::scan), then every axis advances one cycle (AxisModel::cycle). One row of IEEE
+// binary64 per cycle on stdout: q1..qN (each axis's physical position as the scan saw it),
+// v1..vN (its velocity, per second), p1..pN (its encoder's position, what the PLC reads,
+// before the scan), each of OUTPUTS after the scan, then the scan's fault code
+// (st::ScanError, 0 ok).
 // A scan fault stops the run after its row: "fault CODE NAME at cycle K" on stderr, exit 4.
-// Compile diagnostics: "line L col C: code: message" on stderr, exit 3. On exit the time
+// Compile diagnostics: "line L col C: code: message" on stderr, exit 3 (a code budget of 1 MiB,
+// as st_run's). On exit the time
 // spent in scans: "scan_ns <n> cycles <m>" on stderr.
 #include "axis/state.h"
 #include "rt/error_text.h"
@@ -126,7 +137,9 @@ std::string read_file(const char *path, bool &ok)
 
 bool compile_or_report(const std::string &source, st::CompileResult &out)
 {
-    out = st::compile(source);
+    st::CompileOptions options;
+    options.max_code_bytes = 1U << 20;  // as st_run: the default 64 KiB is not a six-axis arm's
+    out = st::compile(source, options);
     if(out.ok) return true;
     for(const st::Diagnostic &d : out.diagnostics)
         std::fprintf(stderr, "line %d col %d: %s: %s\n", d.line, d.column,
@@ -208,10 +221,14 @@ int main(int argc, char **argv)
     // the axes
     const std::vector<std::string> axis_specs = split(argv[5], ';');
     std::vector<std::unique_ptr<axis::AxisModel>> axes;
+    std::vector<double> offset, reference;  // physical - encoder position; switch position
     for(const std::string &spec : axis_specs) {
         const std::vector<std::string> f = split(spec, ',');
-        if(f.size() != 7) { std::fprintf(stderr, "axis %s: expected NAME,v,a,j,lo,hi,start\n",
-                                         spec.c_str()); return 2; }
+        if(f.size() != 7 && f.size() != 9) {
+            std::fprintf(stderr, "axis %s: expected NAME,v,a,j,lo,hi,start[,coord,switch]\n",
+                         spec.c_str());
+            return 2;
+        }
         auto axis = std::make_unique<axis::AxisModel>();
         axis::AxisSiConfig si{};
         si.max_velocity = std::strtod(f[1].c_str(), nullptr);
@@ -229,7 +246,11 @@ int main(int argc, char **argv)
                          rt::to_string(configured));
             return 2;
         }
-        const rt::ErrorCode placed = axis->set_position(std::strtod(f[6].c_str(), nullptr));
+        const double start = std::strtod(f[6].c_str(), nullptr);
+        const double coord = f.size() == 9 ? std::strtod(f[7].c_str(), nullptr) : start;
+        offset.push_back(start - coord);
+        reference.push_back(f.size() == 9 ? parse_limit(f[8]) : std::nan(""));
+        const rt::ErrorCode placed = axis->set_position(coord);
         if(placed != rt::ErrorCode::ok) {
             std::fprintf(stderr, "axis %s: start position %s refused: %s\n", f[0].c_str(),
                          f[6].c_str(), rt::to_string(placed));
@@ -277,7 +298,7 @@ int main(int argc, char **argv)
     }
 
     const std::size_t n_axes = axes.size();
-    std::vector<double> row(2 * n_axes + out_index.size() + 1);
+    std::vector<double> row(3 * n_axes + out_index.size() + 1), before(n_axes);
     Record rec{};
     bool have = std::fread(&rec, sizeof(rec), 1, stdin) == 1;
     std::int64_t scan_ns = 0, k = 0;
@@ -296,16 +317,22 @@ int main(int argc, char **argv)
         }
         for(std::size_t a = 0; a < n_axes; ++a) {
             const axis::AxisSnapshot &s = axes[a]->snapshot();
-            row[a] = s.actual_position;
+            before[a] = s.actual_position;
+            row[a] = s.actual_position + offset[a];
             row[n_axes + a] = cycle.velocity_to_si(s.actual_velocity);
+            row[2 * n_axes + a] = s.actual_position;
+            if(!std::isnan(reference[a]))
+                (void)axes[a]->set_digital_input(0, row[a] >= reference[a]);
         }
         const auto t0 = std::chrono::steady_clock::now();
         const st::ScanError e = vm.scan(std::int64_t{1} << 40);
         scan_ns += std::chrono::duration_cast<std::chrono::nanoseconds>(
                        std::chrono::steady_clock::now() - t0).count();
+        for(std::size_t a = 0; a < n_axes; ++a)  // re-referenced in the scan: not moved
+            offset[a] += before[a] - axes[a]->snapshot().actual_position;
         for(std::size_t o = 0; o < out_index.size(); ++o) {
             const int i = out_index[o];
-            row[2 * n_axes + o] = is_real(vm.variable(i)->type)
+            row[3 * n_axes + o] = is_real(vm.variable(i)->type)
                                       ? vm.value_f64(i)
                                       : static_cast<double>(vm.value_i64(i));
         }

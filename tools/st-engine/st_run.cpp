@@ -14,7 +14,9 @@
 // written as one IEEE binary64 (little-endian) per output, followed by the scan's fault code
 // (st::ScanError, 0 = ok; a faulted instance is reset before the next row, as a CPU restart).
 // On exit the total time spent in scan() is written to stderr as "scan_ns <n> rows <m>".
-// Compile diagnostics go to stderr as "line L col C: code: message", exit status 3.
+// Compile diagnostics go to stderr as "line L col C: code: message", exit status 3. The code
+// budget is 1 MiB of bytecode (CompileOptions::max_code_bytes; the engine's default, 64 KiB,
+// is less than the PUMA 560's IK block and machine program take: capacity_code; jumps are u32).
 #include "rt/error_text.h"
 #include "st/st.h"
 
@@ -66,7 +68,9 @@ int main(int argc, char **argv)
     std::stringstream text;
     text << file.rdbuf();
     const std::string source = text.str();
-    const st::CompileResult compiled = st::compile(source);
+    st::CompileOptions options;
+    options.max_code_bytes = 1U << 20;  // the default 64 KiB: not a six-axis IK block and more
+    const st::CompileResult compiled = st::compile(source, options);
     if(!compiled.ok) {
         for(const st::Diagnostic &d : compiled.diagnostics)
             std::fprintf(stderr, "line %d col %d: %s: %s\n", d.line, d.column,

@@ -117,16 +117,24 @@ def atan2_poly(m, y, x, degree: int = ATAN_DEGREE):
     return m.select(zero, 0.0, r)
 
 
-def atan2_from_atan(m, y, x):
+def atan2_from_atan(m, y, x, *, names: bool = False):
     """ATAN2(y, x) [rad] from the S7-300's ATAN instruction and quadrant selects.
 
     ``atan(y / x)``, plus pi (y >= 0) or minus pi (y < 0) for x < 0; +-pi/2 or 0 on x = 0.
-    The generated S7-300 program computes exactly this (:mod:`analysis.plc.ir`).
+    The generated S7-300 program computes exactly this (:mod:`analysis.plc.ir`). ``names``:
+    the intermediates named (``m.let``) for a program a person reads.
     """
+
+    def let(name, value):
+        return m.let(name, value) if names else value
+
     xz = m.eq(x, 0.0)
-    r = m.atan(y / m.select(xz, 1.0, x))
-    r = m.select(m.lt(x, 0.0), m.select(m.lt(y, 0.0), r - math.pi, r + math.pi), r)
-    on_axis = m.select(m.gt(y, 0.0), math.pi / 2, m.select(m.lt(y, 0.0), -math.pi / 2, 0.0))
+    divisor = let("divisor", m.select(xz, 1.0, x))
+    r = let("principal", m.atan(y / divisor))
+    r = let("quadrant", m.select(m.lt(x, 0.0), m.select(m.lt(y, 0.0), r - math.pi, r + math.pi),
+                                 r))  # fmt: skip
+    on_axis = let("on_axis", m.select(m.gt(y, 0.0), math.pi / 2,
+                                      m.select(m.lt(y, 0.0), -math.pi / 2, 0.0)))  # fmt: skip
     return m.select(xz, on_axis, r)
 
 

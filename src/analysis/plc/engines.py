@@ -11,8 +11,11 @@ from __future__ import annotations
 
 import re
 import struct
+import time
 
-__all__ = ["AwlSession", "S7200Session"]
+from analysis.plc.cpus import target_cpu
+
+__all__ = ["BUDGET_S", "WATCHDOG_S", "AwlSession", "S7200Session"]
 
 S7200_AREAS = "SM|V|M|I|Q|S"
 
@@ -73,27 +76,69 @@ class S7200Session:
         return False
 
 
-class AwlSession:
-    """An S7-300 AWL program on awlsim (:class:`analysis.plc.runner.AwlRunner`, the default
-    S7-300 map; the first scan is the first :meth:`scan`)."""
+WATCHDOG_S = 6.0
+"""The scan watchdog of an S7-300 session [s]: the longest scan cycle monitoring time an
+S7-300 CPU can be set to (6,000 ms; the default is 150 ms): a scan that runs longer sends
+the CPU to STOP."""
+BUDGET_S = 300.0
+"""The cap on scans x watchdog [s]: ``--scans N`` runs at most min(N x :data:`WATCHDOG_S`,
+this) seconds of awlsim, then the CPU goes to STOP, saying how many scans it ran."""
 
-    def __init__(self, text: str, *, cpu: str | None = None, source: str = "program") -> None:
+
+class AwlSession:
+    """An S7-300 AWL program on awlsim (:class:`analysis.plc.runner.AwlRunner`), its M memory
+    the target CPU's (default the CPU 315-2 DP's 2,048 bytes, awlsim's own; a program that
+    addresses more is refused), the first scan the first :meth:`scan`; every scan watched
+    (:data:`WATCHDOG_S`) and all of them capped (:data:`BUDGET_S`)."""
+
+    def __init__(self, text: str, *, cpu: str | None = None, source: str = "program",
+                 watchdog_s: float = WATCHDOG_S, budget_s: float = BUDGET_S) -> None:  # fmt: skip
         from analysis.plc.memmap import default_map
         from analysis.plc.runner import AwlRunner
 
-        self.runner = AwlRunner(text, default_map("s7-300"), name=source, first_scan=False)
+        target = target_cpu(cpu, "s7-300")
+        self.watchdog_s, self.budget_s = watchdog_s, budget_s
+        self.runner = AwlRunner(text, default_map("s7-300"), name=source, first_scan=False,
+                                m_bytes=target.areas["M"], cpu_name=f"the {target.name}",
+                                cycle_limit_us=int(watchdog_s * 1e6))  # fmt: skip
+        self.fault: str | None = None
 
     def write(self, typ: str, addr: str, value, explicit: bool = True) -> None:
         self.runner.write(typ, addr, value)
 
     def scan(self, n: int = 1) -> None:
-        for _ in range(n):
-            self.runner.cycle()
+        """``n`` scans, or fewer: a scan past the watchdog or all of them past the cap on
+        scans x watchdog stop the CPU (:attr:`fault` says which, where, after how many)."""
+        from awlsim.common.exceptions import AwlSimError
+
+        budget = min(n * self.watchdog_s, self.budget_s)
+        start = time.monotonic()
+        for k in range(n):
+            if time.monotonic() - start > budget:
+                self.fault = (
+                    f"{k:,} of {n:,} scans ran in the {budget:g} s that --scans x the "
+                    f"{self.watchdog_s:g} s watchdog allows (at most {self.budget_s:g} s)"
+                )
+                return
+            try:
+                self.runner.cycle()
+            except AwlSimError as exc:
+                self.fault = _awlsim_stop(exc, k)
+                return
 
     def read(self, typ: str, addr: str):
         return self.runner.read(typ, addr)
 
-    fault = None
+
+def _awlsim_stop(exc, k: int) -> str:
+    """awlsim's error (several lines and a CPU dump) as one line: what, the statement and
+    its line, the scan."""
+    head = str(exc).split("[S7-CPU]", 1)[0]
+    lines = [ln.strip() for ln in head.splitlines() if ln.strip()]
+    what = lines[-1] if lines else type(exc).__name__
+    m = re.search(r"at line (\d+):\s*\n\s*\n?\s*(.+)", head)
+    where = f" at line {m.group(1)} ({' '.join(m.group(2).split())})" if m else ""
+    return f"{what[:200]}{where[:200]} in scan {k + 1:,}"
 
 
 def _bits_as_real(v: int) -> float:

@@ -84,7 +84,8 @@ def generate(
     options = Options(mmap, cpu, motion, optimize, startup_target)
     cls.check_options(options)
     trig = cls.check_trig(trig)
-    program = build_program(arm, branch, trig, theta1_on_axis=theta1_on_axis)
+    program = build_program(arm, branch, trig, theta1_on_axis=theta1_on_axis,
+                            readable=cls.readable)  # fmt: skip
     out = cls.generate(arm, program, options)
     if motion and dialect in MACHINE_DIALECTS:  # the machine program beside the IK block
         from analysis.plc.machine.generate import with_machine

@@ -10,13 +10,24 @@ printers (and the dialect registry) sit below the lowering.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 
 from analysis.kinematics.ops import OPS
 from analysis.kinematics.status import Status
 from analysis.kinematics.trace import Graph
 
-__all__ = ["CMP", "Cond", "Instr", "Program", "Subroutine", "flatten", "names", "status_codes"]
+__all__ = [
+    "CMP",
+    "Cond",
+    "Instr",
+    "Program",
+    "Subroutine",
+    "flatten",
+    "names",
+    "status_codes",
+    "uncited",
+]
 
 CMP = ("<", "<=", ">", ">=", "==", "<>")
 """The compares of the flat form (``jcmp``), as the op table's symbols plus ``<>``."""
@@ -78,6 +89,13 @@ class Program:
     outputs: tuple[str, ...] = ("c1", "c2", "c3")
     notes: tuple[str, ...] = field(default=())
     graph: Graph | None = field(default=None, compare=False, repr=False)
+    cites: bool = True
+    """Whether the program's texts may cite the paper (equations, figures, tables): the
+    paper's own arm; a user's arm on the same closed form gets its texts without them."""
+
+    def cite(self, text: str) -> str:
+        """``text`` as this program may say it (:attr:`cites`; :func:`uncited`)."""
+        return text if self.cites else uncited(text)
 
     def variables(self) -> set[str]:
         return {a for i in self.body for a in names(i)}
@@ -176,6 +194,36 @@ def flatten(code) -> tuple[Instr, ...]:
         else:
             out.append(i)
     return tuple(out)
+
+
+_CITATION = re.compile(r"\b(?:eqs?|Figs?|Figures?|sec|Tables?|seed)\b\.?\s*[0-9]", re.I)
+
+
+def uncited(text: str) -> str:
+    """``text`` without its citations of a paper: every parenthesised part that cites an
+    equation, a figure, a section or a table, and ``the paper's``.
+
+    >>> uncited("theta1 = atan2(Py, Px) (eq. 6; Fig. 4); the base axis")
+    'theta1 = atan2(Py, Px); the base axis'
+    >>> uncited("theta1 = atan2(py, px) (sec. 4.2 prints arctan(py/px)); the base axis")
+    'theta1 = atan2(py, px); the base axis'
+    """
+    out, depth, start, pieces = [], 0, 0, []
+    for k, c in enumerate(text):
+        if c == "(":
+            if depth == 0:
+                pieces.append(text[start:k])
+                start = k
+            depth += 1
+        elif c == ")" and depth:
+            depth -= 1
+            if depth == 0:
+                group = text[start : k + 1]
+                pieces.append("" if _CITATION.search(group) else group)
+                start = k + 1
+    pieces.append(text[start:])
+    out = "".join(pieces).replace("the paper's ", "the ")
+    return re.sub(r"\s+([;:,.])", r"\1", re.sub(r"\s{2,}", " ", out)).strip()
 
 
 def status_codes(program: Program) -> list[int]:

@@ -41,13 +41,25 @@ slots once dead (a subroutine's locals must fit the S7-200's 64 bytes of L memor
 
 from __future__ import annotations
 
+import dataclasses
 import math
+from collections import Counter
 
 from analysis.kinematics.ops import CONDITIONS, OPS
 from analysis.kinematics.status import Status
 from analysis.kinematics.trace import Graph, Node, TraceOps
 from analysis.plc.approx import ATAN_DEGREE, atan2_from_atan, atan2_poly
-from analysis.plc.instr import CMP, CMP_OF, Cond, Instr, Program, Subroutine, flatten, names
+from analysis.plc.instr import (
+    CMP,
+    CMP_OF,
+    Cond,
+    Instr,
+    Program,
+    Subroutine,
+    flatten,
+    names,
+    uncited,
+)
 from analysis.plc.model import PLC_MARGIN_MM, PLC_MARGIN_RAD, program_body
 
 __all__ = [
@@ -66,6 +78,9 @@ __all__ = [
     "flatten",
 ]
 
+_INFIX_WORDS = {"add": "plus", "sub": "minus", "mul": "x", "div": "over"}
+_KIND_WORDS = {"add": "total", "sub": "difference", "mul": "product", "div": "quotient",
+               "select": "choice", "neg": "negated"}  # fmt: skip
 TRIG = ("subroutine", "native", "function")
 """How a program gets ATAN2 and ACOS: ``subroutine``, both generated from ``+ - * /`` and
 compares (:func:`analysis.plc.approx.atan2_poly`; the S7-200 has no inverse trigonometry);
@@ -93,10 +108,12 @@ class Lowering:
         soon as the condition is computed.
     """
 
-    def __init__(self, graph, fixed, trig, *, keep_names, refusals=None, prefix="tmp"):
+    def __init__(
+        self, graph, fixed, trig, *, keep_names, refusals=None, prefix="tmp", readable=False
+    ):
         self.g, self.fixed, self.trig = graph, dict(fixed), trig
-        self.keep_names, self.refusals = keep_names, dict(refusals or {})
-        self.prefix = prefix
+        self.keep_names, self.refusals = keep_names or readable, dict(refusals or {})
+        self.prefix, self.readable = prefix, readable
         self.code: list[Instr] = []
         self.var: dict[int, str] = {}
         self.free: list[str] = []
@@ -104,6 +121,9 @@ class Lowering:
         self.named: list[str] = []
         self.live = graph.live()
         self.last_use = self._liveness()
+        live = {n.index for n in self.live}
+        self.repeats = Counter(v for k, v in graph.names.items() if k in live)
+        self.seen: Counter = Counter()
 
     # --- bookkeeping ------------------------------------------------------------------------
     def emit(self, op, dst=None, *args, comment=""):
@@ -137,10 +157,15 @@ class Lowering:
             name = self.fixed[n.index]
         elif self.keep_names and n.index in self.g.names:
             base = self.g.names[n.index]
-            name, k = base, 2
-            while name in self.named or name in self.fixed.values():
-                name, k = f"{base}_{k}", k + 1
+            if self.readable and self.repeats[base] > 1:  # count1, count2, count3
+                self.seen[base] += 1
+                base = f"{base}{self.seen[base]}"
+            name = self._unique(base) if self.readable else self._numbered(base)
             self.named.append(name)
+        elif self.readable:  # a name from the operation and its operands (_describe)
+            name = self._unique(self._describe(n))
+            self.named.append(name)
+            self.temps.append(name)
         elif self.free:
             name = self.free.pop()
         else:
@@ -148,6 +173,47 @@ class Lowering:
             self.temps.append(name)
         self.var[n.index] = name
         return name
+
+    def _numbered(self, base: str) -> str:
+        name, k = base, 2
+        while name in self.named or name in self.fixed.values():
+            name, k = f"{base}_{k}", k + 1
+        return name
+
+    def _unique(self, base: str) -> str:
+        """``base``, or ``base`` and the first number that no other variable has (names are
+        compared as IEC 61131-3 compares them: case aside)."""
+        taken = {n.upper() for n in (*self.named, *self.fixed.values())}
+        name, k = base, 2
+        while name.upper() in taken:
+            name, k = f"{base}{k}", k + 1
+        return name
+
+    def _word(self, a) -> str:
+        """An operand as a word of a name: its variable, or the constant's digits."""
+        if isinstance(a, Node):
+            return self.var[a.index]
+        v = float(a)
+        known = {math.pi: "pi", math.pi / 2: "half_pi", 2 * math.pi: "two_pi", 0.5: "half",
+                 0.0: "zero", 1.0: "one", 2.0: "two"}  # fmt: skip
+        text = known.get(abs(v)) or f"{abs(v):g}".replace(".", "p").replace("+", "")
+        return ("minus_" if v < 0 else "") + text
+
+    def _describe(self, n: Node) -> str:
+        """A name for an intermediate that the closed form does not name, from its operation
+        and the names of its operands (``px_sq``, ``abs_z``, ``y_over_x``), or the kind of
+        value it is where that would be long (``product``)."""
+        args = [a for a in n.args if not (isinstance(a, Node) and a.op in CONDITIONS)]
+        words = [self._word(a) for a in args]
+        if n.op == "mul" and len(n.args) == 2 and n.args[0] is n.args[1]:
+            name = f"{words[0]}_sq"
+        elif n.op in _INFIX_WORDS and len(words) == 2:
+            name = f"{words[0]}_{_INFIX_WORDS[n.op]}_{words[1]}"
+        elif n.op == "select" and len(words) == 2:
+            name = f"{words[0]}_or_{words[1]}"
+        else:
+            name = "_".join([n.op, *words])
+        return name if len(name) <= 24 else _KIND_WORDS.get(n.op, n.op)
 
     def _release(self, pos: int, n: Node) -> None:
         for a in {a.index: a for a in n.args if isinstance(a, Node)}.values():
@@ -160,6 +226,8 @@ class Lowering:
                     self._release_node(b, pos)
             return
         name = self.var.get(a.index)
+        if self.readable:  # each value its own variable: nothing is reused
+            return
         if name in self.temps and self.last_use.get(a.index, -1) <= pos and name not in self.free:
             self.free.append(name)
 
@@ -220,7 +288,7 @@ STEP 7-Micro/WIN refuses symbol names that are addresses (``T1`` is a timer) or 
 parameters are ``Y``, ``X``, ``COSINE`` and ``ANGLE``."""
 
 
-def _subroutine(name, number, inputs, output, fn, trig, title) -> Subroutine:
+def _subroutine(name, number, inputs, output, fn, trig, title, readable=False) -> Subroutine:
     g = Graph()
     m = TraceOps(g)
     ins = [g.input(k) for k in inputs]
@@ -228,13 +296,18 @@ def _subroutine(name, number, inputs, output, fn, trig, title) -> Subroutine:
     fixed = {n.index: k for k, n in zip(inputs, ins, strict=True)}
     result = g.outputs[output]
     fixed[result.index] = output
-    low = Lowering(g, fixed, trig, keep_names=False, prefix=SUBROUTINE_TEMP)
+    low = Lowering(g, fixed, trig, keep_names=False, prefix=SUBROUTINE_TEMP, readable=readable)
     body = [Instr("network", None, (title,)), *low.run()]
-    return Subroutine(name, number, tuple(inputs), (output,), tuple(low.temps), tuple(body), title)
+    temps = [n for n in low.named if n not in fixed.values()] if readable else low.temps
+    return Subroutine(name, number, tuple(inputs), (output,), tuple(temps), tuple(body), title)
 
 
-def atan2_subroutine(number: int = 1, degree: int = ATAN_DEGREE) -> Subroutine:
-    """ATAN2(Y, X) -> ANGLE [rad], recorded from :func:`analysis.plc.approx.atan2_poly`."""
+def atan2_subroutine(
+    number: int = 1, degree: int = ATAN_DEGREE, readable: bool = False
+) -> Subroutine:
+    """ATAN2(Y, X) -> ANGLE [rad], recorded from :func:`analysis.plc.approx.atan2_poly`
+    (``readable``: every value its own named variable, not the S7-200's reused temporaries
+    that fit its 64 bytes of local memory)."""
     return _subroutine(
         "ATAN2",
         number,
@@ -243,10 +316,11 @@ def atan2_subroutine(number: int = 1, degree: int = ATAN_DEGREE) -> Subroutine:
         lambda m, y, x: atan2_poly(m, y, x, degree),
         "subroutine",
         f"ATAN2(Y, X) [rad], argument reduction + odd polynomial of degree {degree}",
+        readable,
     )
 
 
-def atan2_function(number: int = 1) -> Subroutine:
+def atan2_function(number: int = 1, readable: bool = False) -> Subroutine:
     """ATAN2(Y, X) -> ANGLE [rad] on the native ATAN, recorded from
     :func:`analysis.plc.approx.atan2_from_atan` (trig ``function``: IEC 61131-3 and SCL
     have ATAN, no ATAN2)."""
@@ -255,13 +329,16 @@ def atan2_function(number: int = 1) -> Subroutine:
         number,
         ("Y", "X"),
         "ANGLE",
-        atan2_from_atan,
+        lambda m, y, x: atan2_from_atan(m, y, x, names=readable),
         "native",
         "ATAN2(Y, X) [rad]: ATAN(Y / X) and the quadrant (no ATAN2 in the standard library)",
+        readable,
     )
 
 
-def acos_subroutine(number: int = 2, atan2_name: str = "ATAN2") -> Subroutine:
+def acos_subroutine(
+    number: int = 2, atan2_name: str = "ATAN2", readable: bool = False
+) -> Subroutine:
     """ACOS(COSINE) -> ANGLE [rad] = ATAN2(sqrt((1 - c)(1 + c)), c) (``Ops.acos_via_atan2``)."""
     if atan2_name != "ATAN2":
         raise ValueError("the generated ACOS calls the generated ATAN2")
@@ -273,6 +350,7 @@ def acos_subroutine(number: int = 2, atan2_name: str = "ATAN2") -> Subroutine:
         lambda m, c: m.acos_via_atan2(c),
         "subroutine",
         "ACOS(COSINE) [rad] via ATAN2(sqrt((1-COSINE)(1+COSINE)), COSINE)",
+        readable,
     )
 
 
@@ -293,11 +371,13 @@ class _PlcTrace(TraceOps):
         return super().atan2(y, x)
 
 
-def _lower(g: Graph, fixed: dict[int, str], trig: str, inputs, refusals) -> tuple[Instr, ...]:
+def _lower(g: Graph, fixed: dict[int, str], trig: str, inputs, refusals,
+           readable: bool = False) -> tuple[Instr, ...]:  # fmt: skip
     """The program's structured code: the inputs' finiteness test (Figure 3's VD0/VD4/VD8),
     the graph lowered with its refusals, then ``accept`` (status 0 and the reach flag)."""
     codes = {int(code) for code, _ in refusals}
-    low = Lowering(g, fixed, trig, keep_names=True, refusals={c.index: int(s) for s, c in refusals})
+    low = Lowering(g, fixed, trig, keep_names=True, readable=readable,
+                   refusals={c.index: int(s) for s, c in refusals})  # fmt: skip
     low.emit("network", None, "inputs (Fig. 3) finite? (bit test: no REAL compare sees a NaN)")
     for v in inputs:
         low.emit("notfinite", None, v, int(Status.INVALID))
@@ -335,7 +415,9 @@ def _notes(arm, branch: str, trig: str, labels: dict) -> tuple[str, ...]:
         if j.kind == "prismatic"
     )
     return (
-        f"arm {arm.name}, branch {branch}; {vals}; "
+        f"arm {arm.name}"
+        + (f" ({arm.description.title})" if arm.description.title else "")
+        + f", branch {branch}; {vals}; "
         + "/".join(f"{v:g}" for v in ppr)
         + " pulses/rev"
         + (" (assumed)" if ppr_assumed else "")
@@ -361,12 +443,42 @@ def _notes(arm, branch: str, trig: str, labels: dict) -> tuple[str, ...]:
     )
 
 
+REAL_EXACT = 2**24
+"""The largest range of whole numbers a REAL (IEEE binary32) holds every one of: a count
+beyond it is rounded to an even number, then to a multiple of 4, ..."""
+
+
+def check_counts(arm) -> None:
+    """Refuse an arm whose pulse counts can pass :data:`REAL_EXACT` (the program computes
+    each count as a REAL, eqs. 20-22: beyond 2^24 it is off by whole pulses), naming the
+    joint, its range and its resolution."""
+    for j, ppr in zip(arm.description.joints, arm.params.pulses_per_rev, strict=True):
+        if j.kind == "prismatic":
+            ends = (j.lower, j.upper) if not j.unlimited else (float("inf"),)
+            top = max(abs(e) for e in ends) / j.lead_mm * ppr
+            what = (f"{max(abs(e) for e in ends):g} mm from zero at a {j.lead_mm:g} mm lead and "
+                    f"{ppr:g} pulses/rev: {j.lead_mm / ppr:.3g} mm per pulse")  # fmt: skip
+        else:
+            reach = math.pi if j.unlimited else max(abs(j.lower), abs(j.upper))
+            top = reach / (2 * math.pi) * ppr
+            what = f"{math.degrees(reach):g} deg at {ppr:g} pulses/rev"
+        if top > REAL_EXACT:
+            step = 2.0 ** (math.floor(math.log2(top)) - 23) if math.isfinite(top) else math.inf
+            raise ValueError(
+                f"joint {j.name}: its counts reach {top:,.0f} pulses ({what}), beyond 2^24 = "
+                f"{REAL_EXACT:,}, the largest count a REAL holds exactly: the PLC would count "
+                f"in steps of {step:g} pulses there; give fewer pulses per revolution, a "
+                "coarser lead or a shorter stroke"
+            )
+
+
 def build_program(
     arm,
     branch: str | None = None,
     trig: str = "subroutine",
     *,
     theta1_on_axis: float | None = None,
+    readable: bool = False,
 ) -> Program:
     """The corrected IK program of an arm for one branch, from its closed form.
 
@@ -383,6 +495,11 @@ def build_program(
     theta1_on_axis : float, optional
         Waist angle [rad] for targets on the base axis; default: refuse them (status 3),
         as Python does.
+    readable : bool
+        Every intermediate its own variable, named after the closed form's symbols and the
+        operation (``px_sq``, ``abs_z``, ``count1``; :meth:`Lowering._describe`), for a
+        person to read (the ST family: :attr:`analysis.plc.printer.PlcPrinter.readable`);
+        else the S7 programs' reused temporaries (``tmpK``: less memory, the same values).
 
     The program reads its inputs (Figure 3: VD0/VD4/VD8 = Px, Py, Pz) every scan: NaN or
     inf -> status 6; a refused target (the closed form's refusals, in its order, then the
@@ -392,6 +509,7 @@ def build_program(
     cf = arm.closed_form
     inputs = tuple(arm.inputs)
     branch = branch or arm.branches[0]
+    check_counts(arm)
     if trig not in TRIG:
         raise ValueError(f"trig = {trig!r}: expected one of {', '.join(TRIG)}")
     if theta1_on_axis is not None and not math.isfinite(theta1_on_axis):
@@ -413,16 +531,22 @@ def build_program(
         if not isinstance(v, Node) or v.op != "round":
             raise ValueError(f"{name}: pulse counts must end in the ROUND instruction")
         fixed[v.index] = name
-    code = _lower(g, fixed, trig, inputs, refusals)
+    code = _lower(g, fixed, trig, inputs, refusals, readable)
     io = {*inputs, *outs, "reachable", "status"}
     work = _work_names(flatten(code), io)
     if trig == "subroutine":
-        subs = (atan2_subroutine(1), acos_subroutine(2))
+        subs = (atan2_subroutine(1, readable=readable), acos_subroutine(2, readable=readable))
     elif trig == "function":
-        subs = (atan2_function(1),)
+        subs = (atan2_function(1, readable),)
     else:
         subs = ()
     notes = _notes(arm, branch, trig, labels)
+    # the paper's own arm cites it; another arm on its closed form says the same without
+    cites = bool(arm.description.paper) and arm.closed_form.name == arm.name
+    if not cites:
+        code, notes = _uncited(code), tuple(uncited(n) for n in notes)
+        subs = tuple(dataclasses.replace(s, body=_uncited(s.body), title=uncited(s.title))
+                     for s in subs)  # fmt: skip
     return Program(
         code,
         subs,
@@ -435,4 +559,15 @@ def build_program(
         tuple(outs),
         notes,
         g,
+        cites,
     )
+
+
+def _uncited(code) -> tuple[Instr, ...]:
+    """``code`` with its network titles and comments :func:`~.instr.uncited`."""
+    out = []
+    for i in code:
+        if i.op == "network":
+            i = dataclasses.replace(i, args=(uncited(i.args[0]),))
+        out.append(dataclasses.replace(i, comment=uncited(i.comment)) if i.comment else i)
+    return tuple(out)

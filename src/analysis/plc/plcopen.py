@@ -1,11 +1,18 @@
 """PLCopen XML (TC6 0201) of the ST program: a printer of its own, and the schema check.
 
 :class:`PlcopenXmlPrinter` (``--dialect plcopen-xml``) prints the ST printer's blocks
-(:meth:`~analysis.plc.st.StPrinter.pous`) as PLCopen XML for CODESYS and TwinCAT import: one
-``<pou>`` per function (return type REAL, input variables) and the function block (inputs,
-outputs, static variables), each body the ST statements. :func:`validate_plcopen` parses a
-text into the TC6 0201 schema model of the PyPI package ``plcopen`` (xsdata) and checks every
-required element and attribute; the generator refuses what does not validate.
+(:meth:`~analysis.plc.st.StPrinter.pous`) as PLCopen XML: one ``<pou>`` per function (return
+type REAL, input variables) and the function block (inputs, outputs, static variables), each
+body the ST statements. :func:`validate_plcopen` parses a text into the TC6 0201 schema model
+of the PyPI package ``plcopen`` (xsdata) and checks every required element and attribute; the
+generator refuses what does not validate.
+
+Formatted text (a body, a variable's documentation) is written as
+``<xhtml:p><![CDATA[...]]></xhtml:p>`` (:func:`formatted_text`), the prefix declared on the
+project: OpenPLC Editor and Beremiz read a ``formattedText`` as the text of its first
+``xhtml:p`` element (Beremiz ``xmlclass.GenerateAnyInfos``; a bare CDATA they wrap in one
+when loading), so CODESYS' ``<xhtml xmlns=...>text</xhtml>`` imports there as nothing, while
+CODESYS and TwinCAT take any XHTML content, ``xhtml:p`` included.
 """
 
 from __future__ import annotations
@@ -13,7 +20,7 @@ from __future__ import annotations
 import dataclasses
 from typing import ClassVar
 
-from analysis.escape import xml_attr, xml_text
+from analysis.escape import xml_attr, xml_cdata
 from analysis.plc.instr import Program
 from analysis.plc.st import Pou, StPrinter, block_name
 
@@ -21,6 +28,11 @@ __all__ = ["PlcopenXmlPrinter", "validate_plcopen"]
 
 _TC6 = "http://www.plcopen.org/xml/tc6_0201"
 _XHTML = "http://www.w3.org/1999/xhtml"
+
+
+def formatted_text(text: str) -> str:
+    """PLCopen ``formattedText`` content both tools read (module docstring)."""
+    return f"<xhtml:p><![CDATA[{xml_cdata(text)}]]></xhtml:p>"
 
 
 class PlcopenXmlPrinter(StPrinter):
@@ -39,9 +51,16 @@ class PlcopenXmlPrinter(StPrinter):
     def status_note(self, codes) -> str:
         return "status code (see the map)"
 
+    def text(self, text: str) -> str:
+        """A comment's text as in ST, and no ``]]>`` (it ends a CDATA section)."""
+        out = super().text(text)
+        while "]]>" in out:
+            out = out.replace("]]>", "]] >")
+        return out
+
     def variable(self, name: str, typ: str, doc: str = "") -> str:
         d = (
-            f'<documentation><xhtml xmlns="{_XHTML}">{xml_text(doc)}</xhtml></documentation>'
+            f"<documentation>{formatted_text(doc)}</documentation>"
             if doc
             else ""
         )
@@ -57,18 +76,22 @@ class PlcopenXmlPrinter(StPrinter):
 
     def print_pou(self, pou: Pou) -> str:
         body = "\n".join(pou.body).strip("\n") + "\n"
+        doc = getattr(self, "about", {}).get(pou.name)
+        doc = f"<documentation>{formatted_text(doc)}</documentation>" if doc else ""
         return (
             f'<pou name="{xml_attr(pou.name)}" pouType="{pou.kind}">{self.interface(pou)}'
-            f'<body><ST><xhtml xmlns="{_XHTML}">{xml_text(body)}</xhtml></ST></body>'
+            f"<body><ST>{formatted_text(body)}</ST></body>{doc}"
             "</pou>\n"
         )
 
     def doprint_program(self, program: Program, *, units, default_branch=None) -> str:
         fb = block_name(program, default_branch)
+        # the header the ST text opens with: the block's documentation here
+        self.about = {fb: "\n".join(self.text(n) for n in (program.title, *program.notes))}
         pous = "".join(self.print_pou(p) for p in self.pous(program, fb, units))
         return (
             '<?xml version="1.0" encoding="utf-8"?>\n'
-            f'<project xmlns="{_TC6}">\n'
+            f'<project xmlns="{_TC6}" xmlns:xhtml="{_XHTML}">\n'
             '<fileHeader companyName="analysis" productName="analysis.plc" productVersion="0.1.0" '
             'creationDateTime="2016-05-01T00:00:00"/>\n'
             f'<contentHeader name="{xml_attr(fb)}"><coordinateInfo>'

@@ -97,6 +97,11 @@ class PlcPrinter(Printer):
     addresses: ClassVar[bool] = False
     rounding: ClassVar[str] = "half-away"
     engine: ClassVar[str | None] = None
+    readable: ClassVar[bool] = False
+    """Its programs name every intermediate for a person to read (``build_program(...,
+    readable=True)``), rather than reusing temporaries."""
+    max_program_bytes: ClassVar[int] = 1024 * 1024
+    """The largest program text its engine is given (``stl-run``, enforced while reading)."""
     trig_reason: ClassVar[str] = ""
     """Why the dialect cannot print other trigonometry (named when ``--trig`` asks for it)."""
 

@@ -44,10 +44,15 @@ _M_OPERAND = re.compile(r"\bM([BWD]?)\s*(\d+)")
 
 
 def m_bytes_used(source: str) -> int:
-    """One past the highest M byte an AWL source addresses."""
+    """One past the highest M byte the code of an AWL source addresses: its statements'
+    operands, never a comment or a title (text the CPU does not run)."""
     top = 0
-    for m in _M_OPERAND.finditer(source):
-        top = max(top, int(m.group(2)) + {"": 1, "B": 1, "W": 2, "D": 4}[m.group(1)])
+    for line in source.splitlines():
+        code = line.split("//", 1)[0]
+        if not code.strip() or code.lstrip().upper().startswith("TITLE"):
+            continue
+        for m in _M_OPERAND.finditer(code):
+            top = max(top, int(m.group(2)) + {"": 1, "B": 1, "W": 2, "D": 4}[m.group(1)])
     return top
 
 
@@ -56,6 +61,9 @@ _WIDTH_LETTER = {"BYTE": "B", "INT": "W", "WORD": "W", "DINT": "D", "DWORD": "D"
 
 CYCLE_TIME_LIMIT_US = 60_000_000
 """awlsim's cycle watchdog [us] for the runners: a minute, not its default second."""
+MAX_M_BYTES = 65_536
+"""The largest M area a runner gives awlsim (S7 byte addresses end at 65535; a translated
+S7-200 program of the largest CPU keeps about 11 KiB there)."""
 MEMO_ENV = "ANALYSIS_AWLSIM_MEMO"
 """Environment variable: a directory where :func:`sweep` keeps its results (unset: none)."""
 
@@ -112,11 +120,36 @@ class AwlRunner:
     first_scan : bool
         Run one OB1 cycle right after loading (the first scan), so that the first
         :meth:`solve` target is not overwritten by first-scan initialisation.
+    m_bytes : int, optional
+        The M area [bytes], the target CPU's (``cpu_name`` names it in the refusal of a
+        program that addresses more); default: what the program's code addresses (at least
+        awlsim's 2048 bytes, at most :data:`MAX_M_BYTES`). Comments never size it.
+    cycle_limit_us : int
+        awlsim's scan watchdog [us] (:data:`CYCLE_TIME_LIMIT_US`).
     """
 
     def __init__(
-        self, source: str, mmap: MemoryMap, name: str = "program", *, first_scan: bool = True
+        self,
+        source: str,
+        mmap: MemoryMap,
+        name: str = "program",
+        *,
+        first_scan: bool = True,
+        m_bytes: int | None = None,
+        cpu_name: str = "the runner",
+        cycle_limit_us: int = CYCLE_TIME_LIMIT_US,
     ) -> None:
+        # M area: awlsim's 2048 bytes, or what the program's code addresses (a translated
+        # S7-200 program keeps all of its V memory in M, its other areas above), at most
+        # MAX_M_BYTES; or the target CPU's (m_bytes), which no operand may pass
+        need = m_bytes_used(source)
+        size = m_bytes if m_bytes is not None else max(2048, need)
+        if need > min(size, MAX_M_BYTES):
+            size = min(size, MAX_M_BYTES)
+            raise ValueError(
+                f"the program addresses M byte {need - 1:,}, beyond {cpu_name}'s M memory "
+                f"(MB0-MB{size - 1})"
+            )
         AwlParser, S7CPUConfig, AwlSource, AwlSim = _awlsim()
         self.mmap = mmap
         self.sim = AwlSim()
@@ -125,10 +158,8 @@ class AwlRunner:
         # awlsim's watchdog (1 s per cycle) measures Python's wall time: on a loaded test
         # machine a cycle of the GR-1 program can take longer, which says nothing about the
         # program (scan times are measured in benchmarks/plc_scan.py)
-        cpu.getConf().setCycleTimeLimitUs(CYCLE_TIME_LIMIT_US)
-        # M area: awlsim's 2048 bytes, or what the program addresses (a translated S7-200
-        # program keeps all of its V memory in M, its other areas above)
-        cpu.getSpecs().setNrFlags(max(2048, m_bytes_used(source)))
+        cpu.getConf().setCycleTimeLimitUs(cycle_limit_us)
+        cpu.getSpecs().setNrFlags(size)
         m = _STOP.search(source)
         self._stop = (int(m.group(1)), int(m.group(2))) if m else None
         parser = AwlParser()

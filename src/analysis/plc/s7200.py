@@ -24,6 +24,7 @@ from analysis.plc.instr import CMP, Program, Subroutine, flatten
 from analysis.plc.mapdoc import s7_document, startup_values
 from analysis.plc.memmap import MemoryMap, default_map
 from analysis.plc.printer import Generated, Options, PlcPrinter, fmt_real
+from analysis.plc.stl_eval.syntax import MAX_PROGRAM_CHARS
 
 __all__ = ["NAN_MASK", "S7200Printer", "allocate"]
 
@@ -47,6 +48,7 @@ class S7200Printer(PlcPrinter):
     trigs = ("subroutine",)
     addresses = True
     engine = "the project's S7-200 evaluator"
+    max_program_bytes = MAX_PROGRAM_CHARS  # the evaluator's own limit
     target = "the S7-200"
     newline = "\r\n"
     exp_char = "E"
@@ -165,7 +167,11 @@ class S7200Printer(PlcPrinter):
         self.block(None)
         self.lines += ["ORGANIZATION_BLOCK MAIN:OB1", *self.header(program), "BEGIN"]
         if self.startup_target is not None:
-            self.network("data acquisition (Fig. 3): example target on the first scan, as REALs")
+            self.network(
+                program.cite(
+                    "data acquisition (Fig. 3): example target on the first scan, as REALs"
+                )
+            )
             self.logic("LD", "SM0.1")
             self.power = True
             for name, v in zip(program.inputs, self.startup_target, strict=True):

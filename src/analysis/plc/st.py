@@ -75,6 +75,7 @@ __all__ = [
 REAL_MAX = "3.40282347E+38"
 """The largest finite REAL (binary32), printed."""
 
+
 def block_name(program: Program, default_branch: str | None = None) -> str:
     """``IK_<ARM>`` for the arm's default branch, ``IK_<ARM>_<BRANCH>`` for another."""
     name = f"IK_{program.arm}"
@@ -114,6 +115,7 @@ class StPrinter(PlcPrinter):
     (:meth:`pous`, :meth:`print_pou`)."""
 
     name = "st"
+    readable = True  # a PLC engineer reviews and maintains the ST, SCL and XML text
     engine = "pyplcopen's ST engine (cycle by cycle, simulated axes: analysis.plc.machine.offline)"
     title = "IEC 61131-3 ST (CODESYS, TwinCAT, OpenPLC)"
     trigs = ("function", "native", "subroutine")
@@ -334,7 +336,7 @@ class StPrinter(PlcPrinter):
         )
         outs = self.decls(["Done", "Busy", "Error"], "BOOL")
         outs += self.decls(["ErrorID"], "DINT", "the status of a refused target")
-        outs += self.decls(program.outputs, "DINT", self.count_note)
+        outs += self.decls(program.outputs, "DINT", program.cite(self.count_note))
         outs += self.decls(["reachable"], "BOOL", self.reachable_note)
         outs += self.decls(["status"], "DINT", self.status_note([0, *codes]))
         static = self.decls(["ExecuteSeen"], "BOOL") + self.decls(program.work, "REAL")

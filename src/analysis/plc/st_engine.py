@@ -218,7 +218,10 @@ the one place the unit is converted."""
 @dataclass(frozen=True)
 class SimAxis:
     """A simulated axis bound to AXIS_REF variable ``name``: limits per second in joint units
-    (deg or mm), software limits (None: none), and where it stands at power-up."""
+    (deg or mm), software limits (None: none), where it physically stands at power-up
+    (``start``), what its encoder reads then (``coord``, None: ``start``) and the physical
+    position of its reference switch (``switch``, None: none; the axis' digital input 0, TRUE
+    at or beyond it: ``tools/st-engine/st_machine.cpp``)."""
 
     name: str
     max_velocity: float
@@ -227,14 +230,17 @@ class SimAxis:
     lower: float | None = None
     upper: float | None = None
     start: float = 0.0
+    coord: float | None = None
+    switch: float | None = None
 
     def spec(self) -> str:
         def f(x):
             return "nan" if x is None else repr(float(x))
 
-        return ",".join([self.name, *(f(x) for x in (self.max_velocity, self.max_acceleration,
-                                                      self.max_jerk, self.lower, self.upper,
-                                                      self.start))])  # fmt: skip
+        coord = self.start if self.coord is None else self.coord
+        values = (self.max_velocity, self.max_acceleration, self.max_jerk, self.lower,
+                  self.upper, self.start, coord, self.switch)  # fmt: skip
+        return ",".join([self.name, *(f(x) for x in values)])
 
 
 POWER_OK = "PowerOK"
@@ -254,7 +260,9 @@ class EngineFault(ValueError):
 @dataclass(frozen=True)
 class MachineRun:
     """One row per cycle: ``t`` (s), ``q`` and ``v`` (cycles, axes) in joint units and per
-    second, ``values`` (cycles, outputs), ``faults`` (cycles,), the time spent in scans."""
+    second (the physical position), ``values`` (cycles, outputs), ``faults`` (cycles,), the
+    time spent in scans, ``pos`` (cycles, axes) the encoders' positions (what the PLC reads:
+    ``q`` until an axis is re-referenced by homing)."""
 
     t: npt.NDArray[np.float64]
     q: npt.NDArray[np.float64]
@@ -264,6 +272,7 @@ class MachineRun:
     faults: npt.NDArray[np.int64]
     scan_ns: int
     cycle_s: float
+    pos: npt.NDArray[np.float64] | None = None
 
     def __getitem__(self, name: str) -> npt.NDArray[np.float64]:
         return self.values[:, self.names.index(name)]
@@ -371,7 +380,7 @@ def run_machine(
     if r.returncode not in (0, 4):
         raise ValueError(_diagnostic(err))
     n, k = len(axes), len(outputs)
-    out = np.frombuffer(r.stdout, dtype="<f8").reshape(-1, 2 * n + k + 1)
+    out = np.frombuffer(r.stdout, dtype="<f8").reshape(-1, 3 * n + k + 1)
     ns = next((int(w[1]) for w in (ln.split() for ln in err.splitlines())
                if w[:1] == ["scan_ns"]), 0)  # fmt: skip
     run = MachineRun(
@@ -379,10 +388,11 @@ def run_machine(
         q=out[:, :n].copy(),
         v=out[:, n : 2 * n].copy(),
         names=tuple(outputs),
-        values=out[:, 2 * n : 2 * n + k].copy(),
+        values=out[:, 3 * n : 3 * n + k].copy(),
         faults=out[:, -1].astype(np.int64),
         scan_ns=ns,
         cycle_s=cycle_ns * 1e-9,
+        pos=out[:, 2 * n : 3 * n].copy(),
     )
     if r.returncode == 4:
         raise EngineFault(f"engine {_diagnostic(err)}", run)

@@ -52,6 +52,23 @@ BREAKS = {
     "dwell": ("handling", "(Phase = 50) AND GripTimer.Q", "(Phase = 50)", "GripperClosed"),
     "refusal": ("unreachable", "IF Ik.Error THEN", "IF FALSE THEN", "Status"),
     "homed": ("power_home", "ELSIF NOT Homed THEN", "ELSIF FALSE THEN", "moved"),
+    # homing: one axis not homed (its encoder's stale count kept) yet Homed reported
+    "home_skipped": (
+        "move",
+        ("Homing2(Axis := Axis2, Execute := Phase = 10,", "Homing1.Done AND Homing2.Done"),
+        ("Homing2(Axis := Axis2, Execute := FALSE,", "Homing1.Done"),
+        "the PLC reads",
+    ),
+    # a reference switch taken at the approach speed only (no creep from the far side):
+    # the edge is seen to a cycle's travel, 40 pulses of the picker's screw
+    "creep": ("power_home", "AND Creep2.Done", "AND Homing2.Done", "pulses off its home"),
+    # the approach at 1.25 times the velocity limit
+    "home_speed": (
+        "power_home",
+        "Velocity := LREAL#7.499999999999999 * Tu",
+        "Velocity := LREAL#37.5 * Tu",
+        "velocity",
+    ),
     # the stop circuit watched only while the machine moves, and Reset clearing it whatever
     # the circuit says: after Reset, a Start goes with the wire still broken
     "wire_break": (
@@ -63,10 +80,15 @@ BREAKS = {
 }
 
 
+ARM = {"creep": "picker", "home_speed": "gr1"}
+"""The arm a break runs on (default the grabber; a reference switch needs another)."""
+
+
 @pytest.mark.parametrize("prop", sorted(BREAKS))
 def test_a_broken_program_fails_its_check(machine_engine, prop):
     name, old, new, word = BREAKS[prop]
-    _, spec, source, program, _ = machine("grabber")
+    arm = ARM.get(prop, "grabber")
+    _, spec, source, program, _ = machine(arm)
     decel = lreal(spec.axes[0].max_acceleration)
     old, new = (tuple(x.replace("{a}", decel) for x in v) if not isinstance(v, str)
                 else v.replace("{a}", decel) for v in (old, new))  # fmt: skip
@@ -74,7 +96,7 @@ def test_a_broken_program_fails_its_check(machine_engine, prop):
     for o, n in zip(*((x,) if isinstance(x, str) else x for x in (old, new)), strict=True):
         assert o in source, f"the program no longer holds {o!r}"
         broken = broken.replace(o, n)
-    scenario = scenario_set("grabber")[name]
+    scenario = scenario_set(arm)[name]
     failures = check(
         scenario,
         run_scenario(broken, program, spec, scenario.rows),

@@ -18,18 +18,22 @@ from tests.plc.machine.conftest import ARMS, machine, scenario_set, trace
 
 from analysis.plc.machine.scenarios import SCENARIOS, check, motion_segments
 
+FAST = ("grabber", "gr1")
+"""The arms whose ST scenarios run in ``make test-fast`` (a set position, reference switches);
+the others and the XML in ``make test``."""
 
-def _cases(dialect, marks=()):
+
+def _cases(dialect):
+    """ST on the FAST arms in ``make test-fast``; the rest (and the XML) in ``make test``."""
     out = []
     for arm in ARMS:
+        marks = () if dialect == "st" and arm in FAST else pytest.mark.slow
         for name in SCENARIOS:
             out.append(pytest.param(arm, name, dialect, id=f"{arm}-{name}-{dialect}", marks=marks))
     return out
 
 
-@pytest.mark.parametrize(
-    ("arm", "name", "dialect"), _cases("st") + _cases("plcopen-xml", pytest.mark.slow)
-)
+@pytest.mark.parametrize(("arm", "name", "dialect"), _cases("st") + _cases("plcopen-xml"))
 def test_scenario(machine_engine, arm, name, dialect):
     scenarios = scenario_set(arm)
     if name not in scenarios:
@@ -59,3 +63,20 @@ def test_wrap_takes_the_short_way(machine_engine):
     seg = motion_segments(tr)[-1]
     moved = tr.q[seg[1], 0] - tr.q[seg[0], 0]
     assert abs(moved) == pytest.approx(4 * spec.axes[0].per_pulse, abs=1e-9)
+
+
+@pytest.mark.parametrize(
+    "arm", [a if a in FAST else pytest.param(a, marks=pytest.mark.slow) for a in ARMS]
+)
+def test_homing_is_real(machine_engine, arm):
+    """Every axis powers up off home as the PLC sees it (a stale encoder count; a reference
+    switch axis also physically off its home), nothing moves before Home, and homing ends on
+    the home position (check_homed: physically within one pulse, read exactly); a switch
+    axis' homing moved it there at most at its velocity limit (check_limits)."""
+    spec = machine(arm)[1]
+    tr = trace(arm, "st", "power_home")
+    for k, a in enumerate(spec.axes):
+        assert abs(tr.pos[0, k] - a.home_position) > 1.0, a.joint
+        if a.home_mode == "switch":
+            assert abs(tr.q[0, k] - a.home_position) > 1.0, a.joint
+            assert np.ptp(tr.q[:, k]) > 1.0, f"{a.joint} did not move to its switch"

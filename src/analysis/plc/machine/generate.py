@@ -12,15 +12,15 @@ from __future__ import annotations
 import json
 import re
 
-from analysis.escape import xml_attr, xml_text
+from analysis.escape import xml_attr
 from analysis.plc.machine.program import STEPS, MachinePrinter, machine_name
 from analysis.plc.machine.program_scl import SclMachinePrinter
 from analysis.plc.machine.spec import MACHINE_INPUTS, MACHINE_OUTPUTS, machine_spec
 from analysis.plc.machine.tags import signals
+from analysis.plc.plcopen import formatted_text
 
 __all__ = ["machine_map", "program_pou_xml", "with_machine"]
 
-_XHTML = "http://www.w3.org/1999/xhtml"
 _ELEMENTARY = {"BOOL", "INT", "DINT", "REAL", "LREAL", "TIME"}
 
 
@@ -114,8 +114,7 @@ def program_pou_xml(st_text: str, program: str) -> str:
     body = "\n".join(ln[4:] if ln.startswith("    ") else ln for ln in body.split("\n"))
     return (
         f'<pou name="{xml_attr(program)}" pouType="program"><interface><localVars>{decls}'
-        f'</localVars></interface><body><ST><xhtml xmlns="{xml_attr(_XHTML)}">{xml_text(body)}'
-        "</xhtml></ST></body></pou>\n"
+        f"</localVars></interface><body><ST>{formatted_text(body)}</ST></body></pou>\n"
     )
 
 

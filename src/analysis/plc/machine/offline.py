@@ -5,8 +5,9 @@ file) on the ST engine, offline (issue 29 item 3, a contract).
   that time, a BOOL as TRUE/FALSE, a number by :func:`analysis.validate.number_problem`'s
   rule, a REAL also ``nan``, ``inf``, ``-inf`` on purpose): the program runs cycle by cycle
   (``cycle_s``) until the last row's time plus ``settle_s``, with one simulated axis per
-  joint (MAP.json's ``machine.axes``: limits, software limits, home position) or, without a
-  map, per AXIS_REF variable of the program; the trace has one row per cycle: ``t_s``,
+  joint (MAP.json's ``machine.axes``: limits, software limits; standing on its home
+  position, a ``switch`` axis' reference switch there) or, without a map, per AXIS_REF
+  variable of the program (at 0, its switch there); the trace has one row per cycle: ``t_s``,
   ``q1..qN`` (deg or mm), ``v1..vN`` (per second), then every output of the program by name
   (MAP.json's ``machine.outputs``; without a map, every scalar variable the PROGRAM declares
   itself, not those of the block instances inside it, that the scenario does not write).
@@ -213,12 +214,15 @@ def _axes(variables: dict[str, str], mapdoc: dict | None):
                     float(a["max_jerk"]),
                     lim[0],
                     lim[1],
-                    float(a["home"]["position"]),
+                    home := float(a["home"]["position"]),
+                    switch=home if a["home"].get("mode") == "switch" else None,
                 )
             )
         return out
-    # no map: every AXIS_REF, no software limits, at 0; the limits only bound homing blocks
-    return [SimAxis(n, 1e6, 1e9, 1e12) for n, t in variables.items() if t == "AXIS_REF"]
+    # no map: every AXIS_REF, no software limits, at 0, a reference switch there; the limits
+    # only bound homing blocks
+    return [SimAxis(n, 1e6, 1e9, 1e12, switch=0.0) for n, t in variables.items()
+            if t == "AXIS_REF"]  # fmt: skip
 
 
 def _outputs(source, program, variables, written, mapdoc) -> list[str]:

@@ -19,8 +19,18 @@ One ``PROGRAM MACHINE_<ARM>`` (ST) or ``FUNCTION_BLOCK "MACHINE_<ARM>"`` (SCL). 
    move's phases are lengthened to whole task cycles (:meth:`MachinePrinter.align`), so a
    planner that works in cycles ends every joint on the same one (a new Start during a move
    halts every axis with MC_Halt first, then plans from where they stopped);
-4. Home: MC_Home per axis (Position = the description's home position; on TIA, Mode 0 for a
-   set position, 3 for a reference switch); Start before Homed is refused (status 101);
+4. Home, per axis as the description says (:meth:`MachinePrinter.home_call`): ``set``: the
+   present position is declared the home position (PLCopen Part 5 MC_HomeDirect, no
+   motion: the operator has put the axis on its mark); ``switch``: the reference switch is
+   searched (Part 5 MC_StepAbsoluteSwitch, direction from the switch's level, the edge
+   latched) at a quarter of the joint's velocity limit, then searched again from the far
+   side of the edge at a creep speed (a sixteenth of the limit, and at most half a pulse
+   per task cycle: the edge is seen to half a pulse), the position set to the home position
+   there, and
+   MC_FinishHoming ends it (soft limits watched again); each search gives up after the
+   joint's range. On TIA, MC_Home Mode 0 (set) or 3 (active homing: the technology
+   object's approach and referencing velocities). Start before Homed is refused (status
+   101);
 5. the gripper output (Gripper) follows Grip at standstill only, then a dwell (TON) before
    Done; it holds through a stop.
 
@@ -38,13 +48,14 @@ from __future__ import annotations
 
 from analysis.escape import iec_identifier, plc_comment
 from analysis.plc.emit import fmt_real
+from analysis.plc.machine.homing import HOMING_STEP, HomingMixin, lreal
 from analysis.plc.machine.spec import MACHINE_STATUS, MachineSpec
 
 __all__ = ["STEPS", "MachinePrinter", "lreal", "machine_name"]
 
 STEPS = {
     "IDLE": 0,
-    "HOMING": 10,
+    "HOMING": HOMING_STEP,
     "PLAN": 20,
     "MOVING": 21,
     "HALTING": 30,
@@ -67,16 +78,7 @@ def cycles_up(x: str, cycle: str) -> str:
     return f"DINT_TO_LREAL({n})"
 
 
-def lreal(v: float) -> str:
-    """An LREAL literal (17 significant digits: the binary64 value exactly)."""
-    s = repr(float(v))
-    if "e" in s or "E" in s:
-        m, e = s.lower().split("e")
-        return f"LREAL#{m if '.' in m else m + '.0'}E{int(e)}"
-    return f"LREAL#{s}"
-
-
-class MachinePrinter:
+class MachinePrinter(HomingMixin):
     """IEC 61131-3 ST (module docstring). Subclassed for SCL."""
 
     dialect = "st"
@@ -185,9 +187,9 @@ class MachinePrinter:
                 )
             )
             out.append(f"{t}{a.name} : {self.axis_type()};")
+            out += [f"{t}{fb}{k} : {self.fb_type(kind)};" for fb, kind in self.home_blocks(a)]
             for fb, kind in (
                 ("Power", "MC_Power"),
-                ("Homing", "MC_Home"),
                 ("Move", "MC_MoveAbsolute"),
                 ("Halt", "MC_Halt"),
                 ("Stop", self.stop_block()),
@@ -224,7 +226,7 @@ class MachinePrinter:
             out += [f"{v('Power' + k)}(Axis := {v(a.name)}, Enable := {v('Enable')});"]
             out += self.read_axis(k, a.name)
             powered.append(f"{v('Power' + k)}.Status")
-            faults.append(self.axis_fault(k))
+            faults.append(self.axis_fault(k, a))
         out.append(f"{v('Powered')} := {' AND '.join(powered)};")
         out.append(f"{v('Fault')} := {' OR '.join(faults)};")
         return out
@@ -237,10 +239,15 @@ class MachinePrinter:
             f"{v('Pos' + k)} := {v('ReadPos' + k)}.Position;",
         ]
 
-    def axis_fault(self, k: str) -> str:
+    def fault_blocks(self, a) -> list[str]:
+        """The blocks whose Error is the axis' fault (not the stop's own: stopping an axis
+        already in error fails by design)."""
+        homing = [fb for fb, kind in self.home_blocks(a) if not kind.endswith("_REF")]
+        return ["Power", *homing, "Move", "Halt"]
+
+    def axis_fault(self, k: str, a) -> str:
         v = self.v
-        # not the stop's own error: stopping an axis already in error fails by design
-        errs = " OR ".join(f"{v(fb + k)}.Error" for fb in ("Power", "Homing", "Move", "Halt"))
+        errs = " OR ".join(f"{v(fb + k)}.Error" for fb in self.fault_blocks(a))
         return f"({v('ReadErr' + k)}.AxisErrorID <> 0) OR {errs}"
 
     def latches(self) -> list[str]:
@@ -363,7 +370,7 @@ class MachinePrinter:
 
     def sequence(self) -> list[str]:
         v, t, st = self.v, self.indent, STEPS
-        homed = " AND ".join(f"{v('Homing' + a.name[4:])}.Done" for a in self.spec.axes)
+        homed = " AND ".join(self.homed(a) for a in self.spec.axes)
         moved = " AND ".join(f"{v('Move' + a.name[4:])}.Done" for a in self.spec.axes)
         halted = " AND ".join(f"{v('Halt' + a.name[4:])}.Done" for a in self.spec.axes)
         return [
@@ -521,13 +528,6 @@ class MachinePrinter:
             f"{v('GripTimer')}(IN := {v('Phase')} = {st['GRIPPING']}, PT := {v('GripDwell')});"
         )
         return out
-
-    def home_call(self, k: str, ax: str, a) -> list[str]:
-        v = self.v
-        return [
-            f"{v('Homing' + k)}(Axis := {ax}, Execute := {v('Phase')} = {STEPS['HOMING']}, "
-            f"Position := {lreal(a.home_position)});"
-        ]
 
     def stop_call(self, k: str, ax: str, a) -> list[str]:
         v, tu = self.v, self.v("Tu")

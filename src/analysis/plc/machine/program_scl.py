@@ -38,8 +38,14 @@ class SclMachinePrinter(MachinePrinter):
     def read_axis(self, k: str, axis: str) -> list[str]:
         return [f"#Pos{k} := {self.v(axis)}.ActualPosition;"]
 
-    def axis_fault(self, k: str) -> str:
-        errs = " OR ".join(f"#{fb}{k}.Error" for fb in ("Power", "Homing", "Move", "Halt"))
+    def home_blocks(self, a) -> list[tuple[str, str]]:
+        return [("Homing", "MC_Home")]
+
+    def homed(self, a) -> str:
+        return f"#Homing{a.name[4:]}.Done"
+
+    def axis_fault(self, k: str, a) -> str:
+        errs = " OR ".join(f"#{fb}{k}.Error" for fb in self.fault_blocks(a))
         return f"{self.v('Axis' + k)}.StatusWord.%X1 OR {errs}"
 
     def latches(self) -> list[str]:

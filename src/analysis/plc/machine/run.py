@@ -1,13 +1,14 @@
 """Run a machine program on the ST engine (:func:`analysis.plc.st_engine.run_machine`): a
 scenario's rows as writes between scans, one simulated axis per joint from the arm's
-:class:`~.spec.MachineSpec` (its limits, its software limits, standing at its home position
-at power-up), the trace as a :class:`~.scenarios.Trace`.
+:class:`~.spec.MachineSpec` (its limits, its software limits; off home at power-up, its
+reference switch: :mod:`.plant`), the trace as a :class:`~.scenarios.Trace`.
 """
 
 from __future__ import annotations
 
 import math
 
+from analysis.plc.machine.plant import power_up
 from analysis.plc.machine.scenarios import Trace
 from analysis.plc.machine.spec import MACHINE_OUTPUTS, MachineSpec
 
@@ -19,8 +20,8 @@ TRACED = (*MACHINE_OUTPUTS, "AxisErrorID")
 
 def sim_axes(spec: MachineSpec):
     """One :class:`~analysis.plc.st_engine.SimAxis` per joint: its limits, its software
-    limits (none for an unlimited joint) and its home position, where it stands at power-up
-    (the engine's MC_Home moves to Position; there is no reference switch to search)."""
+    limits (none for an unlimited joint), where it stands at power-up, what its encoder reads
+    then and its reference switch (:func:`.plant.power_up`)."""
     from analysis.plc.st_engine import SimAxis
 
     return [
@@ -31,9 +32,11 @@ def sim_axes(spec: MachineSpec):
             a.max_jerk,
             a.lower,
             a.upper,
-            a.home_position,
+            start,
+            coord,
+            switch,
         )
-        for a in spec.axes
+        for a, (start, coord, switch) in zip(spec.axes, power_up(spec), strict=True)
     ]
 
 

@@ -33,7 +33,7 @@ IK of that target gives the expected pulses), seeded, inside the refusal bands' 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -41,6 +41,7 @@ from analysis.kinematics.status import Status
 from analysis.plc.machine.checks import (
     Trace,
     check_final,
+    check_homed,
     check_limits,
     check_outputs,
     check_short_way,
@@ -49,6 +50,7 @@ from analysis.plc.machine.checks import (
     check_sync,
     motion_segments,
 )
+from analysis.plc.machine.plant import homing_bound
 from analysis.plc.machine.profile import sync_time
 from analysis.plc.machine.spec import MachineSpec, machine_spec
 
@@ -59,6 +61,7 @@ __all__ = [
     "Trace",
     "check",
     "check_final",
+    "check_homed",
     "check_limits",
     "check_outputs",
     "check_short_way",
@@ -86,8 +89,11 @@ SCENARIOS = (
 )
 """The scenarios every arm runs (``joint_limit`` only where a joint has limits)."""
 
-HOME_T, START_T = 0.1, 0.5
-"""Home's and the first Start's rising edge [s]."""
+HOME_T = 0.1
+"""Home's rising edge [s]; the first Start follows once every axis is homed
+(:func:`.plant.homing_bound`, 0.1 s after it)."""
+CYCLE_S = 0.004
+"""The task cycle the scenarios are timed for (``stl-run``'s default)."""
 PULSE_S = 0.1
 """How long a push button stays pressed [s]."""
 
@@ -109,6 +115,9 @@ class Expect:
     faulted: tuple[int, float] | None = None
     """(axis index, time): that axis' drive fails then (it stops dead: its limits and braking
     are not the program's)."""
+    homed_t: float | None = None
+    """Every axis is homed by then (:func:`check_homed`); until then only the velocity limit
+    is held (the engine starts a homing search at its velocity at once: :mod:`.checks`)."""
 
 
 @dataclass(frozen=True)
@@ -215,58 +224,72 @@ def scenarios(arm, seed: int = 29) -> dict[str, Scenario]:
     ja, jb = expected_joints(arm, spec, ta), expected_joints(arm, spec, tb)
     t_move = _move_time(spec, home, ja)
     boot = [(0.0, "Enable", 1.0), (0.0, "StopOK", 1.0), *_pulse(HOME_T, "Home")]
-    done = START_T + t_move + 0.5
-    mid = START_T + 0.4 * t_move
+    t_home = homing_bound(spec, CYCLE_S)
+    t0 = HOME_T + t_home + 0.1
+    done = t0 + t_move + 0.5
+    mid = t0 + 0.4 * t_move
     out: dict[str, Scenario] = {}
     out["power_home"] = Scenario(
         "power_home",
         "power up, Start before Home refused, home",
-        (*boot[:2], *_start(0.3, ta, spec), *_pulse(0.6, "Home"), (1.2, "Start", 0.0)),
+        (
+            *boot[:2],
+            *_start(0.3, ta, spec),
+            *_pulse(0.6, "Home"),
+            (0.6 + t_home + 0.2, "Start", 0.0),
+        ),
         Expect(
-            still=((0.0, 1.2),),
+            still=((0.0, 0.6),),
             outputs=(
                 (0.35, "Status", 101),
                 (0.35, "Homed", 0),
-                (1.0, "Homed", 1),
-                (1.0, "Busy", 0),
+                (0.6 + t_home, "Homed", 1),
+                (0.6 + t_home, "Busy", 0),
             ),
+            homed_t=0.6 + t_home,
         ),
     )
     out["move"] = Scenario(
         "move",
         "home, move to a target",
-        (*boot, *_start(START_T, ta, spec), (done, "Start", 0.0)),
+        (*boot, *_start(t0, ta, spec), (done, "Start", 0.0)),
         Expect(final=ja, outputs=((done, "Done", 1), (done, "Status", 0))),
     )
     t2 = _move_time(spec, ja, jb) + mid + 0.5 + t_move
     out["retarget"] = Scenario(
         "retarget",
         "a new target mid-move (re-planned from where the axes stop)",
-        (*boot, *_start(START_T, ta, spec), *_start(mid, tb, spec), (t2, "Start", 0.0)),
+        (*boot, *_start(t0, ta, spec), *_start(mid, tb, spec), (t2, "Start", 0.0)),
         Expect(final=jb, sync="last"),
     )
     far = tuple(x * 10.0 if k < 3 else x for k, x in enumerate(ta))
     out["unreachable"] = _refused(
-        "unreachable", "a target out of reach", boot, far, spec, Status.OUT_OF_REACH
+        "unreachable", "a target out of reach", boot, t0, far, spec, Status.OUT_OF_REACH
     )
     nan = (math.nan, *ta[1:])
-    out["nan"] = _refused("nan", "a NaN target", boot, nan, spec, Status.INVALID)
-    out.update(_wrap(arm, spec, boot, qw1, qw2))
+    out["nan"] = _refused("nan", "a NaN target", boot, t0, nan, spec, Status.INVALID)
+    out.update(_wrap(arm, spec, boot, t0, qw1, qw2))
     lim = _limit_target(arm, spec, rng)
     if lim is not None:
         out["joint_limit"] = _refused(
-            "joint_limit", "a target beyond a joint limit", boot, lim, spec, Status.JOINT_LIMITS
+            "joint_limit", "a target beyond a joint limit", boot, t0, lim, spec, Status.JOINT_LIMITS
         )
-    out.update(_stops(spec, boot, ta, tb, ja, t_move, mid))
-    out["handling"] = _handling(spec, boot, ta, tb, ja, jb)
-    return out
+    out.update(_stops(spec, boot, t0, ta, tb, ja, t_move, mid))
+    out["handling"] = _handling(spec, boot, t0, ta, tb, ja, jb)
+    homed = t0 - 0.05  # every scenario that boots: homed before its first Start
+    return {
+        k: s
+        if s.expect.homed_t is not None
+        else replace(s, expect=replace(s.expect, homed_t=homed))
+        for k, s in out.items()
+    }
 
 
-def _stops(spec, boot, ta, tb, ja, t_move: float, mid: float) -> dict[str, Scenario]:
+def _stops(spec, boot, t0, ta, tb, ja, t_move: float, mid: float) -> dict[str, Scenario]:
     """The stop family: the stop circuit opened mid-move (stop, reset_resume, wire_break)
     and a drive's fault (axis_error)."""
     out: dict[str, Scenario] = {}
-    stop_rows = (*boot, *_start(START_T, ta, spec), (mid, "StopOK", 0.0))
+    stop_rows = (*boot, *_start(t0, ta, spec), (mid, "StopOK", 0.0))
     settle = mid + 1.5
     out["stop"] = Scenario(
         "stop",
@@ -309,7 +332,7 @@ def _stops(spec, boot, ta, tb, ja, t_move: float, mid: float) -> dict[str, Scena
         "homed again (Start refused)",
         (
             *boot,
-            *_start(START_T, ta, spec),
+            *_start(t0, ta, spec),
             (mid, f"{drive}.PowerOK", 0.0),
             (mid + 0.3, f"{drive}.PowerOK", 1.0),
             *_pulse(settle, "Reset"),
@@ -347,16 +370,16 @@ def _stops(spec, boot, ta, tb, ja, t_move: float, mid: float) -> dict[str, Scena
     return out
 
 
-def _handling(spec, boot, ta, tb, ja, jb) -> Scenario:
+def _handling(spec, boot, t0, ta, tb, ja, jb) -> Scenario:
     """A handling cycle: move to A, close the gripper (a Start during its dwell is refused,
     nothing moves), move to B, open it."""
     home = tuple(a.home_position for a in spec.axes)
-    at_a = START_T + 1.3 * _move_time(spec, home, ja) + 0.3
+    at_a = t0 + 1.3 * _move_time(spec, home, ja) + 0.3
     dwell = spec.grip_dwell_s
     go_b = at_a + dwell + 0.2
     at_b = go_b + 1.3 * _move_time(spec, ja, jb) + 0.3
     end = at_b + dwell + 0.2
-    rows = (*boot, *_start(START_T, ta, spec), (at_a, "Grip", 1.0), *_start(at_a + 0.1, tb, spec),
+    rows = (*boot, *_start(t0, ta, spec), (at_a, "Grip", 1.0), *_start(at_a + 0.1, tb, spec),
             *_start(go_b, tb, spec), (at_b, "Grip", 0.0), (end, "Start", 0.0))  # fmt: skip
     return Scenario("handling", "move, grip (a Start during the dwell refused), move, release",
         rows, Expect(final=jb, still=((at_a, go_b),), outputs=(
@@ -366,28 +389,28 @@ def _handling(spec, boot, ta, tb, ja, jb) -> Scenario:
             (end, "Gripper", 0), (end, "GripperClosed", 0), (end, "Done", 1))))  # fmt: skip
 
 
-def _refused(name, title, boot, target, spec, status) -> Scenario:
-    rows = (*boot, *_start(START_T, target, spec), (START_T + 1.0, "Start", 0.0))
+def _refused(name, title, boot, t0, target, spec, status) -> Scenario:
+    rows = (*boot, *_start(t0, target, spec), (t0 + 1.0, "Start", 0.0))
     return Scenario(
         name,
         title,
         rows,
         Expect(
-            still=((0.0, START_T + 1.0),),
-            outputs=((START_T + 0.05, "Status", int(status)), (START_T + 0.05, "Error", 1)),
+            still=((t0 - 0.05, t0 + 1.0),),
+            outputs=((t0 + 0.05, "Status", int(status)), (t0 + 0.05, "Error", 1)),
         ),
     )
 
 
-def _wrap(arm, spec, boot, q1, q2) -> dict[str, Scenario]:
+def _wrap(arm, spec, boot, t0, q1, q2) -> dict[str, Scenario]:
     t1, t2 = _user_target(arm, q1), _user_target(arm, q2)
     j1, j2 = expected_joints(arm, spec, t1), expected_joints(arm, spec, t2)
     if j1 is None or j2 is None:
         return {}
     home = tuple(a.home_position for a in spec.axes)
-    first = START_T + _move_time(spec, home, j1) + 0.5
+    first = t0 + _move_time(spec, home, j1) + 0.5
     end = first + 1.0
-    rows = (*boot, *_start(START_T, t1, spec), *_start(first, t2, spec), (end, "Start", 0.0))
+    rows = (*boot, *_start(t0, t1, spec), *_start(first, t2, spec), (end, "Start", 0.0))
     return {
         "wrap": Scenario(
             "wrap", "a target across theta1 = +-180 deg: the short way", rows, Expect(final=j2)
@@ -421,7 +444,9 @@ def check(
     """Every check ``scenario`` names (module docstring); the failures, each one line.
     ``arrive_s``: how far apart the joints may arrive (default one cycle)."""
     e = scenario.expect
-    out = check_limits(trace, spec, skip=e.faulted)
+    out = check_limits(trace, spec, skip=e.faulted, homing_until=e.homed_t)
+    if e.homed_t is not None:
+        out += check_homed(trace, spec, e.homed_t)
     if e.final is not None:
         out += check_final(trace, spec, e.final)
     for t0, t1 in e.still:
@@ -437,6 +462,8 @@ def check(
         for seg in segs:
             if k_stop is not None and seg[0] <= k_stop <= seg[1]:
                 continue  # a stopped move
+            if e.homed_t is not None and trace.t[seg[0]] < e.homed_t:
+                continue  # homing (check_homed)
             if not np.all(np.abs(trace.v[seg[0]]) < 1e-9) or seg[1] >= len(trace.t) - 1:
                 continue  # not from rest (a halted one continues), or still moving at the end
             out += check_sync(trace, spec, seg, arrive_s)

@@ -18,6 +18,8 @@ from dataclasses import dataclass
 from analysis.kinematics.status import Status
 
 __all__ = [
+    "HOME_APPROACH",
+    "HOME_CREEP",
     "MACHINE_INPUTS",
     "MACHINE_OUTPUTS",
     "MACHINE_STATUS",
@@ -25,6 +27,13 @@ __all__ = [
     "MachineSpec",
     "machine_spec",
 ]
+
+HOME_APPROACH = 0.25
+"""A reference switch is approached at this fraction of the joint's velocity limit
+(assumed: no paper prints a homing speed; :mod:`.program`, item 4)."""
+HOME_CREEP = 0.0625
+"""The second search (from the far side of the edge) creeps at this fraction of the velocity
+limit, or half a pulse per task cycle if that is slower (assumed, as above)."""
 
 TARGET_NAMES = {
     "px": "TargetX",
