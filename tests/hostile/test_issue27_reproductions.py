@@ -152,6 +152,7 @@ def test_a_report_build_never_deletes_a_folder_it_did_not_create(tmp_path, monke
     assert not deleted, f"the build deleted {deleted}"
     assert out is not None and out.code == 2, out
     assert "not a report build: not deleting it" in out.message and str(folder) in out.message
+    assert "cannot write the answer" not in out.message  # nothing was written: a refusal
     assert sorted(p.name for p in folder.iterdir()) == sorted(content)
 
 

@@ -38,6 +38,7 @@ Why Sphinx + MyST-NB + sphinx-book-theme (the engine of Jupyter Book 1, used dir
 from __future__ import annotations
 
 import contextlib
+import errno
 import io
 import re
 import shutil
@@ -96,7 +97,8 @@ def _refuse_foreign(path: Path) -> None:
     if path.exists():
         ours = (path / _MARKER).is_file()
         if any(path.iterdir()) and not ours:
-            raise FileExistsError(f"{path} is not empty and not a report build: not deleting it")
+            raise FileExistsError(errno.EEXIST, "is not empty and not a report build: not "
+                                  "deleting it", str(path))  # the command: "<path>: is not ..."
 
 
 def _fresh_dir(path: Path) -> None:
