@@ -496,7 +496,9 @@ def cached_answers(papers=None) -> dict | None:
 def changed_inputs() -> list[str]:
     """The inputs that changed since the registers were last built (what a rebuild is for)."""
     last = _cache_dir() / "inputs.json"
-    before = json.loads(last.read_text(encoding="utf-8")) if last.exists() else {}
+    if not last.exists():
+        return ["(no earlier build from this data folder)"]
+    before = json.loads(last.read_text(encoding="utf-8"))
     now = _inputs()
     return sorted(k for k in before.keys() | now.keys() if before.get(k) != now.get(k))
 
