@@ -460,22 +460,9 @@ def _parameter(params: Reader, key: str, ctx: _Context) -> ParamSpec:
     if not isinstance(spec, dict):
         return ParamSpec(key, params.length(key), "mm", "printed", "")
     r = params.sub(key, schema.PARAMETER)
-    named = _column_unit(spec.get("column"))
-    unit = r.choice("unit", tuple(validate.LENGTH_UNITS), named or "mm")
-    if named and unit != named:
-        raise r.error("unit", f"{unit!r} contradicts column {spec['column']!r}, whose name "
-                      f"says {named} (give the column's unit or none)")  # fmt: skip
+    unit = schema.length_unit(r, spec.get("column"))
     value = ctx.number(params, key)
     return ParamSpec(key, r.length("value", value, unit), "mm", _status(r), _source(r))
-
-
-def _column_unit(column) -> str | None:
-    """The length unit a table column's name ends with (``d_mm``: mm), if any."""
-    if isinstance(column, str) and "_" in column:
-        tail = column.rsplit("_", 1)[1]
-        if tail in validate.LENGTH_UNITS:
-            return tail
-    return None
 
 
 def _axis(axes: Reader, key: str) -> AxisSpec:

@@ -271,3 +271,15 @@ def derive_decisions(r: Reader) -> dict:
             k.vector3("tool_axis")
         k.vector3("direction")
     return out
+
+
+def length_unit(r: Reader, column) -> str:
+    """A parameter's ``unit`` (mm by default); a table ``column`` whose name ends in a unit
+    (``d_mm``) gives that unit, and a ``unit`` that contradicts it is refused."""
+    named = column.rsplit("_", 1)[1] if isinstance(column, str) and "_" in column else None
+    named = named if named in validate.LENGTH_UNITS else None
+    unit = r.choice("unit", tuple(validate.LENGTH_UNITS), named or "mm")
+    if named and unit != named:
+        raise r.error("unit", f"{unit!r} contradicts column {column!r}, whose name says "
+                      f"{named} (give the column's unit or none)")  # fmt: skip
+    return unit
