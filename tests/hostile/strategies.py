@@ -2,13 +2,31 @@
 
 from __future__ import annotations
 
+import contextlib
 import math
+import signal
 
 import numpy as np
 from hypothesis import HealthCheck, settings
 from hypothesis import strategies as st
 
 from analysis import validate
+
+
+@contextlib.contextmanager
+def deadline(seconds: float, what: str, hint: str = "blocked on a read?"):
+    """Fail (instead of hanging) when the body runs longer than ``seconds`` (SIGALRM)."""
+
+    def expired(signum, frame):
+        raise AssertionError(f"{what}: still running after {seconds} s ({hint})")
+
+    old = signal.signal(signal.SIGALRM, expired)
+    signal.setitimer(signal.ITIMER_REAL, seconds)
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old)
 
 
 def examples(n: int, cost: int = 1) -> settings:

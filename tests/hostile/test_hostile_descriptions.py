@@ -29,7 +29,6 @@ from __future__ import annotations
 import contextlib
 import os
 import re
-import signal
 import tempfile
 import threading
 from pathlib import Path
@@ -41,25 +40,9 @@ from hypothesis import strategies as st
 from analysis.paths import data_dir
 
 from .registry import cli
-from .strategies import examples
+from .strategies import deadline, examples
 
 SEEDS = ("grabber", "palletizer", "gr1")
-
-
-@contextlib.contextmanager
-def deadline(seconds: float, what: str):
-    """Fail (instead of hanging) when the body runs longer than ``seconds``."""
-
-    def expired(signum, frame):
-        raise AssertionError(f"{what}: still running after {seconds} s (blocked on a read?)")
-
-    old = signal.signal(signal.SIGALRM, expired)
-    signal.setitimer(signal.ITIMER_REAL, seconds)
-    try:
-        yield
-    finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, old)
 
 
 def one_line_error(out, file: str) -> str:

@@ -14,9 +14,6 @@ is computed from the generated text, not read from the evaluator.
 
 from __future__ import annotations
 
-import contextlib
-import signal
-
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -26,25 +23,10 @@ from analysis.plc.stl_eval.cpu import MAX_SCAN_FACTOR, WATCHDOG_STATEMENTS
 from analysis.plc.stl_eval.syntax import MAX_PROGRAM_CHARS, MAX_STATEMENTS
 
 from .registry import cli
+from .strategies import deadline
 
 BUDGET = 20_000
 """A small watchdog for the API examples (the command line keeps the default)."""
-
-
-@contextlib.contextmanager
-def deadline(seconds: float, what: str):
-    """Fail (instead of hanging) when the body runs longer than ``seconds``."""
-
-    def expired(signum, frame):
-        raise AssertionError(f"{what}: still running after {seconds} s (no watchdog?)")
-
-    old = signal.signal(signal.SIGALRM, expired)
-    signal.setitimer(signal.ITIMER_REAL, seconds)
-    try:
-        yield
-    finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, old)
 
 
 def _program(ob1: list[str], sbr: list[str] | None = None) -> tuple[str, int]:
@@ -92,7 +74,7 @@ def endless_loops(draw):
 def test_a_scan_that_never_ends_stops_at_the_watchdog_naming_the_jump(case):
     text, line, wdr = case
     cpu = S7200(load_program(text), watchdog=BUDGET)
-    with deadline(30, "an endless loop"):
+    with deadline(30, "an endless loop", "no watchdog?"):
         cpu.scan()
     assert cpu.fault is not None and cpu.stopped
     msg = str(cpu.fault)
@@ -117,7 +99,7 @@ def test_the_issue_reproductions_stop_on_the_command_line(tmp_path):
     for name, (body, line) in cases.items():
         path = tmp_path / f"{name}.awl"
         path.write_text(_program(body)[0])
-        with deadline(60, name):
+        with deadline(60, name, "no watchdog?"):
             out = cli("stl-run", str(path), "--dialect", "s7-200", "--read", "VW0:INT")
         assert out.code == 2, (name, out.stderr)
         want = f"the CPU went to STOP: watchdog at line {line} (MAIN (OB1), network 1): "
