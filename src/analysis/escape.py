@@ -41,6 +41,9 @@ JSON and JavaScript inside ``<script>`` (:func:`js_json`, :func:`js_comment`)
     JavaScript ``//`` comment is one line with ``<`` and ``>`` taken out.
 HTML (:func:`html_text`)
     :func:`html.escape` with quotes, for text and attribute values.
+TOML (:func:`toml_string`)
+    A basic string: ``"`` and ``\\`` escaped, every C0 control and DEL as ``\\uXXXX`` (what
+    :mod:`tomllib` reads back to the same text); the description a URDF is converted to.
 Terminal (:func:`terminal`)
     Control characters (C0 but TAB and LF, DEL, C1: the escape sequences of a terminal) and
     the bidirectional overrides shown as ``\\xNN`` / ``\\uNNNN`` escapes, visible and inert.
@@ -72,6 +75,7 @@ __all__ = [
     "one_line",
     "plc_comment",
     "terminal",
+    "toml_string",
     "xml_attr",
     "xml_cdata",
     "xml_chars",
@@ -236,3 +240,20 @@ def terminal(text) -> str:
         return repr(c)[1:-1] if ord(c) < 0x100 else f"\\u{ord(c):04x}"
 
     return _TERMINAL.sub(show, str(text))
+
+
+def toml_string(text) -> str:
+    r"""``text`` as a TOML basic string (module docstring).
+
+    >>> print(toml_string('say "hi"\tthen\\'))
+    "say \"hi\"\u0009then\\"
+    """
+    out = []
+    for ch in str(text):
+        if ch in '"\\':
+            out.append("\\" + ch)
+        elif ord(ch) < 0x20 or ord(ch) == 0x7F:
+            out.append(f"\\u{ord(ch):04x}")
+        else:
+            out.append(ch)
+    return '"' + "".join(out) + '"'

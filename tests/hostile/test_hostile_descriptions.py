@@ -37,6 +37,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
+from analysis.escape import toml_string
 from analysis.paths import data_dir
 
 from .registry import cli
@@ -73,18 +74,6 @@ HOSTILE_TEXT = [
 HOSTILE_STRUCTURE = ["[1, 2]", "{ a = 1 }", "true", "42", "1e400", "[" * 2000 + "]" * 2000]
 
 
-def _toml_string(s: str) -> str:
-    out = []
-    for c in s:
-        if c in '"\\':
-            out.append("\\" + c)
-        elif ord(c) < 0x20 or ord(c) == 0x7F:
-            out.append(f"\\u{ord(c):04X}")
-        else:
-            out.append(c)
-    return '"' + "".join(out) + '"'
-
-
 FIELDS = {
     # (pattern of the seed's line, replacement template with {v}); v is a TOML value
     "name": (r'(?m)^name = ".*"$', "name = {v}"),
@@ -108,12 +97,12 @@ def hostile_field(draw):
     field = draw(st.sampled_from(sorted(FIELDS)))
     text = draw(st.sampled_from(HOSTILE_TEXT))
     structured = draw(st.booleans()) and field not in ("parameter key", "unknown key")
-    value = draw(st.sampled_from(HOSTILE_STRUCTURE)) if structured else _toml_string(text)
+    value = draw(st.sampled_from(HOSTILE_STRUCTURE)) if structured else toml_string(text)
     return draw(st.sampled_from(SEEDS)), field, text, value
 
 
 def _bare_key(text: str) -> str:
-    return _toml_string(text) if not re.fullmatch(r"[A-Za-z0-9_-]+", text) else text
+    return toml_string(text) if not re.fullmatch(r"[A-Za-z0-9_-]+", text) else text
 
 
 @given(case=hostile_field())

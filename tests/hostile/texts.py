@@ -23,6 +23,7 @@ from pathlib import Path
 
 from hypothesis import strategies as st
 
+from analysis.escape import toml_string
 from analysis.paths import PROJECT
 
 # --------------------------------------------------------------------------------------------
@@ -85,20 +86,6 @@ def readme_toml() -> str:
     section = text.split("## One source per arm (and how to add one)")[1]
     toml = section.split("```toml\n", 1)[1].split("```", 1)[0]
     return toml.replace("pulses_per_rev = 3200\n", "pulses_per_rev = 3200\n" + _MOTION)
-
-
-def toml_string(value: str) -> str:
-    """``value`` as a TOML basic string (quotes, backslashes and control characters
-    escaped; other characters as they are)."""
-    out = []
-    for c in value:
-        if c in '"\\':
-            out.append("\\" + c)
-        elif ord(c) < 0x20 or ord(c) == 0x7F:
-            out.append(f"\\u{ord(c):04x}")
-        else:
-            out.append(c)
-    return '"' + "".join(out) + '"'
 
 
 def _field_name(toml: str, v: str) -> str:

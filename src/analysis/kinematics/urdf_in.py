@@ -49,6 +49,7 @@ from pathlib import Path
 import numpy as np
 
 from analysis import validate
+from analysis.escape import toml_string
 
 __all__ = ["MAX_BYTES", "MAX_JOINTS", "UrdfChain", "description_text", "read_urdf"]
 
@@ -387,22 +388,9 @@ def dh_rows(chain: UrdfChain) -> list[dict]:
 
 
 # --- the description ------------------------------------------------------------------------
-def _toml_str(text: str) -> str:
-    """A TOML basic string of ``text`` (quotes, backslashes and control characters escaped)."""
-    out = []
-    for ch in text:
-        if ch in '"\\':
-            out.append("\\" + ch)
-        elif ord(ch) < 0x20 or ord(ch) == 0x7F:
-            out.append(f"\\u{ord(ch):04x}")
-        else:
-            out.append(ch)
-    return '"' + "".join(out) + '"'
-
-
 def _joint_entry(j: Joint) -> list[str]:
     src = f"{j.name} in the URDF"
-    out = ["", "[[joints]]", f"name = {_toml_str(j.name)}"]
+    out = ["", "[[joints]]", f"name = {toml_string(j.name)}"]
     out.append('pulses_per_rev = { value = 4000, status = "assumed", note = "a URDF has no '
                'drive: 4000 pulses per revolution assumed" }')  # fmt: skip
     if j.kind == "prismatic":
@@ -416,10 +404,10 @@ def _joint_entry(j: Joint) -> list[str]:
                        f"{math.degrees(j.limits[1])!r}]")  # fmt: skip
         unit = "rad/s"
         status = f"printed: <limit> of joint {src}" if j.limits else "continuous: a full turn"
-        out.append(f"limits_status = {_toml_str(status)}")
+        out.append(f"limits_status = {toml_string(status)}")
     if j.velocity is not None:
         out.append(f'max_velocity = {{ value = {j.velocity!r}, unit = "{unit}", status = '
-                   f'"printed", source = {_toml_str("<limit velocity> of joint " + src)} }}')
+                   f'"printed", source = {toml_string("<limit velocity> of joint " + src)} }}')
     return out
 
 
@@ -431,12 +419,12 @@ def description_text(path) -> str:
     fname = Path(path).name
     out = [f"# Converted from the URDF {fname} by analysis.kinematics.urdf_in: modified D-H rows",
            "# from the chain's joint axes at q = 0 (a fixed base row and a tool row where needed).",
-           f"name = {_toml_str(_identifier(chain.name))}",
-           f"title = {_toml_str(f'{chain.name} (from {fname})')}",
-           f"paper = {_toml_str(f'URDF {fname}, tool frame {chain.tool}')}",
+           f"name = {toml_string(_identifier(chain.name))}",
+           f"title = {toml_string(f'{chain.name} (from {fname})')}",
+           f"paper = {toml_string(f'URDF {fname}, tool frame {chain.tool}')}",
            'convention = "modified"']  # fmt: skip
     for r in rows:
-        out += ["", "[[rows]]", f"joint = {_toml_str(r['joint'])}", f"kind = \"{r['kind']}\""]
+        out += ["", "[[rows]]", f"joint = {toml_string(r['joint'])}", f"kind = \"{r['kind']}\""]
         out += [f"{k} = {r[k]!r}" for k in ("alpha_deg", "a", "d", "theta_offset_deg")]
     for j in chain.joints:
         if j.kind in MOVING:
