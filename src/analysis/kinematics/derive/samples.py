@@ -17,7 +17,7 @@ import math
 
 import numpy as np
 
-__all__ = ["random_arm"]
+__all__ = ["chain_toml", "random_arm"]
 
 _PARALLEL = (0.0, 180.0)
 
@@ -151,9 +151,11 @@ def _keep(rng, convention, rows, params) -> str:
     return f'\n[derive]\nkeep = {{ tool_axis = "{axis}", direction = [{vec}] }}\n'
 
 
-def _toml(name, family, convention, params, rows, joints, derive) -> str:
+def chain_toml(name, family, convention, params, rows, module: str = "samples") -> list[str]:
+    """The lines of a random arm's description up to its joints: the header, the parameters
+    (mm, assumed) and the D-H rows (``module``: the generator named in its first comment)."""
     out = [
-        f"# A random {family} arm ({convention} D-H): analysis.kinematics.derive.samples",
+        f"# A random {family} arm ({convention} D-H): analysis.kinematics.derive.{module}",
         f'name = "{name}"',
         f'title = "random {family} arm"',
         'paper = "none: generated"',
@@ -167,6 +169,11 @@ def _toml(name, family, convention, params, rows, joints, derive) -> str:
         out.append("\n[[rows]]")
         for k, v in r.items():
             out.append(f'{k} = "{v}"' if isinstance(v, str) else f"{k} = {v!r}")
+    return out
+
+
+def _toml(name, family, convention, params, rows, joints, derive) -> str:
+    out = chain_toml(name, family, convention, params, rows)
     for j in joints:
         out.append("\n[[joints]]")
         out.append(f'name = "{j["name"]}"')

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from analysis.kinematics.derive.samples import random_length, random_twist
+from analysis.kinematics.derive.samples import chain_toml, random_length, random_twist
 
 __all__ = ["NEW_FAMILIES", "TRIES", "random_family_arm"]
 
@@ -111,15 +111,7 @@ def _rows(rng, spec: str) -> tuple[list[dict], dict]:
 
 
 def _toml(name, family, convention, params, rows) -> str:
-    out = [f"# A random {family} arm ({convention} D-H): analysis.kinematics.derive.samples_more",
-           f'name = "{name}"', f'title = "random {family} arm"', 'paper = "none: generated"',
-           f'convention = "{convention}"', "", "[parameters]"]  # fmt: skip
-    for k, v in params.items():
-        out.append(f'{k} = {{ value = {v!r}, unit = "mm", status = "assumed", note = "random" }}')
-    for r in rows:
-        out.append("\n[[rows]]")
-        for k, v in r.items():
-            out.append(f'{k} = "{v}"' if isinstance(v, str) else f"{k} = {v!r}")
+    out = chain_toml(name, family, convention, params, rows, "samples_more")
     for r in rows:
         if r.get("kind") == "fixed":
             continue
