@@ -95,6 +95,28 @@ def arm():
     return paper_arm()
 
 
+@pytest.fixture(scope="session")
+def engine():
+    """The ST engine's sweep binary (make st-engine); the test skips, saying why, without it."""
+    from analysis.plc import st_engine
+
+    try:
+        return st_engine.engine_path()
+    except st_engine.EngineMissing as exc:
+        pytest.skip(str(exc))
+
+
+@pytest.fixture(scope="session")
+def machine_engine():
+    """The ST engine's machine driver (make st-engine); skips, saying why, without it."""
+    from analysis.plc import st_engine
+
+    try:
+        return st_engine.machine_engine_path()
+    except st_engine.EngineMissing as exc:
+        pytest.skip(str(exc))
+
+
 def pytest_collection_modifyitems(items):
     """Longest work first: the notebooks (nbval cells, seconds per notebook), then the tests
     marked ``slow`` (awlsim sweeps, subprocess sessions, a Sphinx build, the VB6 runs:

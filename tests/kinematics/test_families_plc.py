@@ -32,14 +32,6 @@ SENTINEL = -999_999
 ARMS = ("puma560", "ur5", "cobra600", "planar2r", "gantry")
 
 
-@pytest.fixture(scope="module")
-def engine():
-    try:
-        return st_engine.engine_path()
-    except st_engine.EngineMissing as exc:
-        pytest.skip(str(exc))
-
-
 @pytest.fixture(scope="module", params=[*ARMS, "puma560.urdf", "ur5_ros.urdf"])
 def case(request, tmp_path_factory):
     """A published arm by name, or loaded from a URDF (the writer's PUMA 560; a UR5 in
@@ -152,7 +144,7 @@ def test_what_an_s7_200_holds_and_what_it_cannot(name):
 
 @pytest.mark.slow
 @pytest.mark.parametrize("name", ["puma560", "planar2r", "gantry"])
-def test_machine_program_with_six_axes(name):
+def test_machine_program_with_six_axes(name, machine_engine):
     """The machine program (analysis.plc.machine: PLCopen motion blocks beside the IK block)
     of the six-axis PUMA 560 and of the planar arm and the gantry through every scenario
     on the ST engine, held to the scenarios' own checks."""
@@ -162,10 +154,6 @@ def test_machine_program_with_six_axes(name):
     from analysis.plc.machine.scenarios import check, scenarios
     from analysis.plc.machine.spec import machine_spec
 
-    try:
-        st_engine.machine_engine_path()
-    except st_engine.EngineMissing as exc:
-        pytest.skip(str(exc))
     arm = load_arm(name)
     spec = machine_spec(arm)
     text, _ = generate(arm, "st")

@@ -34,14 +34,6 @@ from analysis.plc.verify import compare, input_columns
 SENTINEL = -999_999
 
 
-@pytest.fixture(scope="module")
-def engine():
-    try:
-        return st_engine.engine_path()
-    except st_engine.EngineMissing as exc:
-        pytest.skip(str(exc))
-
-
 @pytest.fixture(scope="module", params=["grabber", "gr1", "palletizer", "picker"])
 def case(request):
     arm = load_arm(request.param)

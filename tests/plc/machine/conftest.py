@@ -5,20 +5,9 @@ from __future__ import annotations
 
 import functools
 
-import pytest
-
 from analysis.kinematics.arm import load_arm
-from analysis.plc import st_engine
 
 ARMS = ("grabber", "palletizer", "picker", "gr1")
-
-
-@pytest.fixture(scope="session")
-def machine_engine():
-    try:
-        return st_engine.machine_engine_path()
-    except st_engine.EngineMissing as exc:
-        pytest.skip(str(exc))
 
 
 @functools.cache
