@@ -6,8 +6,8 @@ derive): the six-axis kernels against EAIK and IK-Geo, and every family against 
   from the derived closed form, Numba, the machine's threads), its numpy evaluation, EAIK's
   batched IK (C++, ``IK_batched`` on as many worker threads) and IK-Geo (the Rust ``ik-geo``
   wheel, one ``get_ik`` call per pose: it has no batch call); poses per second of wall time,
-  interleaved rounds, the median kept. The kernel's first call compiles it (minutes for an
-  eight-branch kernel; then read from the disk cache): reported apart.
+  interleaved rounds, the median kept. The kernel's first call compiles it (about 10 s of
+  CPU for an eight-branch kernel; then read from the disk cache): reported apart.
 - ``agreement``: solution sets compared as today's bench does (equal sets, the oracle empty
   or a subset, disagreements: must be 0), per family and D-H convention: EAIK on random arms
   of every revolute family (analysis.kinematics.derive.samples_more) and on the published
