@@ -220,3 +220,23 @@ def test_every_template_is_rendered(paper):
     assert not left, left
     generated = {k for row in r.rows() for k in (row["evidence"], row["rests_on"])}
     assert not [t for t in generated if _TEMPLATE.search(t)]
+
+
+def test_what_decides_an_uncertain_row_says_whether_it_was_lost_or_never_printed(tmp_path):
+    """A ``lost`` record's provenance: lost in extraction (location '(extraction) ...') or never
+    printed ('(not printed) ...'); Figure 5's order rests on the program, which was never
+    printed (grabber-fig5-order); an unknown provenance is refused, naming the record."""
+    from analysis.papers import PROVENANCE, load, load_file, names
+
+    for paper in names():
+        for rec in load(paper).records.values():
+            if rec.type == "lost":
+                prov = rec.get("provenance", PROVENANCE[0])
+                assert rec.location.startswith("(extraction)" if prov == PROVENANCE[0] else "(not printed)"), rec.id  # noqa: E501
+    (rid,) = reg.register("grabber").cause("grabber-fig5-order").decided_by
+    assert load("grabber").record(rid)["provenance"] == "not printed"
+    src = (data_dir() / "papers" / "grabber.toml").read_text(encoding="utf-8")
+    bad = tmp_path / "grabber.toml"
+    bad.write_text(src.replace('"not printed"', '"misplaced"'), encoding="utf-8")
+    with pytest.raises(ValueError, match=r"unprinted.program: provenance 'misplaced' not in"):
+        load_file(bad.resolve())

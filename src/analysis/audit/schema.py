@@ -165,8 +165,9 @@ class Cause:
     rests_on: tuple[str, ...] = ()
     extra: Callable = field(default=lambda: True, repr=False, compare=False)
     decided_by: tuple[str, ...] = ()
-    """Uncertain: the paper's records of what the extraction lost (type ``lost``) that would
-    decide between the readings (counting rule 5)."""
+    """Uncertain: the paper's records of what it lacks (type ``lost``) that would decide
+    between the readings (counting rule 5): lost in extraction, or never printed (the record's
+    ``provenance``, :data:`analysis.papers.data.PROVENANCE`)."""
 
     def __post_init__(self) -> None:
         if (self.status == "uncertain") != bool(self.decided_by):
