@@ -49,6 +49,7 @@ from analysis.plc.machine.profile import min_time, stop_distance, sync_limits, s
 from analysis.plc.machine.spec import MachineSpec
 
 __all__ = [
+    "PLC_COLUMN",
     "Trace",
     "check_final",
     "check_homed",
@@ -61,6 +62,11 @@ __all__ = [
     "motion_segments",
     "stop_distances",
 ]
+
+
+PLC_COLUMN = "plc_q{}"
+"""A trace's column (``stl-run --trace``) of what the PLC reads of axis k: its encoder's
+position (:attr:`Trace.pos`)."""
 
 
 @dataclass(frozen=True)
@@ -90,18 +96,22 @@ class Trace:
 
     @classmethod
     def from_csv(cls, text: str) -> Trace:
-        """From the text of ``stl-run --trace`` (``t_s, q1..qN, v1..vN``, then outputs)."""
+        """From the text of ``stl-run --trace`` (``t_s, q1..qN, v1..vN``, then outputs, then
+        ``plc_q1..plc_qN`` when it has them: :attr:`pos`)."""
         rows = list(csv.reader(io.StringIO(text)))
         head, body = rows[0], np.array(rows[1:], dtype=object)
         n = sum(1 for h in head if h[:1] == "q" and h[1:].isdigit())
+        plc = [PLC_COLUMN.format(k + 1) for k in range(n)]
 
         def num(col):
             return np.array([_cell(c) for c in body[:, col]], dtype=float)
 
-        outs = {h: num(k) for k, h in enumerate(head) if k > 2 * n}
+        outs = {h: num(k) for k, h in enumerate(head) if k > 2 * n and h not in plc}
         q = np.stack([num(1 + k) for k in range(n)], axis=1)
         v = np.stack([num(1 + n + k) for k in range(n)], axis=1)
-        return cls(num(0), q, v, outs)
+        pos = (np.stack([num(head.index(h)) for h in plc], axis=1)
+               if n and all(h in head for h in plc) else None)  # fmt: skip
+        return cls(num(0), q, v, outs, pos)
 
 
 def _cell(c: str) -> float:
