@@ -264,6 +264,7 @@ def _started(capsys, d, *start):
     return Trace.from_csv(trace.read_text("utf-8"))
 
 
+@pytest.mark.slow
 def test_start_where_a_machine_is_switched_on(gr1_files, capsys):
     """By default the axes stand where the scenarios' plant has them at power-up (every
     reference-switch axis off home, every encoder stale: plc_qK), so Home does real work:
@@ -295,7 +296,22 @@ def test_start_where_a_machine_is_switched_on(gr1_files, capsys):
         ("somewhere", "power-up or home, or one position per axis"),
     ],
 )
-def test_a_bad_start_is_one_line(gr1_files, capsys, tmp_path, start, word):
+def test_a_bad_start_is_one_line(start, word):
+    """parse_start on the GR-1's MAP.json axes: one line naming the value and the limit
+    (test_a_bad_start_from_a_shell: the same through stl-run, exit 2, no trace)."""
+    from analysis.plc.machine.offline import _axis_rows, parse_start
+
+    rows = _axis_rows({}, machine("gr1")[4])
+    with pytest.raises(ValueError, match=re.escape(word)) as err:
+        parse_start(start, rows)
+    assert "\n" not in str(err.value)
+    assert parse_start(None, rows) == "power-up" and parse_start(" Home", rows) == "home"
+    assert parse_start("1, -2,3,4e0,5", rows) == (1.0, -2.0, 3.0, 4.0, 5.0)
+
+
+@pytest.mark.slow
+def test_a_bad_start_from_a_shell(gr1_files, capsys, tmp_path):
+    start, word = "20,-10,300,0,45", "theta3 = 300 deg is outside its limits -135..135 deg"
     code, _, err = _run(capsys, gr1_files / "gr1.st", "--dialect", "st", "--map",
                         gr1_files / "gr1.json", "--scenario", gr1_files / "home.csv",
                         "--trace", tmp_path / "t.csv", "--start", start)  # fmt: skip
