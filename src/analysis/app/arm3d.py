@@ -71,6 +71,8 @@ ROUND_MM = 3
 """Decimals [mm] of the coordinates in a figure: 1 µm, far below what a figure can show and
 far above float64 round-off (~1e-13 mm), so stored outputs are reproducible."""
 CONFIG = {"displaylogo": False, "responsive": True, "scrollZoom": True}
+PATH_POINTS = 600
+"""The most samples a trajectory's tool path is drawn through (evenly spread)."""
 _FONT = {"family": "DejaVu Sans, Arial, sans-serif", "size": 13}
 
 
@@ -278,6 +280,11 @@ def arm_figure(
     return go.Figure(data=traces, layout=_layout(arm, title, box, height))
 
 
+def _spread(m: int, k: int) -> npt.NDArray[np.intp]:
+    """At most ``k`` indices spread evenly over ``m`` samples, the first and the last kept."""
+    return np.unique(np.linspace(0, m - 1, min(k, m)).round().astype(int))
+
+
 def trajectory_figure(
     arm,
     t: npt.ArrayLike,
@@ -319,9 +326,10 @@ def trajectory_figure(
         raise ValueError(f"frames={frames}: 2 .. 400 animation frames")
     if notes is not None and len(notes) != len(t):
         raise ValueError(f"notes: {len(notes)} lines; expected one per sample ({len(t)})")
-    idx = np.unique(np.linspace(0, len(t) - 1, min(frames, len(t))).round().astype(int))
+    idx = _spread(len(t), frames)
     pts = arm.frames(q[idx])  # (k, n_frames, 3): every pose in one call
-    path = arm.fk(q)
+    # the tool's path through at most PATH_POINTS samples (a machine run has one per cycle)
+    path = arm.fk(q[_spread(len(t), PATH_POINTS)])
     box = box or workspace_box(arm)
     # no link frames: 41 poses of them would triple the figure for traces hidden at first
     fig = arm_figure(arm, q[0], None, title=title, box=box, height=height, link_frames=False)
@@ -348,7 +356,7 @@ def trajectory_figure(
         text = html.escape(str(notes[k]), quote=False)
         return {"annotations": [{"text": text, "x": 0.02, "y": 1.0, "xref": "paper",
                                  "yref": "paper", "xanchor": "left", "yanchor": "top",
-                                 "showarrow": False, "font": _FONT, "align": "left"}]}  # fmt: skip
+                                 "showarrow": False}]}  # fmt: skip
 
     fig.frames = [
         go.Frame(
