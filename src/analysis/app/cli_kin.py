@@ -267,7 +267,7 @@ def cmd_arms(args: argparse.Namespace) -> int:
             f"{k} = {v['value']:g} {v['unit']}" + (" (assumed)" if v["status"] == "assumed" else "")
             for k, v in d["parameters"].items()
         )
-        drive = "" if d["pulses_per_rev"] is not None else ", no drive given"
+        drive = ", no drive given" if d.get("pulses_per_rev", ()) is None else ""
         print(terminal(f"{d['name']:<11} {d['title']} ({len(d['joints'])} joints{drive}): "
                        f"{params}"))  # fmt: skip
     return 0
