@@ -91,7 +91,7 @@ def with_bare_drive(text: str) -> str:
 CASES = [(a, "no drive") for a in ("planar2r", "planar3r", "cobra600", "puma560")] + [
     (a, "rows only") for a in ("planar2r", "planar3r", "puma560")
 ]
-FAST = {("planar2r", "no drive"), ("puma560", "rows only")}
+FAST = {("planar2r", "no drive")}
 """The cases make test-fast runs (every case: make test)."""
 
 
