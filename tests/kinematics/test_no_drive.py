@@ -283,6 +283,51 @@ def test_rows_name_the_joints_or_take_the_d_h_names(tmp_path):
     assert np.allclose(arm.table.fk(q)[0, :2, 3], want, atol=1e-9)
 
 
+def test_the_explorer_s_data_without_a_drive(tmp_path):
+    """The explorer's data work (analysis.app.explore_logic): the same angles, no pulse
+    columns, "pulses: no drive given" in its sentences."""
+    from analysis.app.explore_logic import fk_line, plain_message, pose_report
+
+    path = tmp_path / "arm.toml"
+    path.write_text(without_drive(_text("planar2r")))
+    arm, bare = load_arm("planar2r"), load_arm(str(path))
+    reps = [pose_report(a, [1200.0, 500.0]) for a in (arm, bare)]
+    assert reps[0].table.drop(columns=["c1", "c2", "error_mm"]).equals(
+        reps[1].table.drop(columns=["error_mm"]))  # fmt: skip
+    assert "c1" not in reps[1].table and "c1 [pulses]" not in reps[1].formatted()
+    assert "pulses: no drive given" in plain_message(reps[1])
+    q = np.radians([30.0, 40.0])
+    assert "→ pulses: no drive given;" in fk_line(bare, q, reps[1])
+    assert fk_line(bare, q, reps[1]).split(";")[1:] == fk_line(arm, q, reps[0]).split(";")[1:]
+
+
+@pytest.mark.slow  # node, twice
+def test_the_explorer_s_javascript_without_a_drive(tmp_path):
+    """The arm's JavaScript module (analysis.app.explore_js, run by node where installed)
+    solves as the arm with a drive and gives null pulses."""
+    import shutil
+    import subprocess
+
+    from analysis.app.explore_js import arm_module_js
+
+    path = tmp_path / "arm.toml"
+    path.write_text(without_drive(_text("planar2r")))
+    arm, bare = load_arm("planar2r"), load_arm(str(path))
+    node = shutil.which("node")
+    if node is None:
+        pytest.skip("node is not installed: the arm's JavaScript module is not run here")
+    out = []
+    for a in (arm, bare):
+        js = tmp_path / "m.js"
+        js.write_text(f"const arm = {arm_module_js(a)};\nconst s = arm.solve([1200, 500]);\n"
+                      "console.log(JSON.stringify([s.branches.righty.q, s.branches.righty.c, "
+                      "arm.pulses([0.1, 0.2]), arm.pulses_per_rev]));\n")  # fmt: skip
+        run_ = subprocess.run([node, str(js)], capture_output=True, text=True, timeout=60)
+        out.append(json.loads(run_.stdout))
+    assert out[0][0] == out[1][0] and out[0][1] == arm.pulses(np.array(out[0][0])).tolist()
+    assert out[1][1:] == [None, None, None]
+
+
 # --------------------------------------------------------------------------------------------
 # the .py closed form: next to the description only (issue 27 item 3)
 # --------------------------------------------------------------------------------------------
