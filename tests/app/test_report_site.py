@@ -178,6 +178,9 @@ def test_a_figure_has_one_number_on_every_page_and_in_the_pdf():
             ],
         ),
     ]
+    # numbered in the order the notebook shows them, not the file names' order
+    ordered = site.shown_order({"05-a": "C.", "05-b": "B."}, [nb])
+    assert site.figure_numbers(ordered) == {"05-b": 1, "05-a": 2}
     page, placed = site.prepare_notebook(nb, "05_x.ipynb", captions)
     shown = [(m[1], int(m[2])) for c in page.cells for m in number.finditer(c.source)]
     assert placed == ["05-b", "05-a"] and shown == [("05-b", 2), ("05-a", 3)], shown

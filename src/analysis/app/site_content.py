@@ -38,6 +38,7 @@ from analysis.app.site_notebooks import (
     md_role,
     prepare_notebook,
     saved_stems,
+    shown_order,
 )
 from analysis.escape import html_text
 
@@ -56,6 +57,7 @@ __all__ = [
     "prepare_notebook",
     "register_md",
     "saved_stems",
+    "shown_order",
     "static_explorer_html",
     "write_downloads",
 ]

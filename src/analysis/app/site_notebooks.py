@@ -34,6 +34,7 @@ __all__ = [
     "md_role",
     "prepare_notebook",
     "saved_stems",
+    "shown_order",
 ]
 
 PROJECT = Path(__file__).resolve().parents[3]
@@ -87,13 +88,29 @@ def md_inline(text: str) -> str:
     return re.sub(r"([\\`*_\[\]<>{}$|#])", r"\\\1", text)
 
 
+def shown_order(captions: dict[str, str], notebooks) -> dict[str, str]:
+    """``captions`` in the order the executed ``notebooks`` show their figures (notebook by
+    notebook, cell by cell), then any figure no notebook shows: what :func:`figure_numbers`
+    numbers (the file names' alphabetical order put a notebook's third figure first)."""
+    shown = [
+        stem
+        for nb in notebooks
+        for cell in nb.cells
+        if cell.cell_type == "code"
+        for stem in saved_stems(cell)
+        if stem in captions
+    ]
+    return {stem: captions[stem] for stem in dict.fromkeys([*shown, *captions])}
+
+
 def figure_numbers(captions: dict[str, str]) -> dict[str, int]:
     """Each figure's one number, on every page of the site and in the PDF: its place in the
-    catalogue (``figures.md``: by notebook number, then in the order the notebook saved
-    them). Sphinx's ``numfig`` numbers a figure where it stands, so the same figure had one
-    number on its notebook's page, another on the front page and the figures page and a
-    third in the PDF (which starts from its own front page); ``docs/site/conf.py`` has
-    ``numfig`` off and :func:`figure_md` writes this number into the caption."""
+    catalogue (``figures.md``: by notebook number, then in the order of ``captions``, which
+    :func:`shown_order` puts in the order the notebook shows them). Sphinx's ``numfig``
+    numbers a figure where it stands, so the same figure had one number on its notebook's
+    page, another on the front page and the figures page and a third in the PDF (which
+    starts from its own front page); ``docs/site/conf.py`` has ``numfig`` off and
+    :func:`figure_md` writes this number into the caption."""
     order = sorted(captions, key=lambda stem: stem[:2])  # stable: the saved order kept
     return {stem: k for k, stem in enumerate(order, 1)}
 
