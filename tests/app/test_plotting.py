@@ -28,7 +28,7 @@ def test_two_views_keep_one_scale_fill_the_height_and_ticks_apart():
     # spans as in notebook 12's replay: x 620 mm, y 1850 mm (top view), z 650 mm
     t = np.linspace(0.0, 1.0, 50)[:, None]
     a = np.hstack([850 + 620 * t, -1800 + 1850 * t**2, 770 + 650 * t])
-    b = a[:20] + [5.0, 0.0, 0.0]
+    b = a[:20] + np.array([5.0, 0.0, 0.0])
     with style():
         fig, axes = plot_views({"a": a, "b": b}, {"a": a[::10]})
         fig.canvas.draw()

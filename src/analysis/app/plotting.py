@@ -231,13 +231,15 @@ def plot_views(
     paths: dict[str, npt.ArrayLike],
     dots: dict[str, npt.ArrayLike] | None = None,
     *,
-    height: float = 4.6,
-    width: float = 9.0,
+    height: float = 4.4,
+    width: float = 7.4,
 ) -> tuple[mpl.figure.Figure, tuple]:
     """A top view (x, y) and a side view (x, z) of 3D paths [mm], at one scale in both
     directions of each view and each panel as wide as its data at the same height (a view
     whose y spans three times its x gets that share of the width, not a squeezed strip), with
     at most 4 ticks along x and 6 along the other axis (no labels running into each other).
+    ``width`` [in]: no wider than the site's text column, where a wider figure is shrunk and
+    its 10 pt text falls under the 9 pt the site's layout test asks for.
 
     ``paths`` {label: (n, 3) points}, drawn in turn, each narrower than the one before (paths
     that coincide stay visible); ``dots`` {label: (m, 3) points} marked with dots in the same
