@@ -9,8 +9,10 @@ the next frame painted after the explorer's view redrew the arm (``js/arm3d_view
 each redraw once it is on screen: the next animation frame after the trace data is updated,
 then a message posted from it, which runs after the paint). Each record also has the phases:
 ``asked`` (the view's ``draw()`` called), ``started`` (the redraw began), ``plotted`` (the
-scene redrawn, the title set) and the path (``in-place`` or ``plotly``) and source (``local``:
-the printed kinematics in the browser; ``kernel``: the kernel's pose).
+scene redrawn, the title set), in Lab ``kernel`` (the kernel's pose for the new value in: the
+comm round trip and the Python compute, off the path to the screen since the browser draws
+first) and the path (``in-place`` or ``plotly``) and source (``local``: the printed
+kinematics in the browser; ``kernel``: the kernel's pose).
 
 The two explorers:
 
@@ -123,6 +125,10 @@ class Explorer:
         rec = page.evaluate(_RECORD, self.view)
         if self.name == "lab":
             quiet(page, 30_000)  # the kernel's pose in, nothing left to draw
+            rec["kernel"] = page.evaluate(
+                "sel => document.querySelector(sel).arm3dConfirmedAt - window.benchEnterAt",
+                self.view,
+            )
         page.wait_for_timeout(150)
         return rec
 
@@ -158,7 +164,8 @@ def _open_static(browser, url: str) -> Explorer:
 
 def summary(rows: list[dict]) -> dict:
     ms = sorted(r["ms"] for r in rows)
-    phase = {k: round(statistics.median(r[k] for r in rows), 1) for k in ("asked", "plotted")}
+    keys = ("asked", "plotted", "kernel") if "kernel" in rows[0] else ("asked", "plotted")
+    phase = {k: round(statistics.median(r[k] for r in rows), 1) for k in keys}
     return {
         "changes": len(ms),
         "median_ms": round(statistics.median(ms), 1),
@@ -240,8 +247,9 @@ def main(argv: list[str] | None = None) -> int:
         print(
             f"explorer latency, {key:>14}: median {s['median_ms']:5.1f} ms, p90 "
             f"{s['p90_ms']:5.1f} ms, max {s['max_ms']:5.1f} ms ({s['changes']} changes; "
-            f"plotted at {s['median_phase_ms']['plotted']} ms; load {min(la):.1f}-{max(la):.1f} "
-            f"on {report['cpus']} cpus)"
+            f"plotted at {s['median_phase_ms']['plotted']} ms"
+            + (f", kernel's pose in at {k} ms" if (k := s["median_phase_ms"].get("kernel")) else "")
+            + f"; load {min(la):.1f}-{max(la):.1f} on {report['cpus']} cpus)"
         )
     print(
         f"explorer latency: Lab median under load {report['latency']['lab loaded']['median_ms']}"

@@ -136,6 +136,7 @@ async function render({model, el}) {
     // kernel's pose is for the controls' values, what the browser tests wait on)
     el.arm3dKernelCurrent = !(ctl && p.key && !sameKey(p.key, key()));
     if (!el.arm3dKernelCurrent) return;
+    el.arm3dConfirmedAt = performance.now(); // the kernel's pose in (benchmarks/explorer_latency.py)
     confirm(p);
     view.draw(p.frames, p.target, p.title, "kernel");
   }
