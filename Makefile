@@ -58,19 +58,24 @@ AWLSIM_MEMO := $(CURDIR)/build/awlsim-memo
 # when the pin or the driver changes; the binary reports the key of both (st_run --key). No
 # download or compilation at test time. The second binary, analysis-st-machine
 # (tools/st-engine/st_machine.cpp), runs a machine program cycle by cycle with simulated axes
-# (analysis.plc.st_engine.run_machine, stl-run --dialect st); same sources, same key.
+# (analysis.plc.st_engine.run_machine, stl-run --dialect st); same sources, same key. The sdist's
+# simulated axis is patched after unpacking (ST_PATCH: two upstream defects, velocity steps and
+# the overrun-and-return of MC_Halt/MC_Stop, each explained in the patch's header).
 ST_ENGINE := $(VENV)/bin/analysis-st-run
 ST_MACHINE := $(VENV)/bin/analysis-st-machine
-ST_SOURCES := tools/st-engine/requirements.txt tools/st-engine/st_run.cpp tools/st-engine/st_machine.cpp
+ST_PATCH := tools/st-engine/pyplcopen-0.21.0-motion.patch
+ST_SOURCES := tools/st-engine/requirements.txt tools/st-engine/st_run.cpp tools/st-engine/st_machine.cpp \
+  $(ST_PATCH)
 KIN_ORACLE := $(VENV)/bin/analysis-kin-oracle
 
 st-engine: $(ST_ENGINE) $(KIN_ORACLE)
 
-# make test builds the engine where g++ is (CI: .ci/run installs it); on a machine with only the
-# README's prerequisites the ST engine tests are skipped, saying why (analysis.plc.st_engine).
+# make test, make report and make notebooks build the engine where g++ is (CI: .ci/run installs
+# it); without g++ the ST engine tests are skipped, saying why (analysis.plc.st_engine), and
+# notebook 09, which plays a machine run of the engine, fails naming make st-engine.
 st-engine-if-gxx: | $(STAMP)
 	@if command -v g++ >/dev/null; then $(MAKE) --no-print-directory st-engine; \
-	else echo "make: no g++ on PATH: the IEC 61131-3 ST engine is not built and its tests are skipped (Debian: apt-get install g++)"; fi
+	else echo "make: no g++ on PATH: the IEC 61131-3 ST engine is not built; its tests are skipped and notebook 09's machine run fails, naming make st-engine (Debian: apt-get install g++)"; fi
 
 $(ST_ENGINE): $(ST_SOURCES) | $(STAMP)
 	@command -v g++ >/dev/null || { echo "need g++ to build the ST engine (Debian: apt-get install g++)"; exit 2; }
@@ -78,6 +83,7 @@ $(ST_ENGINE): $(ST_SOURCES) | $(STAMP)
 	$(PY) -m pip download --quiet --no-deps --no-binary :all: --require-hashes \
 	  -r tools/st-engine/requirements.txt -d build/st-engine
 	tar -xzf build/st-engine/pyplcopen-0.21.0.tar.gz -C build/st-engine pyplcopen-0.21.0/core pyplcopen-0.21.0/LICENSE
+	git apply --directory=build/st-engine -p1 $(ST_PATCH)
 	g++ -std=c++17 -O2 -ffp-contract=off -fno-fast-math \
 	  -DST_RUN_KEY='"'$$(cat $(ST_SOURCES) | sha256sum | cut -c1-16)'"' \
 	  -Ibuild/st-engine/pyplcopen-0.21.0/core tools/st-engine/st_run.cpp -o $@.tmp
@@ -116,7 +122,7 @@ test-browser: $(STAMP)
 # Sphinx. Cached (analysis/app/report_cache.py, jupyter-cache in build/report-cache): a notebook
 # whose code and inputs (src/analysis, data/, the lock) are unchanged is not executed again, and
 # when nothing changed since the last build the site is left as it is.
-report: $(STAMP)
+report: $(STAMP) st-engine-if-gxx
 	MPLBACKEND=$(NB_BACKEND) $(PY) -m analysis report --out build/report
 
 # The bench extra (numexpr, EAIK and what EAIK needs) is pinned in requirements-bench.lock
@@ -148,7 +154,7 @@ lab: $(STAMP)
 
 # Re-executes notebooks in place (all, or NB="notebooks/03_table4.ipynb ...") and stores their
 # outputs, the reference nbval compares against: commit them with the change that moved them.
-notebooks: $(STAMP)
+notebooks: $(STAMP) st-engine-if-gxx
 	MPLBACKEND=$(NB_BACKEND) $(PY) tests/refresh_notebooks.py $(NB)
 
 lint: $(STAMP)

@@ -61,7 +61,8 @@ __all__ = [
 ]  # fmt: skip
 
 BEGIN, END = "<!-- errata:begin -->", "<!-- errata:end -->"
-ITEM_COLUMNS = ("id", "location", "verdict", "kind", "printed", "derived", "evidence", "check")
+ITEM_COLUMNS = ("id", "location", "verdict", "kind", "printed", "derived", "evidence", "check",
+                "tolerance")  # appended: outside checks read the columns in order
 VERDICT = {"error": "wrong", "omission": "wrong", "unsupported": "wrong", "holds": "holds"}
 
 
@@ -363,7 +364,7 @@ def items_table(paper: str = "grabber") -> list[dict[str, str]]:
     return [
         {"id": m.id, "location": m.location, "verdict": VERDICT.get(c.status, c.status),
          "kind": c.kind, "printed": m.printed, "derived": m.corrected,
-         "evidence": m.evidence or c.title, "check": m.check}
+         "evidence": m.evidence or c.title, "check": m.check, "tolerance": m.tolerance}
         for c in reg.causes
         for m in c.manifestations
     ]

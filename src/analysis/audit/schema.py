@@ -97,8 +97,12 @@ def check_summary(paper: str, raw: Mapping) -> None:
 
 COLUMNS = (
     "id", "cause", "status", "kind", "severity", "location", "printed", "reading", "corrected",
-    "alternatives", "rests_on", "evidence", "check",
+    "alternatives", "rests_on", "evidence", "check", "tolerance",
 )  # fmt: skip
+"""The register CSV's columns, in order (outside checks read them: a new column is appended).
+``tolerance``: the tolerance a max/min claim's check applies to the corrected value
+(:func:`analysis.audit.kinds.claim.evaluate_claim`: stated, or half a unit of the last decimal,
+at most 5e-4 of the value, 1e-9 at 0); empty where the check compares exactly."""
 _ID = re.compile(r"^[a-z0-9][a-z0-9.-]*(/[a-z0-9][a-z0-9.-]*)?$")
 TEST = "tests/audit/test_registers.py"
 
@@ -129,6 +133,16 @@ class Manifestation:
     agrees: Callable = field(default=lambda text: False, repr=False, compare=False)
     """``agrees(text)``: the text is the same statement as the correction (or as one the
     register declares ``equivalent``), :func:`analysis.audit.equivalence.same`."""
+
+    @property
+    def tolerance(self) -> str:
+        """The tolerance the check applies to the correction's value, for a max/min claim (the
+        check's result on :attr:`corrected`, three significant digits); else ''."""
+        if self.spec.get("kind") != "claim" or not re.match(r"(max|min) ", self.corrected.strip()):
+            return ""
+        res = self.result(self.corrected)
+        tol = None if res is None else res.values.get("tol")
+        return "" if tol is None else f"{float(tol):.3g}"
 
     def holds(self, text: str) -> bool:
         """Is ``text`` true of the paper's model? The check kind's computation alone (a
@@ -165,8 +179,9 @@ class Cause:
     rests_on: tuple[str, ...] = ()
     extra: Callable = field(default=lambda: True, repr=False, compare=False)
     decided_by: tuple[str, ...] = ()
-    """Uncertain: the paper's records of what the extraction lost (type ``lost``) that would
-    decide between the readings (counting rule 5)."""
+    """Uncertain: the paper's records of what it lacks (type ``lost``) that would decide
+    between the readings (counting rule 5): lost in extraction, or never printed (the record's
+    ``provenance``, :data:`analysis.papers.data.PROVENANCE`)."""
 
     def __post_init__(self) -> None:
         if (self.status == "uncertain") != bool(self.decided_by):
@@ -273,7 +288,7 @@ class Register:
                 "severity": c.severity, "location": c.locations or "(the paper as a whole)",
                 "printed": "", "reading": "", "corrected": "", "alternatives": "",
                 "rests_on": "; ".join(c.rests_on), "evidence": f"{c.title} {c.evidence}".strip(),
-                "check": c.check,
+                "check": c.check, "tolerance": "",
             })  # fmt: skip
             for m in shown:
                 out.append({
@@ -281,7 +296,7 @@ class Register:
                     "severity": c.severity, "location": m.location, "printed": m.printed,
                     "reading": m.reading, "corrected": m.corrected,
                     "alternatives": " | ".join(m.alternatives), "rests_on": "; ".join(m.rests_on),
-                    "evidence": m.evidence, "check": m.check,
+                    "evidence": m.evidence, "check": m.check, "tolerance": m.tolerance,
                 })  # fmt: skip
         return out
 

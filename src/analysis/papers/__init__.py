@@ -30,8 +30,8 @@ import importlib
 from analysis.papers.catalog import names, paper_path
 
 __all__ = [
-    "FUNCTIONS", "PAPERS", "REQUIRED", "TYPES", "Paper", "Record", "legacy", "load", "load_file",
-    "names", "paper_path", "parse", "validate",
+    "FUNCTIONS", "PAPERS", "PROVENANCE", "REQUIRED", "TYPES", "Paper", "Record", "legacy", "load",
+    "load_file", "names", "paper_path", "parse", "validate",
 ]  # fmt: skip
 
 _DATA = frozenset(__all__) - {"PAPERS", "names", "paper_path"}

@@ -19,8 +19,8 @@ import sympy as sp
 from analysis.papers.catalog import names, paper_path, raw
 
 __all__ = [
-    "FUNCTIONS", "REQUIRED", "TYPES", "Paper", "Record", "legacy", "load", "load_file", "parse",
-    "validate",
+    "FUNCTIONS", "PROVENANCE", "REQUIRED", "TYPES", "Paper", "Record", "legacy", "load",
+    "load_file", "parse", "validate",
 ]  # fmt: skip
 
 TYPES: tuple[str, ...] = (
@@ -38,6 +38,10 @@ REQUIRED: dict[str, tuple[str, ...]] = {
     "section": ("text",),
 }
 """Fields a record of a type must have (besides ``id``, ``type``, ``location``)."""
+PROVENANCE: tuple[str, ...] = ("lost in extraction", "not printed")
+"""Why a ``lost`` record's data is missing (its ``provenance``, default the first): the
+extraction lost what the paper printed, or the paper never printed it. Only the first leaves a
+row uncertain that a better copy of the paper could decide."""
 FUNCTIONS: dict[str, object] = {
     "sin": sp.sin, "cos": sp.cos, "tan": sp.tan, "atan": sp.atan, "atan2": sp.atan2,
     "asin": sp.asin, "acos": sp.acos, "sqrt": sp.sqrt, "Abs": sp.Abs, "exp": sp.exp,
@@ -334,6 +338,8 @@ def validate(paper: Paper) -> None:
                         paper.parse(p[side], ns)
         if rec.type == "matrix":
             paper.matrix(rec.id)
+        if rec.type == "lost" and rec.get("provenance", PROVENANCE[0]) not in PROVENANCE:
+            raise ValueError(f"{where}: provenance {rec['provenance']!r} not in {PROVENANCE}")
 
 
 def legacy(name: str, **extra):

@@ -113,20 +113,25 @@ async function render({model, el}) {
       const theta1 = value(ctl.axis) && arm.on_axis ? value(ctl.axisDeg) * rad : null;
       r = A.pose(arm, {branch: value(ctl.branch), p, theta1});
     }
-    drawnHere = {key: key(), frames: r.frames, title: r.title};
-    view.draw(r.frames, r.target, r.title, "local");
+    drawnHere = {key: key(), frames: r.frames, title: r.title, transforms: r.transforms};
+    view.draw(r.frames, r.target, r.title, "local", r.transforms);
   }
 
   // the kernel's pose against the browser's for the same controls' values
   function confirm(p) {
     if (!drawnHere || !sameKey(drawnHere.key, p.key)) return;
     const gap = poseGap(drawnHere.frames, p.frames);
-    const agree = gap <= 1e-6 && drawnHere.title === p.title;
+    // the joint axes and frames too (the kernel rounds them to 1e-6, as the joint positions)
+    const flat = (T) => (T ? [].concat(...T.map((M) => [].concat(...M))) : []);
+    const [u, w] = [flat(drawnHere.transforms), flat(p.transforms)];
+    const frames = u.length === w.length && u.every((v, i) => Math.abs(v - w[i]) <= 1e-6);
+    const agree = gap <= 1e-6 && drawnHere.title === p.title && frames;
     el.arm3dDisagreement = agree ? null : {mm: gap, browser: drawnHere.title, kernel: p.title};
     note.style.display = agree ? "none" : "";
     note.textContent = agree ? "" : "The kernel corrected the pose the browser drew ("
       + (Number.isFinite(gap) ? `${A.num(gap, 3)} mm apart` : "one of them without a solution")
-      + (drawnHere.title === p.title ? "" : "; the titles differ") + "): the kernel's is drawn.";
+      + (drawnHere.title === p.title ? "" : "; the titles differ")
+      + (frames ? "" : "; the joint axes or frames differ") + "): the kernel's is drawn.";
   }
 
   function kernel() {
@@ -138,7 +143,7 @@ async function render({model, el}) {
     if (!el.arm3dKernelCurrent) return;
     el.arm3dConfirmedAt = performance.now(); // the kernel's pose in (benchmarks/explorer_latency.py)
     confirm(p);
-    view.draw(p.frames, p.target, p.title, "kernel");
+    view.draw(p.frames, p.target, p.title, "kernel", p.transforms);
   }
 
   const onFigure = () => view.reset(model.get("figure")).then(kernel);

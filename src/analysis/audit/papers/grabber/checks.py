@@ -192,37 +192,34 @@ def _hardware():
 @B.domain("ik_citations")
 def _ik_citations():
     """The works the introduction cites as robot inverse-kinematics research ([6], [8]-[11];
-    [10] and [11] are not in the extracted list): does the printed title name kinematics (运动学,
-    逆解, 逆向, kinematic, inverse, D-H)?"""
-    import re
-
-    keys = ("运动学", "逆解", "逆向", "kinematic", "inverse", "D-H")
-    titles = [_paper().record(f"references.{k}").text for k in (6, 8, 9)]
-    titles = [re.split(r"\[J\]", t)[0].split(". ", 1)[-1] for t in titles]  # the title alone
-    return {"on_kinematics": np.array([any(k.lower() in t.lower() for k in keys) for t in titles])}
+    [10] and [11] are not in the extracted list), as our reading of each printed entry records
+    it (``references.N``: ``subject``, ``on_kinematics``, ``beyond_print``)."""
+    refs = [_paper().record(f"references.{k}") for k in (6, 8, 9)]
+    for r in refs:
+        if not isinstance(r.get("on_kinematics"), bool) or not str(r.get("beyond_print", "")).strip():  # noqa: E501
+            raise ValueError(f"grabber:{r.id}: no reading (on_kinematics, beyond_print)")
+    return {"on_kinematics": np.array([r["on_kinematics"] for r in refs])}
 
 
 @B.domain("claimed_modes")
 def _modes():
-    """The modes secs. 2.1-2.2 claim (manual, automatic, cyclic, single run): can anything the
-    paper prints select one? Table 2's inputs named for a mode (手动, 自动, 循环, 单向, 切换,
-    选择, 模式) and the inputs the listings read (the operand census)."""
-    keys = ("手动", "自动", "循环", "单向", "切换", "选择", "模式")
-    inputs = _paper().record("table2")["inputs"]
-    named = sum(any(k in name for k in keys) for name, _, _ in inputs)
-    census = _gs().census()
-    read = int(census.get("start_reads", 0) + census.get("stop_reads", 0))
-    n = 4
-    return {"selectable": np.full(n, named > 0), "mode_inputs": np.full(n, named),
-            "table2_inputs": np.full(n, len(inputs)), "inputs_read": np.full(n, read)}
+    """The modes secs. 2.1-2.2 claim (manual, automatic, cyclic, single run; each quoted): can
+    anything the paper prints select it? An input of Table 2 our reading says selects it
+    (``table2.devices``) and that the listings read (the operand census)."""
+    modes, devices, reads = _gs().claimed_modes(), _gs().input_devices(), _gs().input_reads()
+    selectors = [d for d in devices if d["selects"]]
+    read = sum(v > 0 for v in reads.values())
+    n = len(modes)
+    return {"selectable": np.array([any(m in d["selects"] and reads[d["address"]] > 0 for d in devices) for m in modes]),  # noqa: E501
+            "mode_inputs": np.full(n, len(selectors)), "table2_inputs": np.full(n, len(devices)),
+            "inputs_read": np.full(n, read)}  # fmt: skip
 
 
 @B.domain("sensing_inputs")
 def _sensing():
-    """Table 2's inputs: does any sense something (a position, a target, a limit), rather than
-    being a push button (按钮) an operator presses?"""
-    inputs = _paper().record("table2")["inputs"]
-    return {"senses": np.array(["按钮" not in name for name, _, _ in inputs])}
+    """Table 2's inputs, as our reading records each (``table2.devices``): does its kind of
+    device sense something (a position, a target, a limit) rather than an operator's press?"""
+    return {"senses": np.array([_gs().DEVICES[d["device"]] for d in _gs().input_devices()])}
 
 
 # --- values and facts -------------------------------------------------------------------------

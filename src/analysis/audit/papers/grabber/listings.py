@@ -14,8 +14,11 @@ from analysis.kinematics.arm import paper_arm
 from analysis.papers import load
 from analysis.plc import stl_eval
 
-__all__ = ["census", "executed", "fig4_repaired", "front_up", "hmi_targets", "movd_damage",
-           "printed_data", "random_poses", "stl_constants", "table4_rows", "targets_table4", "text", "workspace"]  # fmt: skip  # noqa: E501
+__all__ = [
+    "DEVICES", "MODES", "census", "claimed_modes", "executed", "fig4_repaired", "front_up",
+    "hmi_targets", "input_devices", "input_reads", "movd_damage", "printed_data", "random_poses",
+    "stl_constants", "table4_rows", "targets_table4", "text", "workspace",
+]  # fmt: skip
 
 
 def _paper():
@@ -35,10 +38,54 @@ def front_up(P):
     return P[ok], sol.theta[ok, 0]
 
 
-def census() -> dict[str, int]:
-    """The printed Figures 3-6's operand census: reads of the start (SB1) and stop (SB2)
-    inputs, PLS instructions, PTO setup writes (SM), writes of the direction outputs, count
-    subtractions, and Table 2's inputs that are not push buttons (reference switches)."""
+DEVICES = {"push button": False, "selector switch": False, "reference switch": True,
+           "limit switch": True, "sensor": True, "encoder": True}
+"""The kinds of input device a reading of Table 2 may name, and whether each senses anything
+(a position, a target, a limit) rather than an operator's hand."""
+MODES = ("manual", "automatic", "cyclic", "single run")
+"""The modes of operation secs. 2.1-2.2 claim (``sec22_modes.claimed``)."""
+_DEVICE_KEYS = {"address", "name", "device", "selects", "beyond_print"}
+
+
+def input_devices(paper=None) -> list[dict]:
+    """Our reading of each input Table 2 lists (``table2.devices``), one per printed input, in
+    its order; ValueError naming the input for a reading that is not the printed row (address
+    and name), leaves the vocabulary (:data:`DEVICES`, :data:`MODES`) or does not say what it
+    adds to the table."""
+    paper = paper or _paper()
+    rec = paper.record("table2")
+    printed = {addr: name for name, _code, addr in rec["inputs"]}
+    out = []
+    for d in rec.get("devices", ()):
+        where = f"grabber:table2 input {d.get('address')}"
+        if set(d) != _DEVICE_KEYS:
+            raise ValueError(f"{where}: keys {sorted(set(d) ^ _DEVICE_KEYS)} unknown or missing")
+        if printed.get(d["address"]) != d["name"]:
+            raise ValueError(f"{where}: {d['name']!r} is not the printed row")
+        if d["device"] not in DEVICES or not set(d["selects"]) <= set(MODES):
+            raise ValueError(f"{where}: device {d['device']!r} or modes {d['selects']} not in {sorted(DEVICES)}, {MODES}")  # noqa: E501
+        if not d["beyond_print"].strip():
+            raise ValueError(f"{where}: say what the reading adds to the printed table")
+        out.append(d)
+    if [d["address"] for d in out] != list(printed):
+        raise ValueError(f"grabber:table2: readings for {[d['address'] for d in out]}, printed inputs {list(printed)}")  # noqa: E501
+    return out
+
+
+def claimed_modes(paper=None) -> list[str]:
+    """The modes secs. 2.1-2.2 claim (``sec22_modes.claimed``), each quoted from its record."""
+    paper = paper or _paper()
+    out = []
+    for c in paper.record("sec22_modes")["claimed"]:
+        if c["mode"] not in MODES or c["quote"] not in paper.record(c["of"]).text:
+            raise ValueError(f"grabber:sec22_modes: {c['mode']!r} ({c['quote']!r}) is not a mode {MODES} quoted from {c['of']}")  # noqa: E501
+        out.append(c["mode"])
+    return out
+
+
+@cache
+def _operands() -> tuple[tuple[str, ...], tuple[str, ...], tuple[str, ...]]:
+    """The operands Figures 3-6 read and write, and their instructions, in print order."""
     from analysis.plc import stl_eval as stl
 
     reads, writes, ops = [], [], []
@@ -48,6 +95,21 @@ def census() -> dict[str, int]:
             w, r = stl.defs_uses(ins)
             reads += [*r, *(a for a in ins.args if ins.op in ("LD", "A", "AN", "O"))]
             writes += list(w)
+    return tuple(reads), tuple(writes), tuple(ops)
+
+
+def input_reads() -> dict[str, int]:
+    """How often Figures 3-6 read each input Table 2 lists, by address."""
+    reads = _operands()[0]
+    return {addr: reads.count(addr) for _name, _code, addr in _paper().group("TABLE2")["inputs"]}
+
+
+def census() -> dict[str, int]:
+    """The printed Figures 3-6's operand census: reads of the start (SB1) and stop (SB2)
+    inputs, PLS instructions, PTO setup writes (SM), writes of the direction outputs, count
+    subtractions, and Table 2's inputs our reading takes for reference or limit switches
+    (:func:`input_devices`)."""
+    reads, writes, ops = _operands()
     inputs = {code: addr for name_, code, addr in _paper().group("TABLE2")["inputs"]}
     direction = [a for n_, _, a in _paper().group("TABLE2")["outputs"] if n_ == "方向信号"]
     return {
@@ -55,7 +117,7 @@ def census() -> dict[str, int]:
         "pls": ops.count("PLS"), "pto_setup": sum(a.startswith("SM") for a in writes),
         "direction_writes": sum(writes.count(a) for a in direction),
         "count_subtractions": sum(op in ("-D", "-I") for op in ops),
-        "reference_inputs": sum("按钮" not in n_ for n_, _, _ in _paper().group("TABLE2")["inputs"]),  # noqa: E501
+        "reference_inputs": sum(d["device"] in ("reference switch", "limit switch") for d in input_devices()),  # noqa: E501
     }  # fmt: skip
 
 

@@ -83,21 +83,49 @@ def _pairs():
     return {"n_assemblies": n, "n_on_branch": on_branch}
 
 
+PRIOR_READING = {
+    "theory": ("screw theory",),
+    "builds": ("kinematic equations", "mechanism analysis"),
+    "robot": ("serial", "parallel", "hybrid"),
+    "proposes_method": (True, False),
+}
+"""The vocabulary a reading of a cited work (``prior_work.cited`` in ``data/papers/picker.toml``)
+and the novelty claim's own reading (``novelty.reads_as``) are written in: the fields compared."""
+_CITED_KEYS = {"ref", "location", "quote", "said", "method", "beyond_print", *PRIOR_READING}
+
+
+def prior_methods(paper) -> dict:
+    """Each work the introduction reviews, as recorded: is our reading of it (theory, what it
+    builds, the robot's class, whether it proposes a method) the novelty claim's reading of the
+    paper's own contribution? ValueError, naming the work, for a reading that is not anchored
+    in the printed text (its quote right after its citation mark, its entry in the list) or
+    that leaves the vocabulary (:data:`PRIOR_READING`)."""
+    prior, claim = paper.record("prior_work"), paper.record("novelty")["reads_as"]
+    if set(claim) != set(PRIOR_READING):
+        raise ValueError(f"picker:novelty reads_as has {sorted(claim)}; expected {sorted(PRIOR_READING)}")  # noqa: E501
+    same, keys = [], []
+    for c in prior["cited"]:
+        where = f"picker:prior_work cited [{c.get('ref')}]"
+        if set(c) != _CITED_KEYS:
+            raise ValueError(f"{where}: keys {sorted(set(c) ^ _CITED_KEYS)} unknown or missing")
+        if f"[{c['ref']}]" + c["quote"] not in prior.text.replace("等[", "["):
+            raise ValueError(f"{where}: the quote is not the text right after [{c['ref']}]")
+        paper.record(f"references.{c['ref']}")  # the entry, as printed
+        for k, allowed in PRIOR_READING.items():
+            if c[k] not in allowed or type(c[k]) is not type(allowed[0]):
+                raise ValueError(f"{where}: {k} = {c[k]!r} not in {allowed}")
+        if not c["beyond_print"].strip():
+            raise ValueError(f"{where}: say what the reading adds to the printed text")
+        same.append(all(c[k] == claim[k] for k in PRIOR_READING))
+        keys.append(c["ref"])
+    return {"same_method": np.array(same), "key": np.array(keys)}
+
+
 @B.domain("prior_methods")
 def _prior():
-    """The works the introduction reviews ([14]-[18], as it describes them): does a work
-    propose a method (方法) that builds or analyses kinematics from screw theory (旋量/螺旋理論)
-    for a robot with a closed or parallel chain beside a serial one (閉鏈級聯, 混聯, 串聯 and
-    並聯): the paper's own contribution?"""
-    cited = context("picker").paper.record("prior_work")["cited"]
-
-    def same(text: str) -> bool:
-        screw = "旋量理論" in text or "螺旋理論" in text
-        hybrid = "閉鏈級聯" in text or "混聯" in text or ("串聯" in text and "並聯" in text)
-        return screw and hybrid and "方法" in text
-
-    return {"same_method": np.array([same(t) for _, t in cited]),
-            "key": np.array([k for k, _ in cited])}  # fmt: skip
+    """The works the introduction reviews ([14]-[18]), each as our reading of the text's words
+    for it records it (:func:`prior_methods`): the same method as the paper's contribution?"""
+    return prior_methods(context("picker").paper)
 
 
 @B.domain("r3")
