@@ -66,11 +66,12 @@ KIN_ORACLE := $(VENV)/bin/analysis-kin-oracle
 
 st-engine: $(ST_ENGINE) $(KIN_ORACLE)
 
-# make test builds the engine where g++ is (CI: .ci/run installs it); on a machine with only the
-# README's prerequisites the ST engine tests are skipped, saying why (analysis.plc.st_engine).
+# make test, make report and make notebooks build the engine where g++ is (CI: .ci/run installs
+# it); without g++ the ST engine tests are skipped, saying why (analysis.plc.st_engine), and
+# notebook 09, which plays a machine run of the engine, fails naming make st-engine.
 st-engine-if-gxx: | $(STAMP)
 	@if command -v g++ >/dev/null; then $(MAKE) --no-print-directory st-engine; \
-	else echo "make: no g++ on PATH: the IEC 61131-3 ST engine is not built and its tests are skipped (Debian: apt-get install g++)"; fi
+	else echo "make: no g++ on PATH: the IEC 61131-3 ST engine is not built; its tests are skipped and notebook 09's machine run fails, naming make st-engine (Debian: apt-get install g++)"; fi
 
 $(ST_ENGINE): $(ST_SOURCES) | $(STAMP)
 	@command -v g++ >/dev/null || { echo "need g++ to build the ST engine (Debian: apt-get install g++)"; exit 2; }
@@ -116,7 +117,7 @@ test-browser: $(STAMP)
 # Sphinx. Cached (analysis/app/report_cache.py, jupyter-cache in build/report-cache): a notebook
 # whose code and inputs (src/analysis, data/, the lock) are unchanged is not executed again, and
 # when nothing changed since the last build the site is left as it is.
-report: $(STAMP)
+report: $(STAMP) st-engine-if-gxx
 	MPLBACKEND=$(NB_BACKEND) $(PY) -m analysis report --out build/report
 
 # The bench extra (numexpr, EAIK and what EAIK needs) is pinned in requirements-bench.lock
@@ -144,7 +145,7 @@ lab: $(STAMP)
 
 # Re-executes notebooks in place (all, or NB="notebooks/03_table4.ipynb ...") and stores their
 # outputs, the reference nbval compares against: commit them with the change that moved them.
-notebooks: $(STAMP)
+notebooks: $(STAMP) st-engine-if-gxx
 	MPLBACKEND=$(NB_BACKEND) $(PY) tests/refresh_notebooks.py $(NB)
 
 lint: $(STAMP)

@@ -34,7 +34,8 @@ def test_arm_figure_links_through_frames_and_equal_scales(arm):
     q = np.radians([45.0, 10.2087, -155.1291])
     fig = arm_figure(arm, q, [100, 100, 600], title="row 1")
     names = [t.name for t in fig.data]
-    assert names == ["base axis", "arm", "target"]
+    assert names[:3] == ["base axis", "arm", "target"]  # then the frames (test_arm3d_frames)
+    assert [n.split()[0] for n in names[3:]] == ["joint", "link", "tool"]
     pts = np.column_stack([fig.data[1].x, fig.data[1].y, fig.data[1].z])
     np.testing.assert_allclose(pts, arm.frames(q), atol=1e-3)  # rounded to 1 um
     scene = fig.layout.scene
@@ -75,10 +76,25 @@ def test_trajectory_figure_plays_the_gr1_cubic_through_forward_kinematics():
     assert [s.label for s in steps] == [f.name for f in fig.frames] == [f"{v:.2f}" for v in t[::10]]
     dh = arm.dh_table()
     for f, k in zip(fig.frames, range(0, 201, 10), strict=True):
-        (tr,) = f.data
+        tr = f.data[list(f.traces).index(1)]  # the arm (the frames: test_arm3d_frames)
         tip = dh.fk(q[k])[:3, 3]
         np.testing.assert_allclose([tr.x[-1], tr.y[-1], tr.z[-1]], tip, atol=2e-3)
     path = next(tr for tr in fig.data if tr.name == "tool path")
     assert len(path.x) == len(t)
     with pytest.raises(ValueError, match="expected \\(201, 5\\)"):
         trajectory_figure(arm, t, q[:, :4])
+
+
+def test_trajectory_notes_follow_the_frames():
+    """One line per sample, shown under the title at each animation frame, escaped."""
+    from analysis.app.arm3d import trajectory_figure
+
+    arm = load_arm("grabber")
+    notes = [f"Busy <{k}>" for k in range(5)]
+    fig = trajectory_figure(arm, np.arange(5.0), np.zeros((5, 3)), frames=3, notes=notes)
+    assert [f.layout.annotations[0].text for f in fig.frames] == [
+        "Busy &lt;0&gt;", "Busy &lt;2&gt;", "Busy &lt;4&gt;"
+    ]  # fmt: skip
+    assert fig.layout.annotations[0].text == "Busy &lt;0&gt;"
+    with pytest.raises(ValueError, match="notes: 2 lines; expected one per sample \\(5\\)"):
+        trajectory_figure(arm, np.arange(5.0), np.zeros((5, 3)), notes=notes[:2])

@@ -17,6 +17,7 @@ import pytest
 import analysis.app.explore
 import analysis.app.explore_logic
 from analysis.app.arm3d import PLOTLY_MIME
+from analysis.app.arm3d_frames import frame_transforms
 from analysis.app.explore import (
     PoseReport,
     available_arms,
@@ -366,16 +367,21 @@ def test_explorer_display_is_one_widget_with_the_3d_view_inside(arm):
     assert ids["inputs"] == [f"IPY_MODEL_{s.model_id}" for s in ex.target_sliders]
     assert ids["branch"] == f"IPY_MODEL_{ex.branch.model_id}" and ids["units"] == ["mm"] * 3
     assert "arm.solve = function" in ex.view.kinematics  # printed, for the browser
-    assert [t["name"] for t in ex.view.figure["data"]] == ["base axis", "arm", "target"]
+    names = [t["name"] for t in ex.view.figure["data"]]
+    assert names[:3] == ["base axis", "arm", "target"]
+    assert [n.split()[0] for n in names[3:]] == ["joint", "link", "tool"]  # arm3d_frames
     ex.target_sliders[0].value = 150.0
     pose = ex.view.pose
     assert pose["key"] == ex.pose_key() and pose["key"][2] == 150.0
     q = np.radians(ex.report.angles_deg())
     np.testing.assert_allclose(pose["frames"], arm.frames(q), atol=1e-6)
+    # the frames the view draws its joint axes, link frames and tool frame from (3x4 blocks)
+    np.testing.assert_allclose(pose["transforms"], frame_transforms(arm, q)[:, :3], atol=1e-6)
     assert pose["target"] == [150.0, 100.0, 600.0] and "front-up" in pose["title"]
     assert _tip(ex)[0] == pytest.approx(150.0)
     ex.target_sliders[1].value = 500.0  # out of reach: no arm, the target still drawn
     assert ex.view.pose["frames"] is None and "no solution" in ex.view.pose["title"]
+    assert ex.view.pose["transforms"] is None
 
 
 def test_the_3d_view_sends_plotly_js_on_request_and_never_stores_it(arm):

@@ -321,7 +321,9 @@ _DRAWN = """() => {
     const arm = gd._fullData.find(t => t.name === 'arm');
     const tgt = gd._fullData.find(t => t.name === 'target');
     const pts = t => (t && t.x ? t.x.map((x, i) => [x, t.y[i], t.z[i]]) : []);
+    const tool = gd.data.find(t => t.meta && t.meta.arm3d && t.name.startsWith('tool'));
     return {arm: pts(arm), target: pts(tgt), title: gd._fullLayout.title.text,
+            tool: tool ? [pts(tool), tool.meta.arm3d.length] : null,
             draws: (w.arm3dDraws || []).length};
 }"""
 
@@ -372,6 +374,20 @@ def _drawn_after_change(page, timeout_ms: float = 20_000) -> tuple[dict, float]:
     )
     PHASES.append(ms)
     return _drawn(page), ms[-3]
+
+
+def _assert_tool_frame(drawn: dict, arm, target, branch: str) -> None:
+    """The tool frame drawn (js/arm3d_view.js from the printed kinematics' transforms, or the
+    kernel's) is the FK's (analysis.app.arm3d_frames): origin and axes, read back from the
+    triad's points (o, o + L x, gap, o, o + L y, gap, o, o + L z, gap)."""
+    import numpy as np
+
+    sol = arm.solve(target, (branch,))
+    T = arm.tool_transform(sol.theta[0])
+    pts, length = drawn["tool"]
+    pts = np.array([[np.nan if v is None else v for v in p] for p in pts], dtype=float)
+    np.testing.assert_allclose(pts[0], T[:3, 3], atol=2e-3)
+    np.testing.assert_allclose((pts[[1, 4, 7]] - pts[0]).T / length, T[:3, :3], atol=1e-6)
 
 
 def _settled(page, expect, timeout_s: float = 20) -> dict:
@@ -457,6 +473,7 @@ def test_explorer_in_jupyterlab(lab, lab_page, shots):
         expect = _fk_pose(arm, target, "front-up")
         assert _close(drawn["arm"], expect), (k, target, drawn["arm"], expect.tolist())
         assert _close(drawn["target"], [target]), drawn["target"]
+        _assert_tool_frame(drawn, arm, target, "front-up")  # the tool frame, drawn with it
         assert_arm_on_screen(page, PLOT, expect, previous=shown)  # the picture moved too
         shown = expect
     page.wait_for_function(

@@ -311,3 +311,86 @@ def test_the_branch_table_is_whole_for_five_joints(explorer_page, shots):
         assert not out["clipped"], (name, out)
     page.locator(".static-explorer .explorer-table").scroll_into_view_if_needed()
     page.screenshot(path=shots / "site-explorer-table-gr1.png")
+
+
+_FRAMES = """() => { const gd = document.querySelector('.static-explorer .js-plotly-plot');
+    const grab = t => ({name: t.name, spec: t.meta.arm3d, visible: t.visible,
+                        pts: t.x.map((x, i) => [x, t.y[i], t.z[i]])});
+    return gd.data.filter(t => t.meta && t.meta.arm3d).map(grab); }"""
+
+
+def _frames_drawn(page) -> dict:
+    """The joint-axes and frame traces as drawn (the figure's data), by their first word."""
+    return {t["name"].split()[0]: t for t in page.evaluate(_FRAMES)}
+
+
+def _tool_of(trace) -> tuple[np.ndarray, np.ndarray]:
+    """Origin and rotation (columns x, y, z) read back from a drawn tool triad."""
+    pts = np.array([[np.nan if v is None else v for v in p] for p in trace["pts"]], dtype=float)
+    return pts[0], (pts[[1, 4, 7]] - pts[0]).T / trace["spec"]["length"]
+
+
+def _assert_link_frames(trace: dict, q_deg) -> None:
+    """The grabber's link frames drawn are those of the FK at ``q_deg`` (arm3d_frames)."""
+    from analysis.app.arm3d_frames import frame_transforms, segments
+
+    want = segments(trace["spec"], frame_transforms(paper_arm(), np.radians(q_deg)))
+    got = np.array([[np.nan if v is None else v for v in p] for p in trace["pts"]], dtype=float)
+    np.testing.assert_allclose(got, want, atol=1e-9)
+
+
+def _legend_click(page, text: str) -> None:
+    """A click on the legend entry that starts with ``text`` (it shows or hides the trace)."""
+    entry = page.locator(".static-explorer .legend .traces", has_text=text)
+    entry.locator(".legendtoggle").click()
+
+
+def _fk_mode(page, name: str, q_deg) -> tuple[dict, str]:
+    """Arm ``name`` in FK mode at joints ``q_deg`` typed into the boxes; the frames drawn and
+    the path of the last redraw."""
+    _select_arm(page, name)
+    page.locator(".static-explorer .explorer-fk").check()
+    for k, v in enumerate(q_deg):  # the last one off by 1 deg: the change below draws
+        _set(page, f"θ{k + 1} [°]", v + (k == len(q_deg) - 1))
+    drawn, _ = _change(page, f"θ{len(q_deg)} [°]", q_deg[-1])
+    return _frames_drawn(page), drawn["path"]
+
+
+def test_the_drawn_tool_frame_is_fk_json(explorer_page):
+    """Issue 31 item 3: joint axes, link frames and the tool frame drawn, redrawn in place
+    with the arm. In FK mode the tool triad read back from the page is ``fk --json``'s
+    rotation and position (the real CLI), for the grabber and the 5-joint GR-1; the grabber's
+    front and back branches (one tool point, the same stick figure) draw different triads;
+    link frames hidden from the legend are still kept current, without a whole redraw."""
+    page = explorer_page
+    drawn = {}
+    for name, q_deg in (("grabber", [45.0, 10.21, -155.13]), ("grabber", [-135.0, 169.79, 155.13]),
+                        ("gr1", [30.0, 40.0, -60.0, -70.0, 10.0])):  # fmt: skip
+        frames, path = _fk_mode(page, name, q_deg)
+        assert path == "in-place", (name, q_deg, path)
+        assert set(frames) == {"joint", "link", "tool"}, frames.keys()
+        doc = _fk_json(name, q_deg)
+        o, R = _tool_of(frames["tool"])
+        np.testing.assert_allclose(o, doc["position_mm"], atol=1e-9, rtol=0)
+        np.testing.assert_allclose(R, doc["rotation"], atol=1e-9, rtol=0)
+        arm = load_arm(name)
+        n_axes = len(frames["joint"]["pts"]) // 3
+        assert n_axes == arm.n_joints, (name, n_axes)
+        drawn[(name, q_deg[0])] = (frames, page.evaluate(_DRAWN)["arm"])
+        page.locator(".static-explorer .explorer-fk").uncheck()
+    (front, arm_f), (back, arm_b) = drawn[("grabber", 45.0)], drawn[("grabber", -135.0)]
+    assert _close(arm_f, arm_b, atol=0.05)  # the stick figures: the same (to the 2 decimals)
+    assert np.abs(_tool_of(front["tool"])[1] - _tool_of(back["tool"])[1]).max() > 1.0
+    # the link frames, hidden at first (in the legend), kept current: shown by a click
+    frames, path = _fk_mode(page, "grabber", [20.0, 30.0, -40.0])
+    assert path == "in-place" and frames["link"]["visible"] == "legendonly", path
+    _assert_link_frames(frames["link"], [20.0, 30.0, -40.0])
+    _legend_click(page, "link frames")
+    page.wait_for_function("""() => document.querySelector('.static-explorer .js-plotly-plot')
+        .data.some(t => t.name.startsWith('link') && t.visible === true)""")
+    drawn, _ = _change(page, "θ1 [°]", 25.0)  # shown: redrawn in place with the arm
+    assert drawn["path"] == "in-place", drawn
+    _assert_link_frames(_frames_drawn(page)["link"], [25.0, 30.0, -40.0])
+    _legend_click(page, "link frames")
+    page.locator(".static-explorer .explorer-fk").uncheck()
+    assert page.js_errors == [], page.js_errors

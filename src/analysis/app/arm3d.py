@@ -43,7 +43,9 @@ forward kinematics.
 from __future__ import annotations
 
 import hashlib
+import html
 import json
+from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
@@ -51,6 +53,8 @@ from pathlib import Path
 import numpy as np
 import numpy.typing as npt
 import plotly.graph_objects as go
+
+from analysis.app.arm3d_frames import frame_spec, frame_traces, frame_transforms, segments
 
 try:  # the widget needs anywidget (pinned in requirements.lock); the figures do not
     import anywidget
@@ -67,6 +71,8 @@ ROUND_MM = 3
 """Decimals [mm] of the coordinates in a figure: 1 µm, far below what a figure can show and
 far above float64 round-off (~1e-13 mm), so stored outputs are reproducible."""
 CONFIG = {"displaylogo": False, "responsive": True, "scrollZoom": True}
+PATH_POINTS = 600
+"""The most samples a trajectory's tool path is drawn through (evenly spread)."""
 _FONT = {"family": "DejaVu Sans, Arial, sans-serif", "size": 13}
 
 
@@ -130,9 +136,13 @@ def _round(a: npt.ArrayLike) -> list:
     return (np.round(np.asarray(a, dtype=float), ROUND_MM) + 0.0).tolist()
 
 
-def _arm_traces(arm, q, target, box: Box, keep_arm: bool = False) -> list[go.Scatter3d]:
+def _arm_traces(
+    arm, q, target, box: Box, keep_arm: bool = False, links: bool = True
+) -> list[go.Scatter3d]:
     """The base axis (dashed), the arm through its frame origins at ``q`` [rad] (none if
-    ``q`` is None, or an empty one with ``keep_arm``) and the target's cross (x, y, z [mm])."""
+    ``q`` is None, or an empty one with ``keep_arm``), the target's cross (x, y, z [mm]), then
+    the joint axes, link frames and tool frame at ``q`` (:mod:`analysis.app.arm3d_frames`;
+    present, empty, with ``keep_arm`` and no ``q``; the link frames only with ``links``)."""
     traces = [
         go.Scatter3d(
             x=[0.0, 0.0],
@@ -175,6 +185,11 @@ def _arm_traces(arm, q, target, box: Box, keep_arm: bool = False) -> list[go.Sca
                 hovertemplate="target (%{x:.1f}, %{y:.1f}, %{z:.1f}) mm<extra></extra>",
             )
         )
+    if q is not None or keep_arm:
+        T = frame_transforms(arm, np.asarray(q, dtype=float)) if q is not None else None
+        spec = frame_spec(arm, float(box.span.max()))
+        spec = spec if links else [s for s in spec if not s["name"].startswith("link")]
+        traces += frame_traces(spec, T, _round)
     return traces
 
 
@@ -224,6 +239,7 @@ def arm_figure(
     box: Box | None = None,
     height: int = 520,
     keep_arm: bool = False,
+    link_frames: bool = True,
 ) -> go.Figure:
     """The arm at joint angles ``q`` [rad] as a rotatable 3D stick figure [mm].
 
@@ -245,6 +261,9 @@ def arm_figure(
         Axis ranges [mm]; default :func:`workspace_box` of the arm.
     keep_arm : bool
         Draw the arm and target traces even when empty (the widget redraws them in place).
+    link_frames : bool
+        Draw the link frames too (hidden at first, shown from the legend); the joint axes
+        and the tool frame are always drawn (:mod:`analysis.app.arm3d_frames`).
 
     Examples
     --------
@@ -257,8 +276,13 @@ def arm_figure(
     [100, 100, 600]
     """
     box = box or workspace_box(arm)
-    traces = _arm_traces(arm, q, target, box, keep_arm)
+    traces = _arm_traces(arm, q, target, box, keep_arm, link_frames)
     return go.Figure(data=traces, layout=_layout(arm, title, box, height))
+
+
+def _spread(m: int, k: int) -> npt.NDArray[np.intp]:
+    """At most ``k`` indices spread evenly over ``m`` samples, the first and the last kept."""
+    return np.unique(np.linspace(0, m - 1, min(k, m)).round().astype(int))
 
 
 def trajectory_figure(
@@ -270,11 +294,13 @@ def trajectory_figure(
     box: Box | None = None,
     height: int = 560,
     frames: int = 41,
+    notes: Sequence[str] | None = None,
 ) -> go.Figure:
     """A joint trajectory played in the 3D view: :func:`arm_figure` at the first sample, the
-    tool's whole path (dashed), the arm at ``frames`` times spread evenly over the samples
-    as plotly animation frames, a time slider (one step per frame, labelled in s) and
-    play / pause buttons. Works in JupyterLab and on the static site (plotly.js alone).
+    tool's whole path (dashed), the arm with its joint axes and tool frame at ``frames``
+    times spread evenly over the samples as plotly animation frames, a time slider (one step
+    per frame, labelled in s) and play / pause buttons. Works in JupyterLab and on the static
+    site (plotly.js alone).
 
     Parameters
     ----------
@@ -282,6 +308,9 @@ def trajectory_figure(
         Times [s], increasing.
     q : array_like, shape (m, n)
         Joint values [rad | mm] at ``t`` (e.g. seed 004's cubic, eqs. 5.3-5.4).
+    notes : sequence of str, optional
+        One line per sample (m,), shown under the title at each frame (a machine run's
+        outputs: :func:`analysis.app.arm3d_trace.machine_run_figure`); plain text, escaped.
 
     >>> from analysis.kinematics.arm import load_arm
     >>> fig = trajectory_figure(load_arm("gr1"), [0.0, 1.0], np.zeros((2, 5)), frames=2)
@@ -295,11 +324,15 @@ def trajectory_figure(
         raise ValueError(f"q: shape {q.shape}; expected ({len(t)}, {arm.n_joints})")
     if not 2 <= frames <= 400:
         raise ValueError(f"frames={frames}: 2 .. 400 animation frames")
-    idx = np.unique(np.linspace(0, len(t) - 1, min(frames, len(t))).round().astype(int))
+    if notes is not None and len(notes) != len(t):
+        raise ValueError(f"notes: {len(notes)} lines; expected one per sample ({len(t)})")
+    idx = _spread(len(t), frames)
     pts = arm.frames(q[idx])  # (k, n_frames, 3): every pose in one call
-    path = arm.fk(q)
+    # the tool's path through at most PATH_POINTS samples (a machine run has one per cycle)
+    path = arm.fk(q[_spread(len(t), PATH_POINTS)])
     box = box or workspace_box(arm)
-    fig = arm_figure(arm, q[0], None, title=title, box=box, height=height)
+    # no link frames: 41 poses of them would triple the figure for traces hidden at first
+    fig = arm_figure(arm, q[0], None, title=title, box=box, height=height, link_frames=False)
     fig.add_trace(
         go.Scatter3d(
             x=_round(path[:, 0]), y=_round(path[:, 1]), z=_round(path[:, 2]), mode="lines",
@@ -308,15 +341,35 @@ def trajectory_figure(
         )
     )  # fmt: skip
     arm_at = [k for k, tr in enumerate(fig.data) if tr.name == "arm"]
+    # the joint axes, link frames and tool frame move with the arm (arm3d_frames)
+    drawn = [(k, tr.meta["arm3d"]) for k, tr in enumerate(fig.data) if tr.meta]
+    T = frame_transforms(arm, q[idx])  # (k, frames, 4, 4)
+    extra = [segments(spec, T) for _, spec in drawn]  # (k, m, 3) each
+
+    def xyz(p) -> dict:
+        return dict(zip("xyz", ([None if v != v else v for v in _round(p[:, c])]
+                                for c in range(3)), strict=True))  # fmt: skip
+
     labels = [f"{v:.2f}" for v in t[idx]]
+
+    def note(k: int) -> dict:  # the line under the title at sample k (plotly's text markup)
+        text = html.escape(str(notes[k]), quote=False)
+        return {"annotations": [{"text": text, "x": 0.02, "y": 1.0, "xref": "paper",
+                                 "yref": "paper", "xanchor": "left", "yanchor": "top",
+                                 "showarrow": False}]}  # fmt: skip
+
     fig.frames = [
         go.Frame(
-            data=[go.Scatter3d(x=_round(p[:, 0]), y=_round(p[:, 1]), z=_round(p[:, 2]))],
-            traces=arm_at,
+            data=[go.Scatter3d(**xyz(p)), *(go.Scatter3d(**xyz(e[i])) for e in extra)],
+            traces=arm_at + [k for k, _ in drawn],
             name=label,
+            layout=note(idx[i]) if notes is not None else None,
         )
-        for p, label in zip(pts, labels, strict=True)
+        for i, (p, label) in enumerate(zip(pts, labels, strict=True))
     ]
+    if notes is not None:
+        fig.update_layout(note(idx[0]))
+        fig.update_layout(legend={"y": 0.9})  # below the note
     still = {"mode": "immediate", "frame": {"duration": 0, "redraw": True},
              "transition": {"duration": 0}}  # fmt: skip
     fig.update_layout(

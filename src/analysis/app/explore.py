@@ -39,6 +39,7 @@ import numpy as np
 import numpy.typing as npt
 
 from analysis.app.arm3d import Arm3DWidget, arm_figure, figure_bundle, workspace_box
+from analysis.app.arm3d_frames import frame_transforms
 from analysis.app.explore_js import arm_module_js
 from analysis.app.explore_logic import (
     FK_CAPTION,
@@ -281,16 +282,19 @@ class Explorer(W.VBox):
         ]
 
     def _draw(self, q, target, title: str) -> None:
-        """Send the pose to the 3D view: the frame origins at ``q`` [rad] (None: no solution;
-        the view keeps the last pose, greyed)."""
+        """Send the pose to the 3D view: the frame origins at ``q`` [rad] and the frames'
+        transforms (joint axes, link and tool frames: :mod:`analysis.app.arm3d_frames`); None:
+        no solution, the view keeps the last pose, greyed."""
         self._pose = (q, target, title)
         if q is not None:
             self._last_q = np.asarray(q, dtype=float)
         frames = None if q is None else self.arm.frames(q)
         t = None if target is None else np.asarray(target, dtype=float)[:3]
+        T = None if q is None else frame_transforms(self.arm, q)[:, :3, :]  # axes, frames
         self.view.pose = {
             "key": self.pose_key(),
             "frames": None if frames is None else np.round(frames, 6).tolist(),
+            "transforms": None if T is None else (np.round(T, 6) + 0.0).tolist(),
             "target": None if t is None else np.round(t, 6).tolist(),
             "title": title,
         }

@@ -134,7 +134,7 @@ def frames_graph(arm) -> Graph:
     """The origins of the arm's frames 0..n (:meth:`Arm.frames`) recorded from its D-H chain,
     outputs ``f<i>:<x|y|z>`` [mm], and the tool frame's rotation (the last frame's, as
     :func:`analysis.kinematics.forward.chain_points`), outputs ``R:<row><col>``, for joint
-    inputs ``q0 .. q<n-1>`` [rad]."""
+    inputs ``q0 .. q<n-1>`` [rad]; and every frame's rotation, ``R<i>:<row><col>``, i = 1..n."""
     g = Graph()
     m = TraceOps(g)
     q = [g.input(f"q{j}") for j in range(arm.n_joints)]
@@ -142,6 +142,9 @@ def frames_graph(arm) -> Graph:
     origins = [(0.0, 0.0, 0.0), *((T[0][3], T[1][3], T[2][3]) for T in Ts)]
     g.outputs = {f"f{i}:{'xyz'[k]}": c for i, o in enumerate(origins) for k, c in enumerate(o)}
     g.outputs |= {f"R:{r}{c}": Ts[-1][r][c] for r in range(3) for c in range(3)}
+    # every frame's rotation: the joint axes and frames drawn (analysis.app.arm3d_frames)
+    g.outputs |= {f"R{i}:{r}{c}": T[r][c] for i, T in enumerate(Ts, start=1)
+                  for r in range(3) for c in range(3)}  # fmt: skip
     return g
 
 
@@ -162,7 +165,7 @@ def _module(arm) -> str:
     from analysis.app.explain import CHOOSE_THETA1, ROUNDS, SCAN, TEMPLATES, reach_sphere
     from analysis.app.explore_logic import FK_CAPTION, IK_CAPTION
 
-    n_frames = (len(frames_graph(arm).outputs) - 9) // 3
+    n_frames = sum(k.endswith(":x") for k in frames_graph(arm).outputs)  # origins f<i>:x
     center, reach = reach_sphere(arm)
     on_axis = "theta1_on_axis" in arm.closed_form.options
     meta = {
@@ -228,6 +231,13 @@ def _module(arm) -> str:
         "  const r = raw_frames(q);\n"
         "  return [0, 1, 2].map((i) => [0, 1, 2].map((j) => r['R:' + i + j]));\n"
         "};\n"
+        "arm.transforms = function (q) {\n"
+        "  const r = raw_frames(q), out = [[[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]];\n"
+        "  for (let i = 1; i < arm.n_frames; i++) out.push([0, 1, 2].map((j) => [\n"
+        "    r['R' + i + ':' + j + '0'], r['R' + i + ':' + j + '1'], r['R' + i + ':' + j + '2'],\n"
+        "    r['f' + i + ':' + 'xyz'[j]]]));\n"
+        "  return out;\n"
+        "};\n"
         "arm.frames = function (q) {\n"
         "  const r = raw_frames(q), pts = [];\n"
         "  for (let i = 0; i < arm.n_frames; i++) "
@@ -255,6 +265,9 @@ def arm_module_js(arm) -> str:
     * ``pulses(q)``: the whole pulses of joint values ``q`` (eqs. 20-22);
     * ``frames(q)``: the frame origins [[x, y, z], ...] [mm] for joint angles ``q`` [rad], as
       :meth:`Arm.frames`;
+    * ``transforms(q)``: every frame's 3x4 block ``[R | o]`` (3 rows), the base frame first,
+      as :func:`analysis.app.arm3d_frames.frame_transforms` (what the 3D view draws its joint
+      axes and frames from);
     * ``tool_rotation(q)``: the tool frame's rotation (3 rows), as
       :func:`analysis.kinematics.pose.pose`'s ``rotation`` (its RPY angles are
       ``js/static_explorer.js``'s ``rpy``, as :func:`analysis.kinematics.rpy.rpy_from_matrix`,

@@ -141,14 +141,17 @@
     if (!scene || !scene.glplot || typeof scene.glplot.redraw !== "function" || !scene.traces) return false;
     if (typeof scene.glplot.add !== "function" || typeof scene.glplot.remove !== "function") return false;
     const full = idx.map((i) => (gd._fullData || []).find((t) => t.index === i));
-    const objs = full.map((t) => t && scene.traces[t.uid]);
-    if (objs.some((o) => !o || typeof o.update !== "function") || idx.some((i) => !gd.data[i])) return false;
+    // a trace hidden from the legend (the link frames, say) has no WebGL objects: its new
+    // points go into its data only, which plotly draws when it is shown again
+    const off = idx.map((i) => Boolean(gd.data[i]) && gd.data[i].visible !== undefined && gd.data[i].visible !== true);
+    const objs = full.map((t, k) => (off[k] ? null : t && scene.traces[t.uid]));
+    if (objs.some((o, k) => !off[k] && (!o || typeof o.update !== "function")) || idx.some((i) => !gd.data[i])) return false;
     // a trace plotly has never drawn (empty from the start) has no objects yet: plotly draws it
-    if (objs.some((o) => !o.arm3dHidden && !GL_PARTS.some((k) => o[k]))) return false;
+    if (objs.some((o, k) => !off[k] && !o.arm3dHidden && !GL_PARTS.some((p) => o[p]))) return false;
     idx.forEach((i, k) => {
       for (const c of ["x", "y", "z"]) {
         gd.data[i][c] = data[c][k];
-        full[k][c] = data[c][k]; // (full[k]._input is gd.data[i])
+        if (full[k]) full[k][c] = data[c][k]; // (full[k]._input is gd.data[i])
       }
       if (style && style[k]) { // the arm's colours: its own, or greyed (a pose kept, stale)
         for (const part of ["line", "marker"]) {
@@ -156,7 +159,9 @@
           if (full[k][part]) full[k][part].color = style[k][part];
         }
       }
-      if (!data.x[k].length) {
+      if (off[k]) {
+        // drawn when shown again (from gd.data)
+      } else if (!data.x[k].length) {
         hide(scene, objs[k]);
       } else {
         // after a redraw with the trace empty, plotly's full trace is a stub (visible: false,
@@ -174,15 +179,38 @@
     return true;
   }
 
+  /** The points of one joint-axes or frames trace (its `meta.arm3d`, written by
+   * analysis.app.arm3d_frames.frame_spec) for the frames `T` (3x4 blocks [R | o], base first):
+   * {x, y, z}, null between segments. As arm3d_frames.segments: per joint axis o -/+ L/2 z;
+   * per triad o -> o + L x, o -> o + L y, o -> o + L z. No frames: empty. */
+  function segments(spec, T) {
+    const x = [], y = [], z = [];
+    const put = (p) => { x.push(p[0]); y.push(p[1]); z.push(p[2]); };
+    const gap = [null, null, null];
+    if (!T || !T.length) return {x, y, z};
+    const L = spec.length;
+    for (const f of spec.frames) {
+      const M = T[f];
+      const o = [M[0][3], M[1][3], M[2][3]];
+      const along = (k, s) => [0, 1, 2].map((r) => o[r] + s * M[r][k]);
+      if (spec.kind === "axes") {
+        put(along(2, -0.5 * L)); put(along(2, 0.5 * L)); put(gap);
+      } else {
+        for (let k = 0; k < 3; k++) { put(o); put(along(k, L)); put(gap); }
+      }
+    }
+    return {x, y, z};
+  }
+
   const STALE = {line: "#8f969e", marker: "#6b7178"}; // a pose kept without a solution: grey
   const POSE_TOL_MM = 1e-6; // the kernel rounds its frames to 1e-6 mm (explore.Explorer._draw)
 
-  /** Two poses [frames, target, title] that draw the same: titles equal, every coordinate
-   * within POSE_TOL_MM. */
+  /** Two poses [frames, target, title, transforms] that draw the same: titles equal, every
+   * coordinate (and rotation entry) within POSE_TOL_MM. */
   function samePose(a, b) {
     if (!a || !b || a[2] !== b[2]) return false;
-    const flat = (v) => (v == null ? null : [].concat(...v.map((p) => (Array.isArray(p) ? p : [p]))));
-    for (let k = 0; k < 2; k++) {
+    const flat = (v) => (v == null ? null : v.flat(Infinity));
+    for (const k of [0, 1, 3]) {
       const u = flat(a[k]), w = flat(b[k]);
       if (u === null || w === null) { if (u !== w) return false; continue; }
       if (u.length !== w.length || u.some((x, i) => !(Math.abs(x - w[i]) <= POSE_TOL_MM))) return false;
@@ -210,6 +238,11 @@
       this.target = this.names.indexOf("target");
       this.last = null;
       this.lastFrames = null; // the last pose with a solution: kept, greyed, when one has none
+      this.lastTransforms = null;
+      // the joint axes, link frames and tool frame (traces with meta.arm3d: arm3d_frames), and
+      // their own colours (put back after a greyed pose)
+      this.frameTraces = fig.data.map((t, i) => [i, t]).filter(([, t]) => t.meta && t.meta.arm3d)
+        .map(([i, t]) => ({i, spec: t.meta.arm3d, colours: {line: t.line.color, marker: t.marker.color}}));
       const armTrace = fig.data[this.arm] || {};
       this.colours = {
         line: (armTrace.line && armTrace.line.color) || "#1f77b4",
@@ -223,15 +256,17 @@
     }
 
     /** Redraw the arm through `frames` ([[x, y, z], ...] mm, or null: no solution), the
-     * target cross at `target` and the title; resolves once it is on screen. */
-    draw(frames, target, title, source) {
+     * target cross at `target`, the title, and the joint axes and frames from `transforms`
+     * (3x4 blocks, base first: arm.transforms(q), or the kernel's); resolves once it is on
+     * screen. */
+    draw(frames, target, title, source, transforms) {
       const asked = performance.now();
       // no solution: the last pose stays where it was, greyed (the view does not jump, and
       // what the arm last did stays in sight); the first pose of an arm has none to keep
       const stale = !frames && Boolean(this.lastFrames);
-      if (frames) this.lastFrames = frames;
-      else if (stale) frames = this.lastFrames;
-      const pose = [frames, target, title];
+      if (frames) { this.lastFrames = frames; this.lastTransforms = transforms || null; }
+      else if (stale) { frames = this.lastFrames; transforms = this.lastTransforms; }
+      const pose = [frames, target, title, frames ? transforms || null : null];
       // the same pose again (the kernel's, rounded to 1e-6 mm, after the browser's): no redraw
       if (samePose(pose, this.last)) return this.queue;
       this.last = pose;
@@ -249,6 +284,12 @@
         data.z.push(t.map((p) => p[2]));
         idx.push(this.target);
         style.push(null);
+      }
+      for (const f of this.frameTraces) { // joint axes, link frames, tool frame
+        const seg = segments(f.spec, frames ? transforms : null);
+        data.x.push(seg.x); data.y.push(seg.y); data.z.push(seg.z);
+        idx.push(f.i);
+        style.push(stale ? STALE : f.colours);
       }
       let started, plotted, path;
       this.queue = this.queue
@@ -299,7 +340,7 @@
       title += "FK";
       const frames = arm.frames(q);
       target = frames[frames.length - 1];
-      return {frames, target, q, title: title + " · θ = (" + q.map((v) => num(v * 180 / Math.PI, 2)).join(", ") + ")°"};
+      return {frames, target, q, transforms: arm.transforms(q), title: title + " · θ = (" + q.map((v) => num(v * 180 / Math.PI, 2)).join(", ") + ")°"};
     }
     const ix = ["px", "py", "pz"].map((k) => arm.inputs.indexOf(k));
     if (ix.every((i) => i >= 0)) target = ix.map((i) => p[i]);
@@ -308,8 +349,8 @@
     title += branch;
     if (!b || !b.ok) return {frames: null, target, q: null, title: title + " · no solution", status: s};
     title += " · θ = (" + b.q.map((v) => num(v * 180 / Math.PI, 2)).join(", ") + ")°";
-    return {frames: arm.frames(b.q), target, q: b.q, title, status: s};
+    return {frames: arm.frames(b.q), transforms: arm.transforms(b.q), target, q: b.q, title, status: s};
   }
 
-  globalThis.analysisArm3d = {plotly, View, pose, num};
+  globalThis.analysisArm3d = {plotly, View, pose, num, segments};
 })();

@@ -91,7 +91,7 @@ async function render({model, el}) {
       const theta1 = value(ctl.axis) && arm.on_axis ? value(ctl.axisDeg) * rad : null;
       r = A.pose(arm, {branch: value(ctl.branch), p, theta1});
     }
-    view.draw(r.frames, r.target, r.title, "local");
+    view.draw(r.frames, r.target, r.title, "local", r.transforms);
   }
 
   function kernel() {
@@ -101,7 +101,7 @@ async function render({model, el}) {
     // kernel's pose is for the controls' values, what the browser tests wait on)
     el.arm3dKernelCurrent = !(ctl && p.key && !sameKey(p.key, key()));
     if (!el.arm3dKernelCurrent) return;
-    view.draw(p.frames, p.target, p.title, "kernel");
+    view.draw(p.frames, p.target, p.title, "kernel", p.transforms);
   }
 
   const onFigure = () => view.reset(model.get("figure")).then(kernel);

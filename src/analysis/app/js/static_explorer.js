@@ -203,7 +203,7 @@
         table.replaceChildren(branchTable(s, arm.explain.captions.ik, p, t1));
       }
       if (r.q) lastQ = r.q;
-      view.draw(r.frames, r.target, r.title, "static");
+      view.draw(r.frames, r.target, r.title, "static", r.transforms);
     }
 
     /** A branch's own status word (as solved alone: explore_logic.pose_report's table). */
