@@ -58,10 +58,14 @@ AWLSIM_MEMO := $(CURDIR)/build/awlsim-memo
 # when the pin or the driver changes; the binary reports the key of both (st_run --key). No
 # download or compilation at test time. The second binary, analysis-st-machine
 # (tools/st-engine/st_machine.cpp), runs a machine program cycle by cycle with simulated axes
-# (analysis.plc.st_engine.run_machine, stl-run --dialect st); same sources, same key.
+# (analysis.plc.st_engine.run_machine, stl-run --dialect st); same sources, same key. The sdist's
+# simulated axis is patched after unpacking (ST_PATCH: two upstream defects, velocity steps and
+# the overrun-and-return of MC_Halt/MC_Stop, each explained in the patch's header).
 ST_ENGINE := $(VENV)/bin/analysis-st-run
 ST_MACHINE := $(VENV)/bin/analysis-st-machine
-ST_SOURCES := tools/st-engine/requirements.txt tools/st-engine/st_run.cpp tools/st-engine/st_machine.cpp
+ST_PATCH := tools/st-engine/pyplcopen-0.21.0-motion.patch
+ST_SOURCES := tools/st-engine/requirements.txt tools/st-engine/st_run.cpp tools/st-engine/st_machine.cpp \
+  $(ST_PATCH)
 KIN_ORACLE := $(VENV)/bin/analysis-kin-oracle
 
 st-engine: $(ST_ENGINE) $(KIN_ORACLE)
@@ -79,6 +83,7 @@ $(ST_ENGINE): $(ST_SOURCES) | $(STAMP)
 	$(PY) -m pip download --quiet --no-deps --no-binary :all: --require-hashes \
 	  -r tools/st-engine/requirements.txt -d build/st-engine
 	tar -xzf build/st-engine/pyplcopen-0.21.0.tar.gz -C build/st-engine pyplcopen-0.21.0/core pyplcopen-0.21.0/LICENSE
+	git apply --directory=build/st-engine -p1 $(ST_PATCH)
 	g++ -std=c++17 -O2 -ffp-contract=off -fno-fast-math \
 	  -DST_RUN_KEY='"'$$(cat $(ST_SOURCES) | sha256sum | cut -c1-16)'"' \
 	  -Ibuild/st-engine/pyplcopen-0.21.0/core tools/st-engine/st_run.cpp -o $@.tmp

@@ -37,6 +37,7 @@ def test_a_machine_run_plays_as_the_engine_ran_it(tmp_path, machine_engine, caps
     np.testing.assert_array_equal(trace.q, ref.q)
     np.testing.assert_array_equal(trace.v, ref.v)
     assert list(trace.outputs) == list(ref.outputs)
+    np.testing.assert_array_equal(trace.pos, ref.pos)  # plc_q1..plc_qN: what the PLC reads
     for k, v in trace.outputs.items():
         np.testing.assert_array_equal(np.asarray(v, dtype=float), ref.outputs[k], err_msg=k)
     assert trace.outputs["Busy"].dtype == bool and trace.outputs["Busy"].any()

@@ -1,7 +1,8 @@
 """A machine run played in the 3D view (issue 31 item 3): the trace that ``python -m analysis
 stl-run PROGRAM --dialect st --scenario S.csv --trace T.csv`` writes (issue 29 item 3, a
 contract: one row per cycle, ``t_s``, ``q1 .. qN`` in joint units, deg or mm, ``v1 .. vN`` per
-second, then every output of the program by name, a BOOL as TRUE/FALSE) read strictly
+second, then every output of the program by name, a BOOL as TRUE/FALSE, then
+``plc_q1 .. plc_qN``, what the PLC reads of each axis, into ``pos``) read strictly
 (:func:`read_trace`) and drawn with a time slider, the outputs at each frame under the title
 (:func:`machine_run_figure`, :func:`analysis.app.arm3d.trajectory_figure`: the arm, its joint
 axes and its tool frame from the arm's forward kinematics at the trace's joint values).
@@ -29,7 +30,7 @@ import numpy as np
 from analysis import validate
 from analysis.kinematics.solution import MAX_JOINT_DEG, MAX_JOINT_MM
 from analysis.kinematics.status import STATUS_TEXT
-from analysis.plc.machine.checks import Trace
+from analysis.plc.machine.checks import PLC_COLUMN, Trace
 from analysis.plc.machine.offline import MAX_CYCLES
 from analysis.plc.machine.spec import MACHINE_STATUS
 from analysis.safe_io import InputError, read_table
@@ -120,7 +121,9 @@ def read_trace(path, arm) -> Trace:
     n = arm.n_joints
     _joint_columns(head, n, where)
     joints = ["t_s", *(f"q{j}" for j in range(1, n + 1)), *(f"v{j}" for j in range(1, n + 1))]
-    cols = read_table(path, required=joints, numeric=joints, allow_extra=True)
+    plc = [PLC_COLUMN.format(j) for j in range(1, n + 1)]  # what the PLC reads (stl-run)
+    plc = plc if all(h in head for h in plc) else []
+    cols = read_table(path, required=joints + plc, numeric=joints + plc, allow_extra=True)
     rows = len(cols["t_s"])
     if not 2 <= rows <= MAX_TRACE_ROWS:
         raise ValueError(f"{where}: {rows} rows; a run to play has 2 .. {MAX_TRACE_ROWS}")
@@ -139,8 +142,9 @@ def read_trace(path, arm) -> Trace:
         k, j = (int(i) for i in bad[0])
         raise ValueError(f"{where}: row {k + 1}, column q{j + 1}: {q[k, j]:g} {units[j]} is "
                          f"beyond +-{bound[j]:g} {units[j]}")  # fmt: skip
-    outputs = {h: _output(h, cols[h], where) for h in head[len(joints) :]}
-    return Trace(t, q, v, outputs)
+    outputs = {h: _output(h, cols[h], where) for h in head[len(joints) :] if h not in plc}
+    pos = np.stack([cols[h] for h in plc], axis=1) if plc else None
+    return Trace(t, q, v, outputs, pos)
 
 
 def _fmt(name: str, value) -> str:

@@ -166,7 +166,7 @@ def _decode(raw: bytes, path: str) -> str:
 def _cmd_stl_run(args: argparse.Namespace) -> int:
     if args.dialect in ("st", "plcopen-xml"):
         return _cmd_stl_run_st(args)
-    for opt in ("scenario", "trace", "map", "program_name"):
+    for opt in ("scenario", "trace", "map", "program_name", "start"):
         if getattr(args, opt) is not None:
             raise ValueError(f"--{opt.replace('_name', '')} applies to --dialect st and "
                              "plcopen-xml")  # fmt: skip
@@ -221,7 +221,7 @@ def _cmd_stl_run_st(args: argparse.Namespace) -> int:
     source = offline.load_source(text, args.dialect)
     if args.scenario is None:
         out = offline.one_scan(source, args.set or [], args.read or [], mapdoc=mapdoc,
-                               program=args.program_name)  # fmt: skip
+                               program=args.program_name, start=args.start)  # fmt: skip
         if args.json:
             print(json.dumps({"values": {k: _json_value(v) for k, v in out["values"].items()}}))
         else:
@@ -231,12 +231,13 @@ def _cmd_stl_run_st(args: argparse.Namespace) -> int:
     table = read_table(args.scenario, required=("t_s", "name", "value"))
     outs, axes, run, types = offline.run_trace(
         source, table, cycle_s=args.cycle_ms / 1000.0, settle_s=args.settle_s, mapdoc=mapdoc,
-        program=args.program_name)  # fmt: skip
+        program=args.program_name, start=args.start)  # fmt: skip
     # --trace -: the CSV on stdout (output_stream), the summary on stderr
     with output_stream(args.trace, newline="", make_parents=args.mkdir) as fh:
         fh.write(offline.trace_csv(outs, axes, run, types))
     summary = {"trace": str(args.trace), "cycles": len(run.t), "cycle_ms": args.cycle_ms,
-               "axes": [a.name for a in axes], "outputs": outs}  # fmt: skip
+               "axes": [a.name for a in axes], "outputs": outs,
+               "start": [a.start for a in axes]}  # fmt: skip
     if args.json:
         print(json.dumps(summary))
     else:
@@ -288,7 +289,10 @@ def add_stl_run(sub, parser_class=None, formatter_class=None) -> None:
         " --set MD8=100.0 --read MD100:DINT\n"
         "  python -m analysis stl --dialect st --arm gr1 -o gr1.st --map gr1.json\n"
         "  python -m analysis stl-run gr1.st --dialect st --map gr1.json --scenario s.csv"
-        " --trace t.csv   # s.csv: t_s,name,value (0,Enable,TRUE ...)",
+        " --trace t.csv   # s.csv: t_s,name,value (0,Enable,TRUE ...)\n"
+        "  python -m analysis stl-run gr1.st --dialect st --map gr1.json --scenario s.csv"
+        " --trace t.csv --start 20,-10,30,0,45   # the axes at these joint values (deg) at"
+        " power-up",
         **({"formatter_class": formatter_class} if formatter_class else {}),
     )
     p.add_argument("program", help="program file (- reads standard input)")
@@ -323,7 +327,8 @@ def add_stl_run(sub, parser_class=None, formatter_class=None) -> None:
                    help="t_s,name,value rows: set a program variable at that time; the program "
                    "runs cycle by cycle with one simulated axis per joint")  # fmt: skip
     g.add_argument("--trace", metavar="TRACE.csv", help="one row per cycle: t_s, q1..qN, "
-                   "v1..vN, then every output (written atomically)")  # fmt: skip
+                   "v1..vN, then every output, then plc_q1..plc_qN, what the PLC reads of "
+                   "each axis (written atomically)")  # fmt: skip
     g.add_argument("--cycle-ms", type=float, default=4.0, help="cycle time (default 4 ms)")
     g.add_argument("--settle-s", type=float, default=2.0,
                    help="run on after the last row (default 2 s)")  # fmt: skip
@@ -332,6 +337,12 @@ def add_stl_run(sub, parser_class=None, formatter_class=None) -> None:
     g.add_argument("--program", dest="program_name", metavar="NAME",
                    help="the PROGRAM to run (default: the only one)")  # fmt: skip
     g.add_argument("--mkdir", action="store_true", help="create the trace's directory")
+    g.add_argument("--start", metavar="WHERE", help="where the axes stand at power-up: "
+                   "power-up (default: as a machine is switched on, a reference-switch axis "
+                   "2 s of its homing approach off home, a set axis on its mark), home (every "
+                   "axis on its home position, its encoder reading it), or one position "
+                   "per axis in deg or mm, comma-separated (q1,q2,...); until homed each "
+                   "encoder reads a stale count (the trace's plc_q1..plc_qN)")  # fmt: skip
     p.set_defaults(func=_cmd_stl_run)
 
 

@@ -6,8 +6,12 @@ Apache-2.0; not part of the pyplcopen wheel, whose Python API exposes no ST exec
 built once by ``make st-engine`` with Debian's g++ together with the project's small driver
 ``tools/st-engine/st_run.cpp``: the sdist is downloaded by pip with its hash checked
 (``tools/st-engine/requirements.txt``), and the binary lands in the virtual environment as
-``bin/analysis-st-run``, keyed by the sdist's hash and the driver's source (``--key``).
-Nothing is downloaded or compiled at run time. Why this engine: the only ST executor
+``bin/analysis-st-run``, keyed by the sdist's hash, the drivers' sources and the patch
+(``--key``). The sdist's simulated axis is patched after unpacking
+(``tools/st-engine/pyplcopen-0.21.0-motion.patch``: a velocity command reaches its velocity on
+a jerk-limited ramp instead of a step, and MC_Halt/MC_Stop brake on a velocity ramp to rest
+instead of running past the rest point and coming back; the header says why, with the
+figures). Nothing is downloaded or compiled at run time. Why this engine: the only ST executor
 installable from the registries here (stl_reference.md: matiec, OpenPLC, Beremiz, RuSTy,
 IronPLC cannot be installed; blark only parses); it is an implementation independent of
 this project and of awlsim, REAL is binary32 with each operation rounded, REAL_TO_DINT
@@ -66,6 +70,7 @@ _REPO = Path(__file__).resolve().parents[3]
 _DRIVER = _REPO / "tools" / "st-engine" / "st_run.cpp"
 _PIN = _REPO / "tools" / "st-engine" / "requirements.txt"
 _MACHINE = _REPO / "tools" / "st-engine" / "st_machine.cpp"
+_PATCH = _REPO / "tools" / "st-engine" / "pyplcopen-0.21.0-motion.patch"
 
 
 class EngineMissing(RuntimeError):
@@ -74,11 +79,13 @@ class EngineMissing(RuntimeError):
 
 def build_key() -> str | None:
     """The key the binary must report: sha256 of the pinned requirement line (with the
-    sdist's hash) and of the driver source; None outside a source checkout."""
-    if not (_DRIVER.exists() and _PIN.exists() and _MACHINE.exists()):
+    sdist's hash), of the drivers' sources and of the patch applied to the sdist (the
+    Makefile's ST_SOURCES, in its order); None outside a source checkout."""
+    sources = (_PIN, _DRIVER, _MACHINE, _PATCH)
+    if not all(p.exists() for p in sources):
         return None
     h = hashlib.sha256()
-    for p in (_PIN, _DRIVER, _MACHINE):
+    for p in sources:
         h.update(p.read_bytes())
     return h.hexdigest()[:16]
 

@@ -10,6 +10,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 from tests.plc.machine.conftest import machine, scenario_set
 
@@ -80,6 +81,9 @@ def test_scenario_to_trace(grabber, capsys, suffix):
         "Gripper",
         "GripperClosed",
         "AxisErrorID",
+        "plc_q1",
+        "plc_q2",
+        "plc_q3",
     ]
     sc = scenario_set("grabber")["move"]
     tr = Trace.from_csv(text)
@@ -235,7 +239,81 @@ def test_the_contract_from_a_shell(grabber, tmp_path):
     # without MAP.json: the PROGRAM's own variables by their names (the machine's outputs
     # among them), never the engine's names for the variables inside its block instances
     head = text.split("\n", 1)[0].split(",")[7:]
+    assert head[-3:] == ["plc_q1", "plc_q2", "plc_q3"]  # what the PLC reads, last
+    head = head[:-3]
     for name in ("Homed", "Busy", "Done", "Error", "Status", "Gripper", "GripperClosed"):
         assert name in head
     source = (grabber / "g.st").read_text("utf-8")
     assert all(re.search(rf"\b{n}\s*:", source) for n in head), head
+
+
+@pytest.fixture(scope="module")
+def gr1_files(tmp_path_factory, machine_engine):
+    d = tmp_path_factory.mktemp("gr1")
+    assert main(["stl", "--dialect", "st", "--arm", "gr1", "-o", str(d / "gr1.st"),
+                 "--map", str(d / "gr1.json")]) == 0  # fmt: skip
+    (d / "home.csv").write_text(scenario_set("gr1")["power_home"].csv(), encoding="utf-8")
+    return d
+
+
+def _started(capsys, d, *start):
+    trace = d / f"t-{len(start) and start[-1].replace(',', '_')}.csv"
+    code, _, err = _run(capsys, d / "gr1.st", "--dialect", "st", "--map", d / "gr1.json",
+                        "--scenario", d / "home.csv", "--trace", trace, *start)  # fmt: skip
+    assert code == 0, err
+    return Trace.from_csv(trace.read_text("utf-8"))
+
+
+@pytest.mark.slow
+def test_start_where_a_machine_is_switched_on(gr1_files, capsys):
+    """By default the axes stand where the scenarios' plant has them at power-up (every
+    reference-switch axis off home, every encoder stale: plc_qK), so Home does real work:
+    each axis ends on its home position and the PLC reads it there (the scenario's checks,
+    homing held to the limits). ``--start home``: on home, read exactly (as before the
+    option); ``--start q1,...``: there, the encoders stale."""
+    from analysis.plc.machine.plant import power_up
+
+    spec, sc = machine("gr1")[1], scenario_set("gr1")["power_home"]
+    tr = _started(capsys, gr1_files)
+    assert np.allclose(tr.q[0], [s for s, _, _ in power_up(spec)])
+    assert np.allclose(tr.pos[0], [c for _, c, _ in power_up(spec)])
+    assert all(abs(tr.q[0, k] - a.home_position) > 1.0 for k, a in enumerate(spec.axes))
+    assert check(sc, tr, spec) == []
+    home = np.array([a.home_position for a in spec.axes])
+    tr = _started(capsys, gr1_files, "--start", "home")
+    assert np.array_equal(tr.q[0], home) and np.array_equal(tr.pos[0], home)
+    tr = _started(capsys, gr1_files, "--start", "10,-12.5,7,-3,11")  # within the plant's reach
+    assert np.array_equal(tr.q[0], [10, -12.5, 7, -3, 11]) and np.all(tr.pos[0] != tr.q[0])
+    assert check(sc, tr, spec) == []  # homed from there too
+
+
+@pytest.mark.parametrize(
+    ("start", "word"),
+    [
+        ("20,-10", "2 positions for 5 axes (Axis1, Axis2, Axis3, Axis4, Axis5)"),
+        ("20,-10,300,0,45", "theta3 = 300 deg is outside its limits -135..135 deg"),
+        ("20,-10,nan,0,45", "theta3 'nan' is not a finite number"),
+        ("somewhere", "power-up or home, or one position per axis"),
+    ],
+)
+def test_a_bad_start_is_one_line(start, word):
+    """parse_start on the GR-1's MAP.json axes: one line naming the value and the limit
+    (test_a_bad_start_from_a_shell: the same through stl-run, exit 2, no trace)."""
+    from analysis.plc.machine.offline import _axis_rows, parse_start
+
+    rows = _axis_rows({}, machine("gr1")[4])
+    with pytest.raises(ValueError, match=re.escape(word)) as err:
+        parse_start(start, rows)
+    assert "\n" not in str(err.value)
+    assert parse_start(None, rows) == "power-up" and parse_start(" Home", rows) == "home"
+    assert parse_start("1, -2,3,4e0,5", rows) == (1.0, -2.0, 3.0, 4.0, 5.0)
+
+
+@pytest.mark.slow
+def test_a_bad_start_from_a_shell(gr1_files, capsys, tmp_path):
+    start, word = "20,-10,300,0,45", "theta3 = 300 deg is outside its limits -135..135 deg"
+    code, _, err = _run(capsys, gr1_files / "gr1.st", "--dialect", "st", "--map",
+                        gr1_files / "gr1.json", "--scenario", gr1_files / "home.csv",
+                        "--trace", tmp_path / "t.csv", "--start", start)  # fmt: skip
+    assert code == 2 and word in err and err.count("\n") == 1, err
+    assert not (tmp_path / "t.csv").exists()

@@ -72,7 +72,8 @@ def test_homing_is_real(machine_engine, arm):
     """Every axis powers up off home as the PLC sees it (a stale encoder count; a reference
     switch axis also physically off its home), nothing moves before Home, and homing ends on
     the home position (check_homed: physically within one pulse, read exactly); a switch
-    axis' homing moved it there at most at its velocity limit (check_limits)."""
+    axis' homing moved it there within its velocity, acceleration and jerk limits
+    (check_limits)."""
     spec = machine(arm)[1]
     tr = trace(arm, "st", "power_home")
     for k, a in enumerate(spec.axes):
@@ -80,3 +81,22 @@ def test_homing_is_real(machine_engine, arm):
         if a.home_mode == "switch":
             assert abs(tr.q[0, k] - a.home_position) > 1.0, a.joint
             assert np.ptp(tr.q[:, k]) > 1.0, f"{a.joint} did not move to its switch"
+
+
+def test_a_homing_search_that_steps_its_velocity_fails(machine_engine):
+    """check_limits holds acceleration and jerk during homing: the GR-1's power_home with
+    its waist's approach started at its speed in one cycle (what the unpatched engine did:
+    the positions from the search's start on shifted by a cycle's travel) goes red."""
+    from dataclasses import replace
+
+    from analysis.plc.machine.checks import check_limits
+
+    spec = machine("gr1")[1]
+    tr = trace("gr1", "st", "power_home")
+    assert check_limits(tr, spec) == []
+    i = int(np.flatnonzero(np.abs(np.diff(tr.q[:, 0])) > 1e-9)[0]) + 1  # the search starts
+    q = tr.q.copy()
+    q[i:, 0] += np.sign(tr.q[i, 0] - tr.q[0, 0]) * 0.25 * spec.axes[0].max_velocity * tr.cycle_s
+    failures = check_limits(replace(tr, q=q), spec)
+    assert any("theta1: acceleration" in f for f in failures), failures
+    assert any("theta1: jerk" in f for f in failures), failures

@@ -9,29 +9,31 @@ The stop distance (:func:`check_stop`). Issue 29 item 4 asks for "a stop distanc
 v^2/2a + v x cycle". That is the braking distance with an unlimited jerk: no jerk-limited
 profile can keep it, since the deceleration itself must ramp up (v a / 2j more) and, when
 the stop comes while the axis accelerates, the acceleration must first ramp down to zero.
-Measured on the ST engine (pyplcopen 0.21.0, 4 ms, every axis moving at the stop of the
-``stop`` scenario, which comes at cruise; :func:`stop_distances`, the figures held by
-``tests/plc/machine/test_stop_bounds.py``): the rest distance is 1.36 to 2.96 times the issue's
-bound on the grabber, 1.38 to 2.29 on the palletizer, 1.38 to 4.14 on the picker, 1.38 to 2.28
-on the GR-1, and 0.84 to 0.989 times the jerk-limited bound (:func:`.profile.stop_distance`
-from the velocity and acceleration at the stop, with the joint's deceleration and jerk
-limits, plus one cycle at that velocity). The jerk-limited bound is the assertion; the
-issue's would fail on every arm however well the program stopped. A bare MC_Stop from a
-cruise at 90 deg/s (360 deg/s^2, 3600 deg/s^3) comes to rest at 15.75 deg, exactly the
-continuous braking distance v^2/2a + v a/2j; the issue's bound is 11.61 deg.
+Measured on the ST engine (pyplcopen 0.21.0 with the project's patch, 4 ms, every axis
+moving at the stop of the ``stop`` scenario, which comes at cruise; :func:`stop_distances`,
+the figures held by ``tests/plc/machine/test_stop_bounds.py``): the rest distance is 1.36 to
+3.06 times the issue's bound on the grabber, 1.39 to 2.30 on the palletizer, 1.38 to 4.30 on
+the picker, 1.38 to 2.29 on the GR-1, and 0.87 to 0.992 times the jerk-limited bound
+(:func:`.profile.stop_distance` from the velocity and acceleration at the stop, with the
+joint's deceleration and jerk limits, plus one cycle at that velocity). The jerk-limited
+bound is the assertion; the issue's would fail on every arm however well the program
+stopped. A bare MC_Stop from a cruise at 90 deg/s (360 deg/s^2, 3600 deg/s^3) comes to rest
+at 15.84 deg at 4 ms and 15.75 at 1 ms, the continuous braking distance v^2/2a + v a/2j
+being 15.75 deg; the issue's bound is 11.61 deg.
 
-The overshoot. The engine's MC_Stop and MC_Halt aim at the continuous braking distance, floor
-each phase of the profile to whole cycles and let a final quintic correct the residue; that
-quintic runs past the rest position and comes back. Measured: 0.04% to 3.7% of the braking
-distance on the machines (at most 0.71% on the grabber, 0.87% on the palletizer, 3.67% on the
-picker, 1.58% on the GR-1; 10.8% of a 0.006 deg stop of the picker's slowest joint; the
-farthest point then exceeds the jerk-limited bound by up to 0.7%, the rest position never);
-with a bare MC_Stop from the same cruise, 0.09 deg (one cycle's travel at 4 ms, 0.57%) and
-0.00 or 0.18 deg at 1 ms depending on the stop's instant; with the same deceleration and a
-10 or 100 times larger jerk 1.5% and 3.6% (fewer cycles per phase, a larger residue). So it is
-the engine's whole-cycle quantization of its braking profile, not the program's parameters
-(the joint's own deceleration and jerk limits); the check holds the rest position, and the
-overshoot stays within the limits (:func:`check_limits`).
+No overrun (:func:`check_stop`: no step back on the way to rest). pyplcopen 0.21.0's MC_Stop
+and MC_Halt aim at the continuous braking distance, floor each phase of the profile to whole
+cycles and let a final quintic correct the residue; that quintic runs past the rest position
+and comes back: 0.04% to 3.7% of the braking distance on the machines (0.71% on the grabber,
+0.87% on the palletizer, 3.67% on the picker, 1.58% on the GR-1), a bare MC_Stop from the
+cruise above 0.09 deg at 4 ms, 1.5% and 3.6% with a 10 or 100 times larger jerk. A reversal
+at the end of a stop is a defect on a real arm, so the engine is built with a patch
+(``tools/st-engine/pyplcopen-0.21.0-motion.patch``, applied by ``make st-engine``) that
+brakes on a whole-cycle jerk-limited velocity ramp to rest: the rest is where the ramp ends,
+within the bound, and no axis moves back. The same patch ramps velocity commands, which the
+homing searches use (unpatched, a search started at its velocity in one cycle: 31 times the
+acceleration limit, 1562 times the jerk limit), so :func:`check_limits` holds acceleration
+and jerk from power-up on, homing included.
 """
 
 from __future__ import annotations
@@ -47,6 +49,7 @@ from analysis.plc.machine.profile import min_time, stop_distance, sync_limits, s
 from analysis.plc.machine.spec import MachineSpec
 
 __all__ = [
+    "PLC_COLUMN",
     "Trace",
     "check_final",
     "check_homed",
@@ -59,6 +62,11 @@ __all__ = [
     "motion_segments",
     "stop_distances",
 ]
+
+
+PLC_COLUMN = "plc_q{}"
+"""A trace's column (``stl-run --trace``) of what the PLC reads of axis k: its encoder's
+position (:attr:`Trace.pos`)."""
 
 
 @dataclass(frozen=True)
@@ -88,18 +96,22 @@ class Trace:
 
     @classmethod
     def from_csv(cls, text: str) -> Trace:
-        """From the text of ``stl-run --trace`` (``t_s, q1..qN, v1..vN``, then outputs)."""
+        """From the text of ``stl-run --trace`` (``t_s, q1..qN, v1..vN``, then outputs, then
+        ``plc_q1..plc_qN`` when it has them: :attr:`pos`)."""
         rows = list(csv.reader(io.StringIO(text)))
         head, body = rows[0], np.array(rows[1:], dtype=object)
         n = sum(1 for h in head if h[:1] == "q" and h[1:].isdigit())
+        plc = [PLC_COLUMN.format(k + 1) for k in range(n)]
 
         def num(col):
             return np.array([_cell(c) for c in body[:, col]], dtype=float)
 
-        outs = {h: num(k) for k, h in enumerate(head) if k > 2 * n}
+        outs = {h: num(k) for k, h in enumerate(head) if k > 2 * n and h not in plc}
         q = np.stack([num(1 + k) for k in range(n)], axis=1)
         v = np.stack([num(1 + n + k) for k in range(n)], axis=1)
-        return cls(num(0), q, v, outs)
+        pos = (np.stack([num(head.index(h)) for h in plc], axis=1)
+               if n and all(h in head for h in plc) else None)  # fmt: skip
+        return cls(num(0), q, v, outs, pos)
 
 
 def _cell(c: str) -> float:
@@ -138,13 +150,11 @@ def check_final(trace: Trace, spec: MachineSpec, expected) -> list[str]:
     ]
 
 
-def check_limits(
-    trace: Trace, spec: MachineSpec, rel: float = 1e-6, skip=None, homing_until=None
-) -> list[str]:
+def check_limits(trace: Trace, spec: MachineSpec, rel: float = 1e-6, skip=None) -> list[str]:
     """Velocity, acceleration and jerk from the positions' divided differences within each
-    joint's limits (a relative ``rel`` for round-off); ``skip`` (axis, t): that axis from t
-    on is not held (its drive failed and stopped it dead); before ``homing_until`` [s] only
-    the velocity (module docstring: the engine's homing searches start at their velocity)."""
+    joint's limits (a relative ``rel`` for round-off), from power-up on: homing included (its
+    searches start and stop as every move does); ``skip`` (axis, t): that axis from t on is
+    not held (its drive failed and stopped it dead)."""
     dt, out = trace.cycle_s, []
     for order, lim, word in zip(
         (1, 2, 3), _limits(spec), ("velocity", "acceleration", "jerk"), strict=True
@@ -154,8 +164,6 @@ def check_limits(
         d = np.abs(np.diff(trace.q, n=order, axis=0)) / dt**order
         if skip is not None:
             d[max(trace.at(skip[1]) - order, 0) :, skip[0]] = 0.0
-        if homing_until is not None and order > 1:
-            d[: trace.at(homing_until)] = 0.0
         peak = d.max(axis=0)
         for k in np.flatnonzero(peak > lim * (1 + rel) + 1e-9):
             at = trace.t[int(np.argmax(d[:, k]))]
@@ -278,10 +286,10 @@ def check_stop(
     """After the stop circuit opens at ``t_stop``: each axis comes to rest within its
     jerk-limited braking distance from its velocity and acceleration then (:func:`.profile.
     stop_distance`) plus one cycle at that velocity, has braked at all (an axis that stops
-    dead would need more deceleration than its limit: :func:`check_limits`), and does not
-    move again before ``t_until``. The rest position counts, not the farthest point: the ST
-    engine's MC_Stop/MC_Halt overshoot it and come back (module docstring: the bound, not
-    the issue's v^2/2a + v x cycle, and why)."""
+    dead would need more deceleration than its limit: :func:`check_limits`), never moves
+    back on its way to rest (its velocity keeps its sign: no overrun and return), and does
+    not move again before ``t_until`` (module docstring: the bound, not the issue's
+    v^2/2a + v x cycle, and why)."""
     k = trace.at(t_stop)
     end = trace.at(t_until) if t_until is not None else len(trace.t) - 1
     rest, segs = _rest_row(trace, k, end)
@@ -295,10 +303,27 @@ def check_stop(
                 f"{ax.joint}: came to rest {d['rest']:.6g} {ax.unit} after the stop from "
                 f"{d['v0']:.4g} {ax.unit}/s; the braking distance is {d['jerk_bound']:.6g}"
             )
+        back = _moved_back(trace.q[k : rest + 1, i], d["v0"])
+        if back is not None:
+            out.append(
+                f"{ax.joint}: moved back {back[1]:.3g} {ax.unit} at t = "
+                f"{trace.t[k + back[0]]:.3f} s while stopping from {d['v0']:.4g} {ax.unit}/s "
+                f"(it ran {d['farthest'] - d['rest']:.3g} {ax.unit} past its rest position)"
+            )
     again = [s for s in segs if s[0] > rest]
     if again:
         out.append(f"moved again after the stop at t = {trace.t[again[0][0]]:.3f} s")
     return out
+
+
+def _moved_back(q, v0: float, tol: float = 1e-9) -> tuple[int, float] | None:
+    """(row, distance) of the largest step of ``q`` against the direction of ``v0`` (the
+    velocity at the stop; 0: the direction of the first step), None if it never moves back."""
+    steps = np.diff(q)
+    sign = np.sign(v0) or np.sign(steps[np.flatnonzero(np.abs(steps) > tol)][:1]).sum()
+    back = -steps * sign
+    k = int(np.argmax(back)) if len(back) else 0
+    return (k + 1, float(back[k])) if sign and len(back) and back[k] > tol else None
 
 
 def check_homed(trace: Trace, spec: MachineSpec, t_s: float) -> list[str]:

@@ -5,12 +5,21 @@ file) on the ST engine, offline (issue 29 item 3, a contract).
   that time, a BOOL as TRUE/FALSE, a number by :func:`analysis.validate.number_problem`'s
   rule, a REAL also ``nan``, ``inf``, ``-inf`` on purpose): the program runs cycle by cycle
   (``cycle_s``) until the last row's time plus ``settle_s``, with one simulated axis per
-  joint (MAP.json's ``machine.axes``: limits, software limits; standing on its home
-  position, a ``switch`` axis' reference switch there) or, without a map, per AXIS_REF
-  variable of the program (at 0, its switch there); the trace has one row per cycle: ``t_s``,
-  ``q1..qN`` (deg or mm), ``v1..vN`` (per second), then every output of the program by name
-  (MAP.json's ``machine.outputs``; without a map, every scalar variable the PROGRAM declares
-  itself, not those of the block instances inside it, that the scenario does not write).
+  joint (MAP.json's ``machine.axes``: limits, software limits, a ``switch`` axis' reference
+  switch at its home position) or, without a map, per AXIS_REF variable of the program (its
+  switch at 0); the trace has one row per cycle: ``t_s``, ``q1..qN`` (deg or mm), ``v1..vN``
+  (per second), then every output of the program by name (MAP.json's ``machine.outputs``;
+  without a map, every scalar variable the PROGRAM declares itself, not those of the block
+  instances inside it, that the scenario does not write), then ``plc_q1..plc_qN``: what the
+  PLC reads (each axis' encoder: a stale count until the axis is homed).
+- Where the axes stand at power-up (``start``, :func:`parse_start`): ``power-up`` (the
+  default) as a machine is switched on, as the scenarios' plant has it
+  (:func:`analysis.plc.machine.plant.power_up_axis`: a ``switch`` axis two seconds of its
+  homing approach off home, a ``set`` axis on its mark, every encoder reading a stale count),
+  so Home does real work; ``home``: every axis on its home position, read exactly (a machine
+  already homed, as ``stl-run`` ran before the option); or one physical position per axis
+  in joint units (deg or mm, comma-separated), each encoder again stale. Without a map
+  nothing is known of the axes' limits or homes: ``power-up`` and ``home`` put them at 0.
   ``AxisN.PowerOK`` (FALSE, then TRUE) is the simulated drive's power feedback: losing it is
   an axis error (:data:`analysis.plc.st_engine.POWER_OK`).
 - Without a scenario: one scan, ``--set NAME=VALUE`` before it, ``--read NAME`` after it.
@@ -29,10 +38,12 @@ import math
 import re
 
 from analysis import validate
+from analysis.plc.machine.checks import PLC_COLUMN
 
 __all__ = [
     "MAX_CYCLES",
     "MAX_ROWS",
+    "START_MODES",
     "load_source",
     "one_scan",
     "parse_scenario",
@@ -44,6 +55,8 @@ MAX_ROWS = 100_000
 """The most scenario rows read."""
 MAX_CYCLES = 1_000_000
 """The longest run (cycles): 66 minutes at 4 ms."""
+START_MODES = ("power-up", "home")
+"""``stl-run --start``'s words (module docstring); the first is the default."""
 
 _INTS = {
     "SINT": (-(2**7), 2**7 - 1),
@@ -198,31 +211,75 @@ def parse_scenario(table: dict, variables: dict[str, str], program: str):
     return rows
 
 
-def _axes(variables: dict[str, str], mapdoc: dict | None):
+def _axis_rows(variables: dict[str, str], mapdoc: dict | None) -> list[dict]:
+    """Each axis: name, joint, unit, limits per second, software limits, home mode and
+    position (MAP.json's; without a map every AXIS_REF, no software limits, a reference
+    switch at 0, limits that only bound homing blocks)."""
+    machine = (mapdoc or {}).get("machine") or {}
+    if not machine.get("axes"):
+        return [{"name": n, "joint": n, "unit": "", "v": 1e6, "a": 1e9, "j": 1e12,
+                 "limits": None, "mode": "switch", "home": 0.0, "known": False}
+                for n, t in variables.items() if t == "AXIS_REF"]  # fmt: skip
+    out = []
+    for a in machine["axes"]:
+        lim = a.get("limits")
+        out.append({"name": a["axis"], "joint": str(a.get("joint", a["axis"])),
+                    "unit": str(a.get("unit", "")), "v": float(a["max_velocity"]),
+                    "a": float(a["max_acceleration"]), "j": float(a["max_jerk"]),
+                    "limits": None if lim is None else (float(lim[0]), float(lim[1])),
+                    "mode": a["home"].get("mode"), "home": float(a["home"]["position"]),
+                    "known": True})  # fmt: skip
+    return out
+
+
+def parse_start(text: str | None, rows: list[dict]) -> tuple[float, ...] | str:
+    """``--start`` (module docstring): one of :data:`START_MODES` (None: the first), or one
+    physical position per axis in joint units, each finite and inside its software limits.
+    ValueError naming the value and the limit."""
+    text = START_MODES[0] if text is None else text.strip()
+    if text.lower() in START_MODES:
+        return text.lower()
+    cells = text.split(",")
+    names = ", ".join(r["name"] for r in rows) or "none"
+    if len(cells) == 1 and validate.number_problem(cells[0].strip(" \t")):
+        raise ValueError(f"--start {text!r}: {' or '.join(START_MODES)}, or one position per "
+                         f"axis in deg or mm, comma-separated ({names})")  # fmt: skip
+    if len(cells) != len(rows):
+        raise ValueError(f"--start {text!r}: {len(cells)} positions for {len(rows)} axes "
+                         f"({names})")  # fmt: skip
+    out = []
+    for r, cell in zip(rows, cells, strict=True):
+        problem = validate.number_problem(cell.strip(" \t"))
+        if problem:
+            raise ValueError(f"--start: {r['joint']} {problem}")
+        q, lim = float(cell), r["limits"]
+        if lim is not None and not lim[0] <= q <= lim[1]:
+            raise ValueError(f"--start: {r['joint']} = {q:g} {r['unit']} is outside its "
+                             f"limits {lim[0]:g}..{lim[1]:g} {r['unit']}")  # fmt: skip
+        out.append(q)
+    return tuple(out)
+
+
+def _axes(variables: dict[str, str], mapdoc: dict | None, start: str | None = None):
+    """One :class:`~analysis.plc.st_engine.SimAxis` per axis (:func:`_axis_rows`), standing
+    where ``start`` says (:func:`parse_start`)."""
+    from analysis.plc.machine.plant import placed, power_up_axis
     from analysis.plc.st_engine import SimAxis
 
-    machine = (mapdoc or {}).get("machine") or {}
-    if machine.get("axes"):
-        out = []
-        for a in machine["axes"]:
-            lim = a.get("limits") or (None, None)
-            out.append(
-                SimAxis(
-                    a["axis"],
-                    float(a["max_velocity"]),
-                    float(a["max_acceleration"]),
-                    float(a["max_jerk"]),
-                    lim[0],
-                    lim[1],
-                    home := float(a["home"]["position"]),
-                    switch=home if a["home"].get("mode") == "switch" else None,
-                )
-            )
-        return out
-    # no map: every AXIS_REF, no software limits, at 0, a reference switch there; the limits
-    # only bound homing blocks
-    return [SimAxis(n, 1e6, 1e9, 1e12, switch=0.0) for n, t in variables.items()
-            if t == "AXIS_REF"]  # fmt: skip
+    rows = _axis_rows(variables, mapdoc)
+    where = parse_start(start, rows)
+    out = []
+    for k, r in enumerate(rows):
+        switch = r["home"] if r["mode"] == "switch" else None
+        if isinstance(where, tuple):
+            pos = placed(k, where[k], r["mode"], r["home"], r["limits"])
+        elif where == "power-up" and r["known"]:
+            pos = power_up_axis(k, r["mode"], r["home"], r["v"], r["limits"])
+        else:  # home, or nothing known of the axis
+            pos = (r["home"], r["home"], switch)
+        lo, hi = r["limits"] or (None, None)
+        out.append(SimAxis(r["name"], r["v"], r["a"], r["j"], lo, hi, *pos))
+    return out
 
 
 def _outputs(source, program, variables, written, mapdoc) -> list[str]:
@@ -261,8 +318,10 @@ def run_trace(
     settle_s: float,
     mapdoc: dict | None = None,
     program: str | None = None,
+    start: str | None = None,
 ):
-    """Run a scenario table (:func:`parse_scenario`); returns (header, axes, run)."""
+    """Run a scenario table (:func:`parse_scenario`), the axes standing where ``start`` says
+    (:func:`parse_start`); returns (header, axes, run, output types)."""
     from analysis.plc.machine.run import schedule
     from analysis.plc.st_engine import program_variables, run_machine
 
@@ -274,7 +333,7 @@ def run_trace(
 
     source, name = pick_program(source, program, mapdoc)
     variables = program_variables(source, name)
-    axes = _axes(variables, mapdoc)
+    axes = _axes(variables, mapdoc, start)
     drives = {f"{a.name}.{POWER_OK}": "BOOL" for a in axes}  # the drives' power feedback
     rows = parse_scenario(table, {**variables, **drives}, name)
     writes, n = schedule(rows, cycle_s, settle_s)
@@ -284,6 +343,10 @@ def run_trace(
             f"{settle_s:g} s at {cycle_s * 1e3:g} ms): at most {MAX_CYCLES}"
         )
     outs = _outputs(source, name, variables, {n for _, n, _ in rows}, mapdoc)
+    clash = {PLC_COLUMN.format(k + 1).lower() for k in range(len(axes))} & {o.lower() for o in outs}
+    if clash:
+        raise ValueError(f"the output {sorted(clash)[0]} has the name of the trace's column "
+                         "of what the PLC reads: rename it")  # fmt: skip
     run = run_machine(source, name, axes, writes, outs, cycle_s=cycle_s, n_cycles=n)
     return [v for v in outs], axes, run, {n: variables[n] for n in outs}
 
@@ -295,9 +358,11 @@ def _fmt(x: float) -> str:
 
 
 def trace_csv(outs, axes, run, types) -> str:
-    """The trace (module docstring): BOOL outputs as TRUE/FALSE, numbers in full."""
+    """The trace (module docstring): BOOL outputs as TRUE/FALSE, numbers in full; what the
+    PLC reads of each axis last (:data:`PLC_COLUMN`)."""
     n = len(axes)
-    head = ["t_s", *(f"q{k + 1}" for k in range(n)), *(f"v{k + 1}" for k in range(n)), *outs]
+    head = ["t_s", *(f"q{k + 1}" for k in range(n)), *(f"v{k + 1}" for k in range(n)), *outs,
+            *(PLC_COLUMN.format(k + 1) for k in range(n))]  # fmt: skip
     lines = [",".join(head)]
     bools = [types[o] == "BOOL" for o in outs]
     for k in range(len(run.t)):
@@ -308,13 +373,15 @@ def trace_csv(outs, axes, run, types) -> str:
         ]
         for b, x in zip(bools, run.values[k], strict=True):
             cells.append(("TRUE" if x else "FALSE") if b else _fmt(x))
+        cells += [_fmt(x) for x in run.pos[k]] if n else []
         lines.append(",".join(cells))
     return "\n".join(lines) + "\n"
 
 
-def one_scan(source: str, sets, reads, *, mapdoc=None, program=None) -> dict:
+def one_scan(source: str, sets, reads, *, mapdoc=None, program=None, start=None) -> dict:
     """One scan: ``sets`` (``NAME=VALUE``) written before it, ``reads`` (``NAME`` or
-    ``NAME:TYPE``) after it; ``{"values": {name: value}}``."""
+    ``NAME:TYPE``) after it, the axes standing where ``start`` says (:func:`parse_start`);
+    ``{"values": {name: value}}``."""
     from analysis.plc.st_engine import program_variables, run_machine
 
     source, name = pick_program(source, program, mapdoc)
@@ -338,7 +405,7 @@ def one_scan(source: str, sets, reads, *, mapdoc=None, program=None) -> dict:
             raise ValueError(f"--read {r!r}: {key} is a {real}, not a scalar")
         wanted.append((key, real))
     run = run_machine(
-        source, name, _axes(variables, mapdoc), writes, [k for k, _ in wanted], n_cycles=1
+        source, name, _axes(variables, mapdoc, start), writes, [k for k, _ in wanted], n_cycles=1
     )
     values = {}
     for k, (key, typ) in enumerate(wanted):

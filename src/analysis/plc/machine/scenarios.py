@@ -116,8 +116,8 @@ class Expect:
     """(axis index, time): that axis' drive fails then (it stops dead: its limits and braking
     are not the program's)."""
     homed_t: float | None = None
-    """Every axis is homed by then (:func:`check_homed`); until then only the velocity limit
-    is held (the engine starts a homing search at its velocity at once: :mod:`.checks`)."""
+    """Every axis is homed by then (:func:`check_homed`); its homing is held to the limits as
+    every move is (:func:`check_limits`), not to the synchronised profile (:func:`check_sync`)."""
 
 
 @dataclass(frozen=True)
@@ -444,7 +444,7 @@ def check(
     """Every check ``scenario`` names (module docstring); the failures, each one line.
     ``arrive_s``: how far apart the joints may arrive (default one cycle)."""
     e = scenario.expect
-    out = check_limits(trace, spec, skip=e.faulted, homing_until=e.homed_t)
+    out = check_limits(trace, spec, skip=e.faulted)
     if e.homed_t is not None:
         out += check_homed(trace, spec, e.homed_t)
     if e.final is not None:
