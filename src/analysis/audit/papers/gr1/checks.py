@@ -364,6 +364,16 @@ def cp_path() -> dict:
     return {"off_line_mm": float(off.max()), "chord_mm": float(np.linalg.norm(P[-1] - P[0]))}
 
 
+@B.domain("contents_pages")
+def _contents_pages():
+    """The contents' entries (``contents.pages``): is each heading on the page the contents
+    list for it?"""
+    rows = _paper().record("contents.pages")["entries"]
+    if any(len(r) != 3 or not all(isinstance(x, int) and x > 0 for x in r[1:]) for r in rows):
+        raise ValueError("gr1:contents.pages: each entry is [title, listed page, body page]")
+    return {"on_listed_page": np.array([listed == body for _, listed, body in rows])}
+
+
 @B.domain("presets")
 def _presets():
     """Table 2-3's presets against the pulses the text derives them as (|delta theta| of Table
