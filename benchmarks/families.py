@@ -6,15 +6,16 @@ derive): the six-axis kernels against EAIK and IK-Geo, and every family against 
   from the derived closed form, Numba, the machine's threads), its numpy evaluation, EAIK's
   batched IK (C++, ``IK_batched`` on as many worker threads) and IK-Geo (the Rust ``ik-geo``
   wheel, one ``get_ik`` call per pose: it has no batch call); poses per second of wall time,
-  interleaved rounds, the median kept. The kernel's first call compiles it (minutes for an
-  eight-branch kernel; then read from the disk cache): reported apart.
+  interleaved rounds, the median kept. The kernel's first call compiles it (about 10 s of
+  CPU for an eight-branch kernel; then read from the disk cache): reported apart.
 - ``agreement``: solution sets compared as today's bench does (equal sets, the oracle empty
   or a subset, disagreements: must be 0), per family and D-H convention: EAIK on random arms
   of every revolute family (analysis.kinematics.derive.samples_more) and on the published
   arms, IK-Geo on the PUMA 560, the UR5 and random arms of both six-axis families (an
   oracle's candidates count where they reach the pose: EAIK's by its FK, IK-Geo's by the
-  rows'; measured: on random arms of the UR family both return, for whole arms, candidates
-  that miss the pose by centimetres: "oracle empty"), pyplcopen's kinematics on the arms it models
+  rows'; each run of parallel axes is given to both pointing one way, which their
+  three-parallel solvers assume: analysis.kinematics.derive.oracle), pyplcopen's kinematics
+  on the arms it models
   (analysis.kinematics.derive.plcopen_oracle), pyplcopen's SerialChain FK on the
   published six-axis arms, and Pinocchio's FK of every published family arm's D-H rows.
 """
@@ -34,6 +35,7 @@ from analysis.kinematics.derive import plcopen_oracle as po
 from analysis.kinematics.derive.chain import home
 from analysis.kinematics.derive.oracle import (
     POSE_TOL,
+    axis_senses,
     compare_solution_sets,
     eaik_robot,
 )
@@ -53,15 +55,18 @@ REVOLUTE = ("2R-planar", "3R-planar", "6R-wrist", "6R-parallel")
 
 
 def ikgeo_robot(arm):
-    """IK-Geo's model of ``arm`` (a POE: the axes at q = 0 and the offsets between points on
-    them, the points where the wrist axes meet taken as IK-Geo's decompositions require), or
-    None without the wheel."""
+    """IK-Geo's model of ``arm`` (a POE: the axes at q = 0, each parallel set pointing one
+    way (:func:`~analysis.kinematics.derive.oracle.axis_senses`: its three-parallel solver
+    assumes it, as EAIK's does), and the offsets between points on them, the points where
+    the wrist axes meet taken as IK-Geo's decompositions require), the tool's rotation at
+    q = 0 and the axes' senses; or None without the wheel."""
     try:
         from ik_geo import Robot
     except ImportError:
         return None
     h = home(numpy_ops, arm.table)
-    H = np.array(h.axes)
+    senses = axis_senses(h.axes)
+    H = np.array(h.axes) * senses[:, None]
     pts = [np.array([float(c) for c in p]) for p in h.points]
     if arm.closed_form.family == "6R-wrist":
         w = np.array([float(c) for c in meet(h.points[3], H[3], h.points[4], H[4])])
@@ -72,14 +77,14 @@ def ikgeo_robot(arm):
     tool = np.array([float(c) for c in h.position])
     P = [pts[0], *(pts[i + 1] - pts[i] for i in range(5)), tool - pts[5]]
     decomposition = getattr(Robot, IKGEO[arm.closed_form.family])
-    return decomposition(H.tolist(), np.array(P).tolist()), h.rotation
+    return decomposition(H.tolist(), np.array(P).tolist()), h.rotation, senses
 
 
-def _ikgeo_solve(robot, R0, T):
+def _ikgeo_solve(robot, R0, senses, T):
     """IK-Geo's exact solutions of poses ``T`` (its rotation the transpose of ours, the
-    tool's rotation at q = 0 taken off)."""
-    return [[np.asarray(s[0]) for s in robot.get_ik((t[:3, :3] @ R0.T).T, t[:3, 3]) if not s[1]]
-            for t in T]  # fmt: skip
+    tool's rotation at q = 0 taken off) as the arm's joint values (times ``senses``)."""
+    return [[np.asarray(s[0]) * senses for s in robot.get_ik((t[:3, :3] @ R0.T).T, t[:3, 3])
+             if not s[1]] for t in T]  # fmt: skip
 
 
 def sixaxis(n: int = 200_000, n_peer: int = 20_000, rounds: int = 3, seed: int = 32) -> dict:
@@ -110,7 +115,7 @@ def sixaxis(n: int = 200_000, n_peer: int = 20_000, rounds: int = 3, seed: int =
         geo = ikgeo_robot(arm)
         if geo is not None:
             m = n_peer // 4
-            cases["ikgeo"] = (m, lambda g=geo, x=T[:m]: _ikgeo_solve(g[0], g[1], x))
+            cases["ikgeo"] = (m, lambda g=geo, x=T[:m]: _ikgeo_solve(*g, x))
         times = {k: [] for k in cases}
         for _ in range(rounds):
             for k, (_, fn) in cases.items():
@@ -155,7 +160,7 @@ def _ikgeo_one(rows: dict, key: str, arm, n_q: int, rng) -> bool:
     q = rng.uniform(-np.pi, np.pi, (n_q, 6))
     T = arm.table.fk(q)
     sol = arm.solve(pose_from_transform(T), limits=False)
-    theirs = _ikgeo_solve(geo[0], geo[1], T)
+    theirs = _ikgeo_solve(*geo, T)
     scale = np.ones((4, 4))
     scale[:3, 3] = 1e-3  # mm -> m: one tolerance for rotation and position (as EAIK's)
     tally = dict.fromkeys(("equal", "empty", "subset", "disagree"), 0)

@@ -50,11 +50,40 @@ def test_eaik_same_solution_sets_on_random_arms(fam, conv, tmp_path):
         a = compare_solution_sets(arm, q)
         assert a.disagree == 0, (fam, conv, k, a.first_mismatch)
         assert a.max_residual_mm < 1e-6
-        if fam == "6R-wrist":
-            assert a.all_equal, a
-        # EAIK 1.2.2 classifies the random UR-family arms (6R-THREE_INNER_PARALLEL) but
-        # returns no exact solution for most (it solves the UR5 itself: the test below); the
-        # derived solutions reach the pose (max_residual_mm) and none disagrees
+        # the UR family too: its parallel axes given to EAIK pointing one way (the test below)
+        assert a.all_equal, a
+
+
+@needs_eaik
+def test_the_oracles_take_anti_parallel_axes_for_parallel_ones():
+    """The finding behind the random UR-family arms' "oracle empty" (issue 32): EAIK 1.2.2 and
+    IK-Geo 1.0.3 accept a set of parallel axes of which one points the other way, but solve it
+    as if all pointed one way. Inside the oracles alone (their own FK gives the poses): the
+    UR5 as H/P solves; the same robot with joint 3's axis written the other way does not; with
+    the axes turned round by axis_senses (as the oracle adapters do) it does again."""
+    from eaik.IK_HP import HPRobot
+
+    from analysis.kinematics.derive.chain import home
+    from analysis.kinematics.derive.oracle import axis_senses
+    from analysis.kinematics.ops import numpy_ops
+
+    h = home(numpy_ops, load_arm("ur5").table)
+    pts = np.array([[float(c) for c in p] for p in (*h.points, h.position)]) / 1e3  # m
+    P = np.diff(pts, axis=0, prepend=np.zeros((1, 3)))
+    q = np.random.default_rng(32).uniform(-np.pi, np.pi, (20, 6))
+
+    def reached(H, senses):
+        robot = HPRobot(H * senses[:, None], P)  # the tool frame at q = 0: identity
+        poses = [robot.fwdKin(x * senses) for x in q]  # the same configurations
+        return sum(min(np.abs(robot.fwdKin(s) - T).max() for s in robot.IK(T).Q) < 1e-9
+                   for T in poses)  # fmt: skip
+
+    H = np.array(h.axes)
+    assert (axis_senses(H) == 1).all() and reached(H, np.ones(6)) == len(q)
+    H[2] *= -1  # the same robot, joint 3 counted the other way
+    assert axis_senses(H).tolist() == [1, 1, -1, 1, 1, 1]
+    assert reached(H, np.ones(6)) == 0  # EAIK: not one pose
+    assert reached(H, axis_senses(H)) == len(q)
 
 
 @needs_eaik

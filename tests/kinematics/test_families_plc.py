@@ -35,17 +35,18 @@ ARMS = ("puma560", "ur5", "cobra600", "planar2r", "gantry")
 @pytest.fixture(scope="module", params=[*ARMS, "puma560.urdf", "ur5_ros.urdf"])
 def case(request, tmp_path_factory):
     """A published arm by name, or loaded from a URDF (the writer's PUMA 560; a UR5 in
-    ROS-Industrial's frames, tests/kinematics/test_families_urdf.py), and its sweep."""
+    ROS-Industrial's frames, tests/kinematics/test_families_urdf.py: the URDF's description
+    with a drive added, as a user gives one), and its sweep."""
     source = request.param
     if source.endswith(".urdf"):
         from analysis.kinematics.urdf import arm_urdf
 
-        from .test_families_urdf import ur5_ros_style
+        from .test_families_urdf import ur5_ros_style, with_drive
 
         path = tmp_path_factory.mktemp("urdf") / source
         path.write_text(ur5_ros_style() if source.startswith("ur5") else arm_urdf("puma560"),
                         encoding="utf-8")  # fmt: skip
-        source = str(path)
+        source = str(with_drive(path))  # a URDF has no drive: its description, with one
     arm = load_arm(source)
     return arm, sweep_targets(arm)
 

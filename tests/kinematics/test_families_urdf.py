@@ -253,8 +253,23 @@ def test_untrusted_xml_is_refused(folder):
     assert "not well-formed" in _refused(folder, "<robot><link></robot>")
 
 
+def with_drive(urdf, pulses_per_rev: int = 4000):
+    """The description of the URDF at ``urdf`` with a drive added, as a user gives one (a
+    URDF has none): ``arms --arm robot.urdf --toml``, then ``pulses_per_rev`` in every
+    ``[[joints]]`` entry; written next to it, its path."""
+    from analysis.kinematics.description import description_toml
+
+    text = description_toml(urdf).replace("[[joints]]\n", f"[[joints]]\npulses_per_rev = "
+                                          f"{pulses_per_rev}\n")  # fmt: skip
+    path = urdf.with_suffix(".toml")
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
 def test_cli_takes_a_urdf(folder, capsys):
-    """``--arm robot.urdf`` through the commands: fk, ik --branch all, stl, urdf."""
+    """``--arm robot.urdf`` through the commands: fk, ik --branch all (no drive given: no
+    pulses), stl (refused in one line naming the joint and the key: a URDF has no drive, and
+    none is invented); with the drive added to its description (``arms --toml``), stl."""
     from analysis.app.cli import main
     from analysis.kinematics.urdf import arm_urdf
 
@@ -262,10 +277,18 @@ def test_cli_takes_a_urdf(folder, capsys):
     path.write_text(arm_urdf("puma560"), encoding="utf-8")
     assert main(["fk", "10", "20", "30", "40", "50", "60", "--arm", str(path), "--json"]) == 0
     assert main(["ik", *map(str, PUMA_POSE), "--arm", str(path), "--branch", "all"]) == 0
-    assert "8 of the 8 requested solve" in capsys.readouterr().out
+    text = capsys.readouterr().out
+    assert "8 of the 8 requested solve" in text and text.count("pulses: no drive given") == 8
     out = folder / "puma.st"
+    assert main(["stl", "--arm", str(path), "--dialect", "st", "--no-motion", "-o", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert "puma_cli.urdf: joint theta1 pulses_per_rev: is missing" in err
+    assert err.count("\n") == 1 and not out.exists()
+    assert main(["arms", "--arm", str(path), "--toml"]) == 0
+    assert capsys.readouterr().out == description_text(path)
     # the IK block alone: a URDF gives velocities, no accelerations for the machine program
-    assert main(["stl", "--arm", str(path), "--dialect", "st", "--no-motion", "-o", str(out)]) == 0
+    assert main(["stl", "--arm", str(with_drive(path)), "--dialect", "st", "--no-motion", "-o",
+                 str(out)]) == 0  # fmt: skip
     assert "FUNCTION_BLOCK" in out.read_text()
     assert main(["ik", "0", "0", "0", "0", "0", "0", "--arm", str(path)]) == 2
     assert Status.INSIDE_REACH  # the refusal's words are the CLI's (exit 2, one line)

@@ -17,8 +17,9 @@ clashes with an output column (or with a name given to another clash) gets the p
 ``input_status`` -> ``input_status_2``, never one column for two.
 
 Output: the input columns, then ``branch, reachable``, the joint values (``Arm.joint_labels``:
-``theta1_deg .. thetan_deg``; a prismatic joint's in mm), ``c1 .. cn, status, reason``, one row
-per target and branch, targets in input order. ``reachable`` is true where the row has a
+``theta1_deg .. thetan_deg``; a prismatic joint's in mm), ``c1 .. cn`` (the pulses: none for
+an arm whose description gives no drive), ``status, reason``, one row per target and branch,
+targets in input order. ``reachable`` is true where the row has a
 solution; ``status`` says why not, branch by branch (ok, out-of-reach, inside-reach, base-axis,
 joint-limits, degenerate, orientation, invalid: :attr:`IKSolutions.branch_status`, so a GR-1
 back branch whose wrist is out of reach says out-of-reach, not joint-limits). Unsolved rows
@@ -87,13 +88,14 @@ def input_aliases(columns: tuple[str, ...]) -> dict[str, tuple[str, ...]]:
 
 
 def output_columns(arm: Arm) -> list[str]:
-    """The columns ``solve_csv`` appends to the input's."""
+    """The columns ``solve_csv`` appends to the input's (pulses ``c1 .. cn`` only for an arm
+    with a drive)."""
     n = arm.n_joints
     return [
         "branch",
         "reachable",
         *arm.joint_labels,
-        *(f"c{j + 1}" for j in range(n)),
+        *(f"c{j + 1}" for j in range(n) if arm.has_drive),  # no drive given: no pulses
         "status",
         "reason",
     ]
@@ -285,9 +287,9 @@ def _rows(arm: Arm, cells, names, theta, ok, row_text, reason, said):
     for j in range(nj):
         out.append(_fmt_angles(user[:, j], flat_ok))
     pulses = np.zeros((k * nb, nj), dtype=np.int64)
-    if flat_ok.any():
+    if flat_ok.any() and arm.has_drive:
         pulses[flat_ok] = arm.pulses(flat[flat_ok])
-    for j in range(nj):
+    for j in range(nj if arm.has_drive else 0):
         given = zip(pulses[:, j].tolist(), flat_ok.tolist(), strict=True)
         out.append([str(c) if good else "" for c, good in given])
     out.append(row_text)

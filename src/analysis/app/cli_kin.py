@@ -149,6 +149,7 @@ def _nearest_pose_hint(arm, target) -> str:
 
 def _ik_single(args: argparse.Namespace, arm) -> int:
 
+    from analysis.kinematics.joints import NO_DRIVE
     from analysis.kinematics.solution import OrientationError
 
     given = list(args.target)
@@ -169,7 +170,8 @@ def _ik_single(args: argparse.Namespace, arm) -> int:
             sol["theta_deg"] = values
         else:
             sol |= {"joint_values": values, "joint_units": list(arm.joint_user_units)}
-        out.append({**sol, "pulses": arm.pulses(theta).tolist()})
+        # one shape: "pulses" is the drive's whole counts, or null where no drive is given
+        out.append({**sol, "pulses": arm.pulses(theta).tolist() if arm.has_drive else None})
     missing = _missing_branches(arm, target, names, sols, args)
     units = arm.user_units
     if all(u == "mm" for u in units):
@@ -181,14 +183,15 @@ def _ik_single(args: argparse.Namespace, arm) -> int:
                         for name, v, u in zip(arm.inputs, given, units, strict=True))
         ]  # fmt: skip
     for s in out:
-        pul = ", ".join(str(c) for c in s["pulses"])
+        pul = ("pulses = (" + ", ".join(str(c) for c in s["pulses"]) + ")" if arm.has_drive
+               else f"pulses: {NO_DRIVE}")  # fmt: skip
         if revolute:
             ang = "theta = (" + ", ".join(f"{t:.2f}" for t in s["theta_deg"]) + ") deg"
         else:
             ang = "q = (" + ", ".join(
                 f"{t:.2f} {u}" for t, u in zip(s["joint_values"], arm.joint_user_units,
                                                strict=True)) + ")"  # fmt: skip
-        lines.append(f"  {s['branch']:<10} {ang}   pulses = ({pul})")
+        lines.append(f"  {s['branch']:<10} {ang}   {pul}")
     for m in missing:
         lines.append(f"  {m['branch']:<10} no solution: {m['status']} ({m['reason']})")
     if len(names) > 1:
@@ -245,6 +248,13 @@ def _missing_branches(arm, target, names, sols, args) -> list[dict]:
 def cmd_arms(args: argparse.Namespace) -> int:
     from analysis.kinematics.catalog import describe_arm, list_arms
 
+    if args.toml:
+        if len(args.arm) != 1 or args.json:
+            raise UsageError("--toml prints one arm's description: give one --arm (no --json)")
+        from analysis.kinematics.description import description_toml
+
+        print(description_toml(args.arm[0]), end="")
+        return 0
     docs = [describe_arm(a) for a in args.arm] if args.arm else list_arms()
     if args.json:
         print(to_json(docs))
@@ -257,7 +267,9 @@ def cmd_arms(args: argparse.Namespace) -> int:
             f"{k} = {v['value']:g} {v['unit']}" + (" (assumed)" if v["status"] == "assumed" else "")
             for k, v in d["parameters"].items()
         )
-        print(terminal(f"{d['name']:<11} {d['title']} ({len(d['joints'])} joints): {params}"))
+        drive = ", no drive given" if d.get("pulses_per_rev", ()) is None else ""
+        print(terminal(f"{d['name']:<11} {d['title']} ({len(d['joints'])} joints{drive}): "
+                       f"{params}"))  # fmt: skip
     return 0
 
 
@@ -362,4 +374,8 @@ def add_arms(sub) -> None:
                    help="list this arm (a name or a description file; repeatable) instead; "
                    "a description that names a .py closed form runs that file's code")  # fmt: skip
     p.add_argument("--json", action="store_true", help="machine-readable output")
+    p.add_argument("--toml", action="store_true",
+                   help="print the --arm's description as TOML (a URDF's: the description it "
+                   "is converted to, without a drive, which a URDF does not give: add "
+                   "pulses_per_rev to each [[joints]] entry for a PLC program)")  # fmt: skip
     p.set_defaults(func=cmd_arms)

@@ -123,7 +123,7 @@ def solve_graph(arm, tol: float = DEFAULT_TOL_MM, *, on_axis: bool = False) -> G
         m, arm.closed_form, p, dict(arm.params), arm.branches, tol=tol, limits=arm.limits,
         **opts,
     )
-    for b in arm.branches:
+    for b in arm.branches if arm.has_drive else ():  # no drive given: no pulses
         for j, ppr in enumerate(arm.params.pulses_per_rev):
             out[f"c:{b}:{j}"] = pulse_count(m, out[f"q:{b}:{j}"], float(ppr))
     g.outputs = out
@@ -156,7 +156,7 @@ def pulses_graph(arm) -> Graph:
     q = [g.input(f"q{j}") for j in range(arm.n_joints)]
     g.outputs = {
         f"c{j}": pulse_count(m, q[j], float(ppr))
-        for j, ppr in enumerate(arm.params.pulses_per_rev)
+        for j, ppr in enumerate(arm.params.pulses_per_rev if arm.has_drive else ())
     }
     return g
 
@@ -176,7 +176,7 @@ def _module(arm) -> str:
         "branches": list(arm.branches),
         "joints": [j.name for j in arm.description.joints],
         "limits": [None if lim is None else list(lim) for lim in arm.limits],
-        "pulses_per_rev": list(arm.params.pulses_per_rev),
+        "pulses_per_rev": list(arm.params.pulses_per_rev) if arm.has_drive else None,
         "status_text": {int(k): v for k, v in STATUS_TEXT.items()},
         "n_frames": n_frames,
         "joint_units": list(arm.joint_user_units),
@@ -217,12 +217,14 @@ def _module(arm) -> str:
         "    for (let j = 0; j < arm.joints.length; j++) {\n"
         "      q.push(r['q:' + b + ':' + j]); c.push(r['c:' + b + ':' + j]);\n"
         "    }\n"
-        "    out.branches[b] = {ok: r['ok:' + b], status: r['status:' + b], q: q, c: c};"
+        "    out.branches[b] = {ok: r['ok:' + b], status: r['status:' + b], q: q,\n"
+        "                       c: arm.pulses_per_rev === null ? null : c};"
         "\n"
         "  }\n"
         "  return out;\n"
         "};\n"
         "arm.pulses = function (q) {\n"
+        "  if (arm.pulses_per_rev === null) return null;\n"
         "  const r = raw_pulses(q), c = [];\n"
         "  for (let j = 0; j < arm.joints.length; j++) c.push(r['c' + j]);\n"
         "  return c;\n"
@@ -251,7 +253,8 @@ def _module(arm) -> str:
 
 def arm_module_js(arm) -> str:
     """A JavaScript expression whose value is the arm: ``name``, ``title``, ``inputs`` (with
-    ``units``: "mm" or "rad"), ``branches``, ``joints``, ``limits`` [rad], ``pulses_per_rev``,
+    ``units``: "mm" or "rad"), ``branches``, ``joints``, ``limits`` [rad], ``pulses_per_rev``
+    (null where the description gives no drive: ``c`` and ``pulses(q)`` are null too),
     ``status_text`` (code -> word), ``center`` and ``reach`` (the reach centre and largest
     radius, for the nearest reachable target), ``on_axis`` and ``explain`` (the sentences
     of :mod:`analysis.app.explain` and its search's constants), and three functions printed

@@ -16,6 +16,7 @@ import numpy.typing as npt
 import pandas as pd
 
 from analysis.kinematics.arm import DEFAULT_TOL_MM, Arm, as_points, load_arm  # noqa: F401
+from analysis.kinematics.joints import NO_DRIVE
 from analysis.kinematics.status import STATUS_TEXT, Status
 
 POSITION_INPUTS = {"px": "x", "py": "y", "pz": "z"}
@@ -184,10 +185,10 @@ class PoseReport:
 
     def joint_columns(self) -> list[str]:
         """The joint value columns (``Arm.joint_labels``: ``<joint>_deg`` or ``_mm``), which
-        come before the pulse counts ``c1 .. cn``."""
+        come first (then the pulse counts ``c1 .. cn``, where the arm has a drive)."""
         cols = list(self.table.columns)
-        n = sum(c.startswith("c") and c[1:].isdigit() for c in cols)
-        return cols[:n]
+        return cols[: cols.index("error_mm") - sum(c[:1] == "c" and c[1:].isdigit()
+                                                   for c in cols)]  # fmt: skip
 
     def angles_deg(self) -> npt.NDArray[np.float64]:
         """The chosen branch's joint values in user units (KeyError for a bad target):
@@ -224,8 +225,10 @@ class PoseReport:
             for c in joints
         }
         for j in range(1, len(joints) + 1):
-            out[f"c{j} [pulses]"] = col(t[f"c{j}"], lambda v: str(int(v)))
-        out["pulse error [mm]"] = col(t["error_mm"], lambda v: num(v, 3))
+            if f"c{j}" in t:  # none where no drive is given
+                out[f"c{j} [pulses]"] = col(t[f"c{j}"], lambda v: str(int(v)))
+        if "c1" in t:
+            out["pulse error [mm]"] = col(t["error_mm"], lambda v: num(v, 3))
         out["w [10⁶ mm³/rad³]"] = col(t["w_mm3"], lambda v: num(v / MANIPULABILITY_UNIT, 3))
         out["status"] = list(t["status"])
         return pd.DataFrame(out, index=t.index)
@@ -323,7 +326,8 @@ def pose_report(
     sol = arm.solve(p, names, theta1_on_axis=theta1_on_axis, tol=tol)
     status, outside = Status(int(sol.status)), float(sol.outside_mm)
     n = arm.n_joints
-    cols = [*arm.joint_labels, *(f"c{j}" for j in range(1, n + 1))]
+    drive = arm.has_drive  # no drive given: no pulse columns, no whole-pulse error
+    cols = [*arm.joint_labels, *(f"c{j}" for j in range(1, (n if drive else 0) + 1))]
     cols += ["error_mm", "w_mm3", "status"]
     if status != Status.OK:
         try:
@@ -338,8 +342,8 @@ def pose_report(
         )
     ok = sol.ok
     q = np.where(ok[:, None], sol.theta, 0.0)  # (B, n) rad; 0 stands in where no solution
-    c = arm.pulses(q)
-    err = _position_error(arm, arm.from_pulses(c), p)
+    c = arm.pulses(q) if drive else np.zeros((len(names), 0), dtype=np.int64)
+    err = _position_error(arm, arm.from_pulses(c), p) if drive else np.full(len(names), np.nan)
     # why a branch has no solution: that branch solved alone gives its own status
     words = [
         "ok" if ok[i] else STATUS_TEXT[Status(int(arm.solve(p, (b,), tol=tol).status))]
@@ -349,14 +353,15 @@ def pose_report(
     table = pd.DataFrame(
         {
             **{label: deg[:, j] for j, label in enumerate(arm.joint_labels)},
-            **{f"c{j + 1}": pd.array(np.where(ok, c[:, j], 0), dtype="Int64") for j in range(n)},
+            **{f"c{j + 1}": pd.array(np.where(ok, c[:, j], 0), dtype="Int64")
+               for j in range(c.shape[1])},
             "error_mm": np.where(ok, err, np.nan),
             "w_mm3": np.where(ok, _manipulability(arm, q), np.nan),
             "status": words,
         },
         index=pd.Index(names, name="branch"),
     )
-    for j in range(n):  # no pulse count where there is no angle
+    for j in range(c.shape[1]):  # no pulse count where there is no angle
         table.loc[~ok, f"c{j + 1}"] = pd.NA
     message = _branch_message(arm, table.loc[branch], branch, outside)
     return PoseReport(key, branch, True, outside, message, None, table, status, arm.name, arm)
@@ -375,11 +380,14 @@ def _branch_message(arm: Arm, r: pd.Series, branch: str, outside: float) -> str:
             num(r[label], 2) + ("°" if u == "deg" else f" {u}")
             for label, u in zip(arm.joint_labels, arm.joint_user_units, strict=True)
         ) + ")"  # fmt: skip
+    margin = (f"reach margin {num(max(-outside, 0.0), 1)} mm (the largest over the branches' "
+              "wrists)")  # fmt: skip
+    if not arm.has_drive:
+        return f"{branch}: {angles}; pulses: {NO_DRIVE}; {margin}"
     pulses = ", ".join(str(int(r[f"c{j}"])) for j in range(1, arm.n_joints + 1))
     return (
         f"{branch}: {angles} -> pulses ({pulses}); whole pulses put the gripper "
-        f"{num(r['error_mm'], 3)} mm off the target; reach margin "
-        f"{num(max(-outside, 0.0), 1)} mm (the largest over the branches' wrists)"
+        f"{num(r['error_mm'], 3)} mm off the target; {margin}"
     )
 
 
@@ -448,10 +456,11 @@ def fk_line(arm: Arm, q: npt.ArrayLike, rep: PoseReport | None) -> str:
         num(v, 2) + ("°" if u == "deg" else f" {u}")
         for v, u in zip(doc["joint_values"], doc["joint_units"], strict=True)
     )
-    pulses = ", ".join(str(int(c)) for c in arm.pulses(q))
+    pulses = (f"pulses ({', '.join(str(int(c)) for c in arm.pulses(q))})" if arm.has_drive
+              else f"pulses: {NO_DRIVE}")  # fmt: skip
     point = ", ".join(num(v, 2) for v in doc["position_mm"])
     rpy = ", ".join(num(v, 2) for v in doc["rpy_deg"])
-    text = f"FK: joints ({joints}) → pulses ({pulses}); tool at ({point}) mm, RPY ({rpy})°"
+    text = f"FK: joints ({joints}) → {pulses}; tool at ({point}) mm, RPY ({rpy})°"
     passive = {k: v for k, v in doc["joint_states"].items() if k not in doc["joint_names"]}
     if passive:
         text += "; passive joints " + ", ".join(

@@ -20,9 +20,10 @@ def arm_names() -> tuple[str, ...]:
 def describe_arm(name: str | Path) -> dict:
     """One arm as plain data: ``name`` (what ``--arm`` takes: the file's stem), ``title,
     paper, joints`` (names), ``joint_units``, ``branches``, ``inputs``, ``parameters`` {name:
-    {value, unit, status}} (an arm without a closed form: no branches, no inputs, and
-    ``no_ik``, the reason); or ``name`` and ``error`` (the reason it does not load, one line)
-    if it does not."""
+    {value, unit, status}}, ``pulses_per_rev`` (per joint, or null where the description
+    gives no drive: an engineer's D-H table) (an arm without a closed form: no branches, no
+    inputs, and ``no_ik``, the reason); or ``name`` and ``error`` (the reason it does not
+    load, one line) if it does not."""
     stem = Path(str(name)).stem
     try:
         arm = load_arm(str(name))
@@ -41,6 +42,7 @@ def describe_arm(name: str | Path) -> dict:
             k: {"value": p.value, "unit": p.unit, "status": p.status}
             for k, p in d.parameters.items()
         },
+        "pulses_per_rev": list(arm.params.pulses_per_rev) if arm.has_drive else None,
         **({} if arm.closed_form else {"no_ik": " ".join(arm.no_ik.split())}),
     }
 

@@ -7,15 +7,23 @@ Nothing here knows an arm. :func:`solve` records the shared solver body
 chain. The generated source is written to a cache folder and imported from there, so Numba
 caches the machine code on disk (``cache=True``) and a new process does not compile again.
 
-Vectorization: the printed loop is straight-line arithmetic with ``a if c else b`` selects
-on values already computed (LLVM turns them into vector blends), ``sqrt`` and division,
-and one inlined branch-free ``atan2`` (below); inputs and outputs are separate contiguous
-1-D arrays. The loop is a ``numba.prange`` even on one thread: Numba then declares the
-arrays ``noalias`` to LLVM, without which the vectorizer needs a run-time overlap check for
-every pair of the ~20 arrays and gives up (measured: 6x slower). Loop-invariant nodes
-(parameters, tolerance) are hoisted out of the loop.
-Arithmetic is IEEE (no ``fastmath``), so results equal the numpy evaluation of the same
-closed form to a few ulp (the ``atan2`` differs from libm by at most 2 ulp).
+Vectorization: the printed loop is straight-line arithmetic with ``_select(c, a, b)`` on
+values already computed (an LLVM ``select``, which becomes a vector blend), ``sqrt`` and
+division, and one inlined branch-free ``atan2`` (below); inputs and outputs are separate
+contiguous 1-D arrays, each output stored as soon as it is computed.
+
+Compile time: the loop body is one basic block. Printed as Python's ``a if c else b`` (as it
+was), every select was a branch of its own: the UR5's eight-branch kernel had about 900
+blocks, and Numba's parfor copy propagation, which copies its per-block tables for every
+block, took about 7 minutes of the first call (profile: 78% in ``copy.deepcopy`` under
+``numba.core.ir_utils.copy_propagate``). As one block it compiles in about 10 s of CPU.
+
+The loop is a ``numba.prange`` even on one thread: Numba then declares the arrays
+``noalias`` to LLVM, without which the vectorizer needs a run-time overlap check for every
+pair of the ~20 arrays and gives up (measured: 6x slower). Loop-invariant nodes
+(parameters, tolerance) are hoisted out of the loop. Arithmetic is IEEE (no ``fastmath``),
+so results equal the numpy evaluation of the same closed form to a few ulp (the ``atan2``
+differs from libm by at most 2 ulp; ``sin`` and ``cos`` are libm's).
 
 Why Numba rather than numexpr, JAX or a C extension: it compiles Python source we generate,
 on the machine, with no compiler toolchain to install, and its parallel loops use both
@@ -76,10 +84,33 @@ columns) while keeping the start-up of a parallel loop negligible."""
 
 # Cephes atan (S. L. Moshier, Cephes Math Library, atan.c): atan(x) = x + x^3 P(x^2)/Q(x^2)
 # on [0, 0.66] with its published coefficients (peak relative error 2.6e-18), plus the
-# reduction atan(t) = pi/4 + atan((t - 1)/(t + 1)) above 0.66. Branch-free: every value is
-# computed and chosen with a select, so the loop around it vectorizes; within 2 ulp of
-# libm's atan2 (tests/kinematics/test_compiled.py).
+# reduction atan(t) = pi/4 + atan((t - 1)/(t + 1)) above 0.66, t = min / max of |y|, |x|;
+# (t - 1)/(t + 1) is taken as (min - max)/(min + max), so the reduced argument costs one
+# division, not two (both operands scaled by 2^-4 above 2^1000, exactly, against overflow).
+# Branch-free: every value is computed and chosen with ``_select`` (an LLVM ``select``: the
+# loop body stays one basic block, which LLVM vectorizes and Numba types quickly); within
+# 2 ulp of libm's atan2 (tests/kinematics/test_compiled.py).
 PRIMITIVES = """
+from numba.core import types as _types
+from numba.extending import intrinsic as _intrinsic
+
+
+@_intrinsic
+def _select(typingctx, c, a, b):
+    # c ? a : b as one LLVM select of values already computed (no branch)
+    t = typingctx.unify_types(a, b)
+    if t is None:
+        return None
+
+    def codegen(context, builder, sig, args):
+        cond = context.cast(builder, args[0], sig.args[0], _types.boolean)
+        x = context.cast(builder, args[1], sig.args[1], t)
+        y = context.cast(builder, args[2], sig.args[2], t)
+        return builder.select(cond, x, y)
+
+    return t(c, a, b), codegen
+
+
 _AP0 = -8.750608600031904122785e-1
 _AP1 = -1.615753718733365076637e1
 _AP2 = -7.500855792314704667340e1
@@ -94,6 +125,7 @@ _MOREBITS = 6.123233995736765886130e-17
 _PI = 3.141592653589793
 _PIO2 = 1.5707963267948966
 _PIO4 = 0.7853981633974483
+_HUGE = 2.0**1000
 _NAN = math.nan
 
 
@@ -101,25 +133,25 @@ _NAN = math.nan
 def _atan2(y, x):
     ay = abs(y)
     ax = abs(x)
-    mx = max(ax, ay)
-    t = min(ax, ay) / (mx if mx != 0.0 else 1.0)
-    big = t > 0.66
-    xr = (t - 1.0) / (t + 1.0)
-    xx = xr if big else t
+    k = _select(max(ax, ay) > _HUGE, 0.0625, 1.0)
+    mx = max(ax, ay) * k
+    mn = min(ax, ay) * k
+    big = mn > 0.66 * mx
+    xx = _select(big, mn - mx, mn) / _select(big, mn + mx, _select(mx != 0.0, mx, 1.0))
     z = xx * xx
     num = ((((_AP0 * z + _AP1) * z + _AP2) * z + _AP3) * z + _AP4) * z
     den = ((((z + _AQ0) * z + _AQ1) * z + _AQ2) * z + _AQ3) * z + _AQ4
     r = xx * (num / den) + xx
-    a = (_PIO4 + (r + 0.5 * _MOREBITS)) if big else r
-    a = ((_PIO2 - a) + _MOREBITS) if ay > ax else a
+    a = _select(big, _PIO4 + (r + 0.5 * _MOREBITS), r)
+    a = _select(ay > ax, (_PIO2 - a) + _MOREBITS, a)
     neg = (x < 0.0) | ((x == 0.0) & (math.copysign(1.0, x) < 0.0))
-    a = ((_PI - a) + 2.0 * _MOREBITS) if neg else a
+    a = _select(neg, (_PI - a) + 2.0 * _MOREBITS, a)
     return math.copysign(a, y)
 
 
 @jit
 def _sign(x):
-    return 1.0 if x > 0.0 else (-1.0 if x < 0.0 else 0.0)
+    return _select(x > 0.0, 1.0, _select(x < 0.0, -1.0, 0.0))
 
 
 @jit
@@ -150,7 +182,7 @@ class KernelPrinter(ExpressionPrinter):
         return f"({a} ^ True)"
 
     def _print_select(self, cond, a, b):
-        return f"({a} if {cond} else {b})"
+        return f"_select({cond}, {a}, {b})"
 
 
 _KERNEL = KernelPrinter()
@@ -160,6 +192,7 @@ def atan2_reference():
     """The kernel's ``atan2``, as plain Python (for tests against libm)."""
     ns: dict = {"math": math, "np": np, "jit": lambda f: f}
     exec(PRIMITIVES, ns)
+    ns["_select"] = lambda c, a, b: a if c else b
     return ns["_atan2"]
 
 
@@ -209,14 +242,22 @@ def kernel_source(
     outs = list(outputs)
     args = ["n", *(f"a_{a}" for a in arrays), *(f"s_{s}" for s in scalars)]
     args += [f"o_{k}" for k in range(len(outs))]
-    body = [f"def kernel({', '.join(args)}):"]
-    body += [f"    {line(n)}" for n in live if n.index not in per_elem]
-    body.append("    for i in numba.prange(n):")
-    body += [f"        {line(n)}" for n in live if n.index in per_elem]
+    # each output is stored as soon as its value is computed (a value that lives to the end
+    # of the loop body holds a register or a stack slot that long); values that are not per
+    # element at the end
+    stores: dict = {}
     for k, name in enumerate(outs):
         v = graph.outputs[name]
         cast = {"f8": "{}", "i8": "np.int64({})", "i1": "np.int8({})", "b1": "{}"}[outputs[name]]
-        body.append(f"        o_{k}[i] = {cast.format(ref(v))}")
+        at = v.index if isinstance(v, Node) and v.index in per_elem else None
+        stores.setdefault(at, []).append(f"        o_{k}[i] = {cast.format(ref(v))}")
+    body = [f"def kernel({', '.join(args)}):"]
+    body += [f"    {line(n)}" for n in live if n.index not in per_elem]
+    body.append("    for i in numba.prange(n):")
+    for n in live:
+        if n.index in per_elem:
+            body += [f"        {line(n)}", *stores.get(n.index, ())]
+    body += stores.get(None, [])
     return "\n".join(body) + "\n"
 
 

@@ -3,7 +3,8 @@
 A description holds the D-H rows as the paper prints them (numbers or parameter names), the
 parameters' values with their provenance (``printed``, ``derived``, ``assumed`` or
 ``measured``; a value may be read from a table of the paper kept verbatim in ``data/``, or
-next to the description), and the joints' drive (pulses per revolution, limits). Everything
+next to the description), and the joints (limits; the drive, pulses per revolution, where
+the description gives one: :mod:`analysis.kinematics.joints`). Everything
 numeric in the project about an arm comes from here: the closed form
 (:mod:`analysis.kinematics.arms`) receives the parameter values, the chain
 (:class:`~analysis.kinematics.dh.DHTable`) is built from the rows, and Pinocchio is built
@@ -23,11 +24,15 @@ Format (``data/arms/grabber.toml`` is the commented example)::
     link = "waist"; joint = "theta1"; alpha_deg = 90; a = 0; d = "L1"; theta_offset_deg = 0
     kind = "revolute"                  # "prismatic" (the joint value adds to d [mm]) or
                                        # "fixed" (a tool row without a joint)
-    [[joints]]                         # one per joint variable, in chain order
+    [[joints]]                         # one per joint variable, in chain order (optional
+                                       # where every joint is revolute: the rows name them)
     name = "theta1"; pulses_per_rev = 4000; limits_deg = [-180, 180]
     # or pulses_per_rev = { value = 3200, status = "assumed" } (provenance as for parameters)
+    # the drive (pulses_per_rev; lead_mm) is optional: a D-H table has none, and what needs
+    #   one refuses naming the joint and the key (analysis.kinematics.joints)
     # a prismatic joint: kind = "prismatic"; limits_mm = [lo, hi] (required);
-    #   lead_mm = 5.0 (travel per motor revolution; pulses = mm / lead_mm * pulses_per_rev)
+    #   lead_mm = 5.0 (travel per motor revolution; pulses = mm / lead_mm * pulses_per_rev;
+    #   with pulses_per_rev, or neither)
     # motion limits and homing (optional; None where absent, JointSpec.require names them):
     max_velocity     = { value = 90.0,   unit = "deg/s",  status = "assumed", source = "..." }
     max_acceleration = { value = 360.0,  unit = "deg/s2", status = "assumed", source = "..." }
@@ -54,7 +59,6 @@ from __future__ import annotations
 import math
 import re
 import tomllib
-from collections.abc import Mapping
 from dataclasses import dataclass, field
 from functools import cache
 from pathlib import Path
@@ -62,7 +66,25 @@ from pathlib import Path
 from analysis import validate
 from analysis.kinematics import schema
 from analysis.kinematics.dh import DHRow, DHTable
-from analysis.kinematics.schema import IDENTIFIER, DescriptionError, Reader, identifier_problem
+from analysis.kinematics.joints import (
+    HOME_MODES,
+    JOINT_KINDS,
+    MOTION_KEYS,
+    RATE_KEYS,
+    JointSpec,
+    read_joint,
+    row_joints,
+)
+from analysis.kinematics.schema import (
+    IDENTIFIER,
+    STATUSES,
+    DescriptionError,
+    NoDrive,
+    Reader,
+    identifier_problem,
+)
+from analysis.kinematics.schema import source as _source
+from analysis.kinematics.schema import status as _status
 from analysis.kinematics.tables import table_path, table_value
 from analysis.kinematics.urdf_in import description_text as urdf_description_text
 from analysis.paths import data_dir
@@ -81,15 +103,12 @@ __all__ = [
     "AxisSpec",
     "DescriptionError",
     "JointSpec",
+    "NoDrive",
     "ParamSpec",
+    "description_toml",
     "load_description",
 ]
 
-STATUSES = ("printed", "derived", "assumed", "measured")
-"""Provenance of a value: printed in the paper, derived from printed values, assumed (not
-printed: every figure and table that uses it says so), or measured (on the robot, for a
-user's own arm)."""
-JOINT_KINDS = ("revolute", "prismatic")
 MAX_PULSES_PER_REV = validate.MAX_PULSES_PER_REV
 MAX_DESCRIPTION_BYTES = 1 << 20
 """Largest description file read [bytes] (1 MiB: the seed arms' are 3-7 kB)."""
@@ -97,25 +116,6 @@ IDENTIFIER_RE = re.compile(r"[A-Za-z](?:_?[A-Za-z0-9])*")
 DERIVED = "derived"
 """The ``closed_form`` of a description that asks for one derived from its rows (also what
 a missing ``closed_form`` means where there are rows)."""
-HOME_MODES = ("switch", "set")
-"""How an axis is homed: "switch" (a reference switch is searched, MC_Home with a switch) or
-"set" (the present position is declared to be the home position)."""
-RATE_KEYS = ("max_velocity", "max_acceleration", "max_jerk")
-MOTION_KEYS = (*RATE_KEYS, "home_mode", "home_position")
-"""The joint values a machine program needs (:meth:`JointSpec.require`)."""
-_RATE_UNIT = {"max_velocity": "/s", "max_acceleration": "/s2", "max_jerk": "/s3"}
-
-
-def _rate_hint(key: str):
-    return lambda j: (f'{key} = {{ value = ..., unit = "{"deg" if j.kind == "revolute" else "mm"}'
-                      f'{_RATE_UNIT[key]}", status = ..., source = ... }}')  # fmt: skip
-
-
-_MOTION_HINT = {
-    **{k: _rate_hint(k) for k in RATE_KEYS},
-    **dict.fromkeys(("home_mode", "home_position"), lambda j: 'home = { mode = "switch" | '
-                    '"set", position = ..., status = ..., source = ... }'),
-}  # fmt: skip
 
 
 @dataclass(frozen=True)
@@ -137,73 +137,6 @@ class AxisSpec:
     value: tuple[float, float, float]
     status: str
     note: str
-
-
-@dataclass(frozen=True)
-class JointSpec:
-    """One joint variable: its kind, drive resolution and limits [rad | mm].
-
-    A revolute joint's pulse count is ``theta_deg / 360 * pulses_per_rev`` (eqs. 20-22 of
-    seed 000); a prismatic joint's is ``q_mm / lead_mm * pulses_per_rev`` (a screw of lead
-    ``lead_mm`` per motor revolution).
-    """
-
-    name: str
-    pulses_per_rev: int
-    lower: float
-    upper: float
-    limits_status: str = ""
-    pulses_status: str = "printed"
-    """Provenance of ``pulses_per_rev`` ("printed", "derived", "assumed" or "measured")."""
-    kind: str = "revolute"
-    lead_mm: float | None = None
-    """Travel per motor revolution [mm] of a prismatic joint (None for a revolute one)."""
-    lead_status: str = ""
-    max_velocity: float | None = None
-    """Largest speed [rad/s | mm/s], or None where the description gives none."""
-    max_acceleration: float | None = None
-    """Largest acceleration [rad/s^2 | mm/s^2], or None."""
-    max_jerk: float | None = None
-    """Largest jerk [rad/s^3 | mm/s^3], or None."""
-    home_mode: str | None = None
-    """How the axis finds its zero: "switch" (a reference switch, searched) or "set" (the
-    present position is set to :attr:`home_position`), or None."""
-    home_position: float | None = None
-    """The joint value at home [rad | mm], or None."""
-    max_velocity_status: str = ""
-    max_acceleration_status: str = ""
-    max_jerk_status: str = ""
-    home_status: str = ""
-    sources: Mapping[str, str] = field(default_factory=dict, compare=False)
-    """Where each motion value comes from (``source`` or ``note`` of its entry), by key."""
-
-    def require(self, key: str) -> float | str:
-        """The motion value ``key`` (one of :data:`MOTION_KEYS`), or ValueError naming the
-        joint and the key when the description gives none (a program that needs it refuses).
-
-        >>> JointSpec("theta1", 4000, -1.0, 1.0).require("max_velocity")
-        Traceback (most recent call last):
-        ...
-        ValueError: joint theta1 has no max_velocity: give max_velocity = { value = ...
-        """
-        if key not in MOTION_KEYS:
-            raise ValueError(f"{key!r} is not a motion value ({', '.join(MOTION_KEYS)})")
-        value = getattr(self, key)
-        if value is None:
-            raise ValueError(f"joint {self.name} has no {key}: give {_MOTION_HINT[key](self)} "
-                             "in its [[joints]] entry")  # fmt: skip
-        return value
-
-    @property
-    def unit(self) -> str:
-        """The joint value's unit: "rad" (revolute) or "mm" (prismatic)."""
-        return "rad" if self.kind == "revolute" else "mm"
-
-    @property
-    def unlimited(self) -> bool:
-        """True if the limits allow every angle (a revolute joint turning a full turn or
-        more; a prismatic joint always has a stroke)."""
-        return self.kind == "revolute" and self.lower <= -math.pi and self.upper >= math.pi
 
 
 @dataclass(frozen=True, eq=False)
@@ -320,6 +253,16 @@ def description_path(name: str | Path) -> Path:
     return path
 
 
+def description_toml(name: str | Path) -> str:
+    """The description of arm ``name`` as TOML text: the file itself, or for a URDF the
+    description it is converted to (:func:`analysis.kinematics.urdf_in.description_text`:
+    what a user copies to add what a URDF lacks, its drive)."""
+    path = description_path(name)
+    if path.suffix.lower() == ".urdf":
+        return urdf_description_text(path)
+    return read_text(path, MAX_DESCRIPTION_BYTES, "arm description")
+
+
 def load_description(name: str | Path, tables: dict | None = None) -> ArmDescription:
     """Read ``data/arms/<name>.toml`` (or the description file at path ``name``) once per
     version of it and of the tables it may read; see :func:`_load` for the arguments.
@@ -376,7 +319,9 @@ def _load(name: str, tables: tuple, stamp: tuple) -> ArmDescription:
     rows = tuple(_row(t, params) for t in r.tables("rows"))
     if "rows" in d and not rows:
         raise DescriptionError(file, "[[rows]]", "is empty")
-    joints = tuple(_joint(t, ctx) for t in r.tables("joints"))
+    joints = tuple(read_joint(t, ctx.number, file) for t in r.tables("joints"))
+    if "joints" not in d and rows:  # an engineer's D-H table: the rows name the joints
+        joints = row_joints(file, rows)
     _check_chain(file, rows, joints)
     closed_form = r.text("closed_form", DERIVED if rows else _stem(path))
     if not closed_form:
@@ -443,14 +388,6 @@ def _stem(path: Path) -> str:
     return "_".join(p for p in re.split(r"[^A-Za-z0-9]+", path.stem) if p) or "arm"
 
 
-def _status(r: Reader, key: str = "status", default: str = "printed") -> str:
-    return r.choice(key, STATUSES, default)
-
-
-def _source(r: Reader) -> str:
-    return r.text("source", r.text("note", ""))
-
-
 def _parameter(params: Reader, key: str, ctx: _Context) -> ParamSpec:
     """One ``[parameters]`` entry: a length [mm], bare or ``{ value | table, unit, ... }``."""
     if identifier_problem(key):
@@ -498,86 +435,11 @@ def _row(r: Reader, params: dict) -> dict:
     return row
 
 
-def _joint(r: Reader, ctx: _Context) -> JointSpec:
-    """One ``[[joints]]`` entry."""
-    r.check_keys(schema.JOINT)
-    name = r.ident("name")
-    r.where = f"joint {name}"
-    kind = r.choice("kind", JOINT_KINDS, "revolute")
-    if "pulses_per_rev" not in r:
-        raise r.error("pulses_per_rev", "is missing (a whole number, or a table)")
-    pspec = r.sub("pulses_per_rev", schema.NUMBER_SPEC) if isinstance(
-        r.raw("pulses_per_rev"), dict) else None  # fmt: skip
-    if pspec is not None and "resolution_deg" in pspec:
-        pspec.number("resolution_deg", lo=0.0, hi=360.0, unit="deg")
-    try:
-        ppr = validate.pulses_per_rev(ctx.number(r, "pulses_per_rev"), "")
-    except validate.InvalidValue as exc:
-        raise r.error("pulses_per_rev", str(exc).lstrip(" =")) from None
-    lead = lead_status = None
-    if kind == "revolute":
-        for key in ("limits_mm", "lead_mm"):
-            if key in r:
-                raise r.error(key, "is for a prismatic joint (kind = \"prismatic\")")
-        lo, hi = (math.radians(v) for v in (r.pair("limits_deg", r.angle_deg)
-                                            if "limits_deg" in r else (-180.0, 180.0)))  # fmt: skip
-    else:
-        if "limits_deg" in r:
-            raise r.error("limits_deg", "a prismatic joint's stroke is limits_mm")
-        for key in ("limits_mm", "lead_mm"):
-            if key not in r:
-                raise r.error(key, "is missing: a prismatic joint needs its stroke "
-                              "(limits_mm = [lower, upper]) and lead_mm")  # fmt: skip
-        lo, hi = r.pair("limits_mm", r.length)
-        if isinstance(r.raw("lead_mm"), dict):
-            lead_status = _status(r.sub("lead_mm", schema.NUMBER_SPEC))
-        lead = ctx.number(r, "lead_mm")
-        if not lead > 0 or lead > validate.MAX_LENGTH_MM:
-            raise r.error("lead_mm", f"{lead:g} mm must be > 0 mm and at most "
-                          f"{validate.MAX_LENGTH_MM:g} mm")  # fmt: skip
-    return JointSpec(
-        name, ppr, lo, hi, r.text("limits_status"), _status(pspec) if pspec else "printed",
-        kind, lead, lead_status or "", **_motion(r, kind, lo, hi),
-    )  # fmt: skip
-
-
-def _motion(r: Reader, kind: str, lo: float, hi: float) -> dict:
-    """The joint's motion limits and homing (``max_velocity``, ``max_acceleration``,
-    ``max_jerk``, ``home``), converted to the joint's units (rad | mm) by
-    :func:`analysis.validate.rate`; absent keys stay None."""
-    out: dict = {"sources": {}}
-    for order, key in enumerate(RATE_KEYS, start=1):
-        if key not in r:
-            continue
-        s = r.sub(key, schema.RATE)
-        for need in ("value", "unit"):
-            if need not in s:
-                raise s.error(need, f"is missing ({key} = {{ value = ..., unit = ..., "
-                              "status = ..., source = ... }})")  # fmt: skip
-        try:
-            out[key] = validate.rate(s.raw("value"), s.raw("unit"), "", order=order, kind=kind)
-        except ValueError as exc:
-            raise s.error("value", str(exc).lstrip(": =")) from None
-        out[f"{key}_status"], out["sources"][key] = _status(s), _source(s)
-    if "home" in r:
-        s = r.sub("home", schema.HOME)
-        mode = s.choice("mode", HOME_MODES)
-        if "position" not in s:
-            raise s.error("position", "is missing (deg | mm, within the joint's limits)")
-        pos = (math.radians(s.angle_deg("position")) if kind == "revolute" else
-               s.length("position"))  # fmt: skip
-        if not lo <= pos <= hi:
-            unit, show = ("deg", math.degrees) if kind == "revolute" else ("mm", float)
-            raise s.error("position", f"{show(pos):g} {unit} is outside the joint's limits "
-                          f"[{show(lo):g}, {show(hi):g}] {unit}")  # fmt: skip
-        out["home_mode"], out["home_position"] = mode, pos
-        out["home_status"], out["sources"]["home"] = _status(s), _source(s)
-    return out
-
-
 def _check_chain(file: str, rows: tuple, joints: tuple) -> None:
     if not joints:
-        raise DescriptionError(file, "[[joints]]", "is missing (one per joint variable)")
+        raise DescriptionError(file, "[[joints]]", "is missing (one per joint variable)" if
+                               rows else "is missing: a description without D-H [[rows]] "
+                               "names its joints in [[joints]], one per joint variable")
     names = [j.name for j in joints]
     dup = next((n for n in names if names.count(n) > 1), None)
     if dup:

@@ -34,7 +34,7 @@ from analysis.kinematics.derive import NotDerivable, derive
 from analysis.kinematics.description import DERIVED, ArmDescription, load_description
 from analysis.kinematics.model import Arm
 from analysis.kinematics.params import Params
-from analysis.kinematics.schema import DescriptionError
+from analysis.kinematics.schema import DescriptionError, NoDrive
 
 __all__ = ["arm_of", "closed_form_file", "closed_form_of", "derived_arm", "load_arm",
            "paper_arm"]  # fmt: skip
@@ -78,7 +78,7 @@ def arm_of(desc: ArmDescription, *, derived: bool = False) -> Arm:
     if desc.has_rows and cf is not None and cf.fk is not None:
         raise DescriptionError(file, "closed_form", f"both D-H [[rows]] and {cf.name!r} with "
                                "its own fk describe the chain; keep one")  # fmt: skip
-    params = Params(desc.values, tuple(j.pulses_per_rev for j in desc.joints))
+    params = _params(desc)
     if cf is not None:
         with _stage(file, "parameters"):
             cf.check(params)
@@ -88,6 +88,17 @@ def arm_of(desc: ArmDescription, *, derived: bool = False) -> Arm:
             with _stage(file, "[[rows]]"):
                 consistency.check(desc, cf, params)
     return Arm(desc, cf, params, reason)
+
+
+def _params(desc: ArmDescription) -> Params:
+    """The description's numbers; the drive only where every joint gives one (else what a
+    pulse count raises: :class:`~analysis.kinematics.schema.NoDrive`, naming the first joint
+    without one and its missing key)."""
+    without = next((j for j in desc.joints if not j.has_drive), None)
+    if without is None:
+        return Params(desc.values, tuple(j.pulses_per_rev for j in desc.joints))
+    return Params(desc.values, None, no_drive=NoDrive(without.file, without.name,
+                                                      without.missing_drive))  # fmt: skip
 
 
 @contextlib.contextmanager
@@ -138,8 +149,12 @@ def closed_form_of(desc: ArmDescription, *, derived: bool = False) -> tuple[Clos
 
 def closed_form_file(desc: ArmDescription) -> Path:
     """The Python file a description names as its closed form (``closed_form = "x.py"``):
-    only a file in the description's own folder or below it, named by a relative path
-    without ``..``; symbolic links are resolved and must stay there; a regular file.
+    only a file next to the description, in its own folder (issue 27: "only next to the
+    description"), named by a plain file name: no absolute path, no ``..``, and no subfolder
+    either, the tables' rule (:func:`analysis.kinematics.tables.table_path`): what a
+    description may run is what a listing of its folder shows, never a file somewhere
+    below it (a description in a home folder could otherwise run any ``.py`` under it). A
+    symbolic link is resolved and must stay in the folder; a regular file.
 
     Raises ValueError naming the rule broken (the file is never read when refused)."""
     name = desc.closed_form
@@ -151,11 +166,14 @@ def closed_form_file(desc: ArmDescription) -> Path:
     if ".." in rel.parts or "\\" in name:
         raise ValueError(f"{where}: a closed-form file must lie in the description's folder "
                          "(no '..', no backslash)")  # fmt: skip
+    if len(rel.parts) != 1:
+        raise ValueError(f"{where}: a closed-form file must lie next to the description, in "
+                         "its own folder: a plain file name (no subfolder)")  # fmt: skip
     if desc.path is None:
         raise ValueError(f"{where}: a description without a file has no folder to look in")
     folder = desc.path.resolve().parent
     path = (folder / rel).resolve()
-    if not path.is_relative_to(folder):
+    if path.parent != folder:
         raise ValueError(f"{where}: the file resolves (through a symbolic link) outside the "
                          f"description's folder {folder}")  # fmt: skip
     if not path.exists():

@@ -118,7 +118,7 @@ class Arm:
         again as the loader checks them: by :mod:`analysis.validate`, the closed form's
         ``check`` and against the description's chain (:mod:`.consistency`)."""
         params = self.params.with_(**changes)
-        if len(params.pulses_per_rev) != self.n_joints:
+        if params.has_drive and len(params.pulses_per_rev) != self.n_joints:
             raise ValueError(
                 f"pulses_per_rev = {changes.get('pulses_per_rev')!r}: need {self.n_joints} "
                 "whole numbers, one per joint"
@@ -272,12 +272,16 @@ class Arm:
 
     @cached_property
     def lead_mm(self) -> npt.NDArray[np.float64]:
-        """Per joint the lead [mm per motor revolution] of a prismatic joint, NaN for a
-        revolute one (:func:`~analysis.kinematics.pulses.angles_to_pulses`)."""
+        """Per joint a prismatic joint's lead [mm per motor revolution], NaN if revolute."""
         joints = self.description.joints
         return _frozen([np.nan if j.lead_mm is None else j.lead_mm for j in joints])
 
-    # --- drive pulses (eqs. 20-22) --------------------------------------------------------
+    # --- drive pulses (eqs. 20-22): NoDrive (the joint, the key) where none is given ------
+    @property
+    def has_drive(self) -> bool:
+        """True if the description gives every joint's drive (else no pulse counts)."""
+        return self.params.has_drive
+
     def pulses(self, q: npt.ArrayLike, *, rounding: str = "half-away") -> npt.NDArray[np.int64]:
         """Whole drive pulses (..., n) for joint values (..., n) [rad | mm]: eqs. 20-22 for
         a revolute joint, ``q / lead * pulses_per_rev`` for a prismatic one.

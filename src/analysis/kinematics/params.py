@@ -22,6 +22,7 @@ from functools import cache
 from pathlib import Path
 
 from analysis import validate
+from analysis.kinematics.schema import NoDrive
 from analysis.paths import data_dir
 from analysis.safe_io import read_text
 
@@ -30,21 +31,33 @@ __all__ = ["ArmParams", "Params", "data_dir", "load_table3", "paper_params"]
 
 @dataclass(frozen=True)
 class Params(Mapping):
-    """The numbers of one arm: parameter values [mm] by name and pulses per revolution per
-    joint, checked by :mod:`analysis.validate` (lengths within its range, whole pulses).
+    """The numbers of one arm: parameter values [mm] by name and, where the description gives
+    a drive, pulses per revolution per joint, checked by :mod:`analysis.validate` (lengths
+    within its range, whole pulses).
 
     A read-only mapping of parameter names to values, which also allows attribute access to
     them (``P.L1``) and to the informational items of ``extra``.
 
+    ``drive`` is None for an arm without a drive (an engineer's D-H table): then
+    :attr:`pulses_per_rev` raises ``no_drive`` (a :class:`~analysis.kinematics.schema.
+    NoDrive` naming the joint and the key), at the point of need.
+
     >>> P = Params({"L1": 660, "L2": 310.0}, (4000, 4000))
-    >>> P.L1, dict(P.with_(L2=300))
-    (660.0, {'L1': 660.0, 'L2': 300.0})
+    >>> P.L1, dict(P.with_(L2=300)), P.pulses_per_rev
+    (660.0, {'L1': 660.0, 'L2': 300.0}, (4000, 4000))
+    >>> Params({"L1": 660}, None).pulses_per_rev  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    analysis.kinematics.schema.NoDrive: pulses_per_rev: is missing: no drive given, ...
     """
 
     data: Mapping[str, float]
-    pulses_per_rev: tuple[int, ...]
+    drive: tuple[int, ...] | None
+    """Pulses per revolution per joint, or None (no drive given)."""
     extra: Mapping = field(default_factory=dict, compare=False)
     """Informational items of the paper's tables (e.g. Table 3's step angles)."""
+    no_drive: NoDrive | None = field(default=None, compare=False, repr=False)
+    """What :attr:`pulses_per_rev` raises where ``drive`` is None."""
 
     def __post_init__(self) -> None:
         if not isinstance(self.data, Mapping):
@@ -55,7 +68,9 @@ class Params(Mapping):
                 raise ValueError(f"parameter name {k!r} is not text")
             vals[k] = validate.length_mm(v, k)  # real, finite, in the supported range
         object.__setattr__(self, "data", vals)
-        ppr = self.pulses_per_rev
+        ppr = self.drive
+        if ppr is None:
+            return
         if hasattr(ppr, "tolist"):
             ppr = ppr.tolist()
         try:
@@ -64,10 +79,23 @@ class Params(Mapping):
             ppr = tuple(validate.pulses_per_rev(v, "pulses_per_rev") for v in ppr)
         except ValueError:
             raise ValueError(
-                f"pulses_per_rev = {self.pulses_per_rev!r}: need whole numbers in "
+                f"pulses_per_rev = {self.drive!r}: need whole numbers in "
                 f"1 .. {validate.MAX_PULSES_PER_REV:,}, one per joint"
             ) from None
-        object.__setattr__(self, "pulses_per_rev", ppr)
+        object.__setattr__(self, "drive", ppr)
+
+    @property
+    def pulses_per_rev(self) -> tuple[int, ...]:
+        """Pulses per revolution per joint; ``no_drive`` (:class:`~analysis.kinematics.
+        schema.NoDrive`) where the arm has no drive."""
+        if self.drive is None:
+            raise self.no_drive or NoDrive("", None)
+        return self.drive
+
+    @property
+    def has_drive(self) -> bool:
+        """True if every joint's drive is given (pulse counts are defined)."""
+        return self.drive is not None
 
     def __getitem__(self, key: str) -> float:
         return self.data[key]
@@ -79,7 +107,8 @@ class Params(Mapping):
         return len(self.data)
 
     def __getattr__(self, name: str):
-        if name.startswith("_") or name in ("data", "pulses_per_rev", "extra"):
+        if name.startswith("_") or name in ("data", "drive", "pulses_per_rev", "extra",
+                                            "no_drive"):  # fmt: skip
             raise AttributeError(name)
         if name in self.data:
             return self.data[name]
@@ -90,13 +119,13 @@ class Params(Mapping):
     def with_(self, **changes) -> Params:
         """A copy with some values (or ``pulses_per_rev``) changed, checked again; a name
         that is not a parameter is refused."""
-        ppr = changes.pop("pulses_per_rev", self.pulses_per_rev)
+        ppr = changes.pop("pulses_per_rev", self.drive)
         unknown = sorted(set(changes) - set(self.data))
         if unknown:
             raise ValueError(
                 f"unknown parameter(s) {unknown}; the parameters are {', '.join(self.data)}"
             )
-        return Params({**self.data, **changes}, ppr, self.extra)
+        return Params({**self.data, **changes}, ppr, self.extra, self.no_drive)
 
 
 MAX_TABLE3_BYTES = 1 << 16

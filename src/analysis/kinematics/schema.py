@@ -47,13 +47,21 @@ __all__ = [
     "PARAMETER",
     "RATE",
     "ROW",
+    "STATUSES",
     "TOP",
     "DescriptionError",
+    "NoDrive",
     "Reader",
     "derive_decisions",
     "identifier_problem",
+    "source",
+    "status",
 ]
 
+STATUSES = ("printed", "derived", "assumed", "measured")
+"""Provenance of a value: printed in the paper, derived from printed values, assumed (not
+printed: every figure and table that uses it says so), or measured (on the robot, for a
+user's own arm)."""
 TOP = ("name", "title", "paper", "closed_form", "convention", "parameters", "axes", "rows",
        "joints", "derive")  # fmt: skip
 """Keys of a description's top level."""
@@ -95,6 +103,28 @@ class DescriptionError(ValueError):
     def __init__(self, file: str, key: str, rule: str) -> None:
         self.file, self.key, self.rule = file, key, " ".join(str(rule).split())
         super().__init__(f"{file}: {key}: {self.rule}" if key else f"{file}: {self.rule}")
+
+
+class NoDrive(DescriptionError):
+    """A drive value (``pulses_per_rev``, a prismatic joint's ``lead_mm``) asked of a joint
+    whose description gives none: what needs a drive (a pulse count, a PLC program, a pulse
+    quantization study) refuses at the point of need, naming the joint and the key. Raised by
+    :attr:`analysis.kinematics.joints.JointSpec.pulses_per_rev` (and ``lead_mm``) and by
+    :attr:`analysis.kinematics.params.Params.pulses_per_rev` (built from them), the places
+    a drive is read from."""
+
+    def __init__(self, file: str, joint: str | None, key: str = "pulses_per_rev") -> None:
+        hint = ("a whole number of pulses per motor revolution, or a table" if
+                key == "pulses_per_rev" else "the travel per motor revolution [mm]")  # fmt: skip
+        rule = (f"is missing: no drive given, and a pulse count or PLC program needs one "
+                f"(give {key} = {hint}, in the joint's [[joints]] entry)")  # fmt: skip
+        if file.lower().endswith(".urdf"):  # a URDF has no drive: the way to give one
+            rule += (f"; a URDF has no drive: python -m analysis arms --arm {file} --toml > "
+                     "arm.toml writes its description, to which you add it")  # fmt: skip
+        super().__init__(file, f"joint {joint} {key}" if joint else key, rule)
+        self.joint = joint
+        if not file:  # no file to name: the key and the rule alone
+            self.args = (f"{self.key}: {self.rule}",)
 
 
 def identifier_problem(value: object) -> str | None:
@@ -283,3 +313,13 @@ def length_unit(r: Reader, column) -> str:
         raise r.error("unit", f"{unit!r} contradicts column {column!r}, whose name says "
                       f"{named} (give the column's unit or none)")  # fmt: skip
     return unit
+
+
+def status(r: Reader, key: str = "status", default: str = "printed") -> str:
+    """A value's provenance, one of :data:`STATUSES`."""
+    return r.choice(key, STATUSES, default)
+
+
+def source(r: Reader) -> str:
+    """Where a value comes from: its ``source``, else its ``note``."""
+    return r.text("source", r.text("note", ""))

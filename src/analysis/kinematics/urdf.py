@@ -169,6 +169,15 @@ def _slug(text: str, fallback: str) -> str:
     return out or fallback
 
 
+def _drive(spec) -> str:
+    """A joint's drive as a comment: pulses per revolution (a prismatic joint's lead), or
+    that the description gives none."""
+    if not spec.has_drive:
+        return f"{spec.name}: no drive given ({spec.missing_drive})"
+    lead = f", lead {spec.lead_mm:g} mm per revolution" if spec.kind == "prismatic" else ""
+    return f"{spec.name}: {spec.pulses_per_rev} pulses per revolution [{spec.pulses_status}]{lead}"
+
+
 def dh_joints(desc) -> tuple[list[str], list[UrdfJoint]]:
     """Links and joints of a D-H description (the module docstring's mapping)."""
     table = desc.dh_table()
@@ -201,8 +210,7 @@ def dh_joints(desc) -> tuple[list[str], list[UrdfJoint]]:
             notes = [
                 f"{where}: prismatic along z, d = {row.d:g} mm + {spec.name}, stroke "
                 f"{spec.lower:g} .. {spec.upper:g} mm{status}",
-                f"{spec.name}: {spec.pulses_per_rev} pulses per revolution [{spec.pulses_status}]"
-                + (f", lead {spec.lead_mm:g} mm per revolution" if spec.lead_mm else "")
+                _drive(spec)
                 + (
                     f"; theta = {math.degrees(row.theta_offset):g} deg (fixed)"
                     if row.theta_offset
@@ -216,7 +224,7 @@ def dh_joints(desc) -> tuple[list[str], list[UrdfJoint]]:
                 f"{where}: "
                 f"{'revolute, limits' if limited else 'continuous (a full turn allowed)'} "
                 f"{math.degrees(spec.lower):g} .. {math.degrees(spec.upper):g} deg{status}",
-                f"{spec.name}: {spec.pulses_per_rev} pulses per revolution [{spec.pulses_status}]"
+                _drive(spec)
                 + (
                     f"; theta = {spec.name} + {math.degrees(row.theta_offset):g} deg (offset)"
                     if row.theta_offset

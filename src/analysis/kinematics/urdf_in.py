@@ -5,8 +5,10 @@ description (modified D-H rows), so the loader derives its closed form where a f
 equivalent description (``data/arms``'s format): the chain from the root link to the tool
 frame, one modified D-H row per revolute, continuous or prismatic joint, a fixed row for the
 base and one for the tool where they are needed, the joints' limits (and, where the URDF
-gives one, ``velocity`` as ``max_velocity``) with their provenance, ``pulses_per_rev`` and a
-prismatic joint's ``lead_mm`` marked assumed (a URDF has no drive data). The conversion:
+gives one, ``velocity`` as ``max_velocity``) with their provenance, and no drive: a URDF
+has no drive data and none is invented (no ``pulses_per_rev``, no ``lead_mm``; ``ik`` says "no
+drive given", and ``stl`` refuses naming the joint; ``arms --arm robot.urdf --toml`` prints
+this description, to which a user adds the drive). The conversion:
 
 1. the chain's frames at q = 0 (URDF: ``T_parent_child = Trans(xyz) Rz(yaw) Ry(pitch)
    Rx(roll)`` per joint origin, the joint turning or sliding the child frame along its
@@ -391,12 +393,11 @@ def dh_rows(chain: UrdfChain) -> list[dict]:
 def _joint_entry(j: Joint) -> list[str]:
     src = f"{j.name} in the URDF"
     out = ["", "[[joints]]", f"name = {toml_string(j.name)}"]
-    out.append('pulses_per_rev = { value = 4000, status = "assumed", note = "a URDF has no '
-               'drive: 4000 pulses per revolution assumed" }')  # fmt: skip
+    # no pulses_per_rev, no lead_mm: a URDF has no drive, and none is invented (what needs
+    # one, a PLC program, refuses naming the joint: analysis.kinematics.schema.NoDrive)
     if j.kind == "prismatic":
         lo, hi = j.limits
-        out += ['kind = "prismatic"', f"limits_mm = [{lo!r}, {hi!r}]",
-                'lead_mm = { value = 10.0, status = "assumed", note = "a URDF has no drive" }']
+        out += ['kind = "prismatic"', f"limits_mm = [{lo!r}, {hi!r}]"]
         unit = "mm/s"
     else:
         if j.limits is not None:

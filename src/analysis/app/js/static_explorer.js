@@ -193,7 +193,7 @@
         let text;
         if (s.status === 0 && b.ok) {
           text = "ok — " + branch + ": θ = (" + b.q.map((v) => A.num(v / DEG, 2)).join(", ") +
-            ")° -> pulses (" + b.c.join(", ") + ")";
+            ")° -> " + pulsesText(b.c);
         } else {
           const e = explain(arm, p, s.status, s.outside, branch, s.status === 0 ? rowStatus(s, branch) : "", t1);
           text = e.word + " — " + e.sentence;
@@ -221,13 +221,17 @@
       return [Math.atan2(R[1][0], R[0][0]), beta, Math.atan2(R[2][1], R[2][2])];
     }
 
+    /** Whole pulses as the explorer says them (explore_logic: "pulses: no drive given"
+     * where the description gives none, c null). */
+    function pulsesText(c) { return c === null ? "pulses: no drive given" : "pulses (" + c.join(", ") + ")"; }
+
     /** explore_logic.fk_line: joints, pulses, the full pose (fk --json: the tool point and
      * its RPY angles) and the branch they belong to. */
     function fkLine(q, r) {
       const joints = q.map((v, j) => A.num(v / DEG, 2) + (arm.joint_units[j] === "deg" ? "°" : " " + arm.joint_units[j])).join(", ");
       const tool = r.frames[r.frames.length - 1];
       const angles = rpy(arm.tool_rotation(q)).map((v) => A.num(v / DEG, 2)).join(", ");
-      let text = `FK: joints (${joints}) → pulses (${arm.pulses(q).join(", ")}); tool at (${tool.map((v) => A.num(v, 2)).join(", ")}) mm, RPY (${angles})°`;
+      let text = `FK: joints (${joints}) → ${pulsesText(arm.pulses(q))}; tool at (${tool.map((v) => A.num(v, 2)).join(", ")}) mm, RPY (${angles})°`;
       const pointOnly = arm.inputs.every((k) => AXIS[k]);
       if (pointOnly) {
         const s = arm.solve(tool, q[0]);
@@ -258,11 +262,13 @@
     function branchTable(s, caption, p, t1) {
       const head = el("tr", {}, el("th", {text: "branch"}),
         ...arm.joints.map((j) => el("th", {text: greek(j) + " [°]"})),
-        ...arm.joints.map((_, i) => el("th", {text: "c" + (i + 1)})), el("th", {text: "status"}));
+        ...(arm.pulses_per_rev === null ? [] : arm.joints.map((_, i) => el("th", {text: "c" + (i + 1)}))),
+        el("th", {text: "status"}));
       const rows = arm.branches.map((b) => {
         const x = s.branches[b];
         const ok = s.status === 0 && x.ok;
-        const cells = ok ? [...x.q.map((v) => A.num(v / DEG, 2)), ...x.c.map(String)] : arm.joints.flatMap(() => ["—", "—"]);
+        const c = x.c === null ? [] : x.c;
+        const cells = ok ? [...x.q.map((v) => A.num(v / DEG, 2)), ...c.map(String)] : arm.joints.flatMap(() => x.c === null ? ["—"] : ["—", "—"]);
         const word = ok ? "ok" : s.status !== 0 ? arm.status_text[s.status] : rowStatus(s, b);
         return el("tr", {class: b === branch ? "explorer-chosen" : ""}, el("td", {text: b}),
           ...cells.map((c) => el("td", {text: c})), el("td", {text: word}));

@@ -246,11 +246,18 @@ class DerivedClosedForm(WaistArm):
             a6 = apply_columns(cols, mat_vec(self._R0T, self.structure.axes[5]))
             a6_1 = sp.rotate(self._w1, a6, v["c1"], -v["s1"])
             q5s, flip = wr.ur_q5(m, self._u, self._w5, tuple(self.structure.axes[5]), a6_1, side)
+            turned = None
             for wrist, (q5, c5, s5) in zip(wr.WRISTS, q5s, strict=True):
                 tag = f"{side}_{wrist}"
                 q5 = m.let(f"theta5_{tag}", q5)
-                q6, a5_1 = wr.ur_pitch(m, self, cols, v["c1"], v["s1"], (c5, s5), tag)
-                psi, cp, spsi, _ = self._pitch(m, a5_1, tag)
+                if turned is None:
+                    q6, a5_1 = wr.ur_pitch(m, self, cols, v["c1"], v["s1"], (c5, s5), tag)
+                    psi, cp, spsi, _ = self._pitch(m, a5_1, tag)
+                    turned = (q6, psi, cp, spsi)
+                else:  # the flipped wrist: q6 and the pitch half a turn on (wr.flipped)
+                    q6 = m.let(f"theta6_{tag}", wr.half_turn(m, turned[0]))
+                    psi = m.let(f"psi_{tag}", wr.half_turn(m, turned[1]))
+                    cp, spsi = -turned[2], -turned[3]
                 arm = {**v, "psi": psi, "cp": cp, "sp": spsi, "conds": []}
                 elbows = self._plane_elbows(m, g, arm, side, tag, ctx)
                 extra = [(Status.DEGENERATE, m.le(flip, ctx["band"]))]

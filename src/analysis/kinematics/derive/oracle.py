@@ -22,6 +22,16 @@ What is compared, per configuration ``q`` (a tool pose ``T = FK(q)``):
 - **6R-wrist, 6R-parallel, 3R-planar** (the target fixes the whole pose): EAIK solves the
   pose; its exact solutions must be exactly the derived branches.
 
+**Axis senses.** A joint axis parallel to an earlier one is given to the oracles pointing
+the same way as that one (:func:`axis_senses`: the frame turned by pi about its x axis, the
+joint's value negated on the way back), the same robot. EAIK 1.2.2 (and IK-Geo 1.0.3's
+``three_parallel_two_intersecting``) take anti-parallel axes as parallel but solve them as if
+they pointed the same way (the sum of the three parallel turns): on the UR5 itself, with
+joint 3's axis written the other way (``h3 -> -h3``), neither reaches one of 50 poses of
+its own forward kinematics, within ~1.8 m (``tests/kinematics/test_families_oracles.py``).
+That was the "oracle empty" of the random UR-family arms: 12 of 20 had a parallel twist of
+180 deg.
+
 Prismatic joints (SCARA, gantries) are outside EAIK (revolute chains only): pyplcopen's
 kinematics is their oracle (:mod:`.plcopen_oracle`).
 
@@ -44,7 +54,9 @@ __all__ = [
     "POSE_TOL",
     "Agreement",
     "available",
+    "axis_senses",
     "compare_solution_sets",
+    "eaik_model",
     "eaik_robot",
 ]
 
@@ -93,8 +105,41 @@ _WRIST = np.linalg.qr(np.array([[0.3, 0.8, -0.5], [0.9, -0.2, 0.4], [0.1, 0.6, 0
 axis along one of the arm's)."""
 
 
+PARALLEL_TOL = 1e-9
+"""Largest |h_i x h_j| of two joint axes taken as parallel by :func:`axis_senses`."""
+
+
+def axis_senses(axes) -> np.ndarray:
+    """+1 or -1 per joint axis (unit vectors): -1 where the axis is parallel to the one
+    before it but, that one's sense applied, points the other way. Turning those axes round
+    (and their joint values with them) describes the same robot with every run of parallel
+    axes pointing one way, as the oracles' solvers assume (module docstring); axes parallel
+    to a non-neighbour (the UR5's first and fifth) keep their sense, which they solve.
+
+    >>> axis_senses(np.array([[0, 0, 1], [0, 1, 0], [0, -1, 0], [0, 1, 0], [0, 0, -1.0]]))
+    array([ 1.,  1., -1.,  1.,  1.])
+    """
+    h = np.asarray(axes, dtype=float)
+    senses = np.ones(len(h))
+    for i in range(1, len(h)):
+        if np.linalg.norm(np.cross(h[i], h[i - 1])) < PARALLEL_TOL:
+            senses[i] = senses[i - 1] * np.sign(np.dot(h[i], h[i - 1]))
+    return senses
+
+
 def eaik_robot(arm):
-    """EAIK's model of ``arm`` (a 3R arm with the spherical wrist at its tool point)."""
+    """EAIK's model of ``arm`` (:func:`eaik_model`) where every axis keeps its sense (the
+    published arms: raises otherwise, as its solutions would need mapping back)."""
+    robot, senses = eaik_model(arm)
+    if (senses < 0).any():
+        raise ValueError(f"{arm.name}: axes turned round for EAIK; use eaik_model")
+    return robot
+
+
+def eaik_model(arm):
+    """EAIK's model of ``arm`` (a 3R arm with the spherical wrist at its tool point) and
+    the sense (+1 / -1) each joint's axis was given (:func:`axis_senses`): EAIK's joint
+    values times the senses are the arm's."""
     from eaik.IK_Homogeneous import HomogeneousRobot
 
     frames = _joint_frames(arm)
@@ -111,7 +156,10 @@ def eaik_robot(arm):
         ee = np.eye(4)
         ee[:3, 3] = tool[:3, 3]
         frames = [*frames[:-1], *wrist, ee]
-    return HomogeneousRobot(np.array(frames))
+    senses = axis_senses([f[:3, 2] for f in frames[:-1]])
+    turn = np.diag([1.0, -1.0, -1.0, 1.0])  # pi about x: z (the joint axis) turned round
+    frames = [f @ turn if s < 0 else f for f, s in zip(frames, [*senses, 1.0], strict=True)]
+    return HomogeneousRobot(np.array(frames)), senses
 
 
 def _wrap(a):
@@ -177,15 +225,15 @@ class Agreement:
         return self.equal == self.n
 
 
-def _exact(robot, pose, sols) -> tuple[list, int]:
-    """EAIK's solutions that reach ``pose`` by EAIK's forward kinematics, and how many of
-    them it flagged least-squares."""
+def _exact(robot, pose, sols, senses) -> tuple[list, int]:
+    """EAIK's solutions that reach ``pose`` by EAIK's forward kinematics (as the arm's joint
+    values: times ``senses``), and how many of them it flagged least-squares."""
     out, flagged = [], 0
     scale = np.ones((4, 4))
     scale[:3, 3] = 1e-3  # mm -> m: one tolerance for rotation and position
     for s, ls in zip(sols.Q, sols.is_LS, strict=True):
         if (np.abs(robot.fwdKin(s) - pose) * scale).max() < POSE_TOL:
-            out.append(np.asarray(s))
+            out.append(np.asarray(s) * senses)
             flagged += bool(ls)
     return out, flagged
 
@@ -195,7 +243,7 @@ def compare_solution_sets(arm, q: npt.ArrayLike, seed: int = 0) -> Agreement:
     family: a 4R-kept configuration holds the kept pitch) with EAIK's solutions."""
     q = np.atleast_2d(np.asarray(q, dtype=float))
     family = arm.closed_form.family
-    robot = eaik_robot(arm)
+    robot, senses = eaik_model(arm)
     T = arm.table.fk(q)
     p = arm.closed_form.inputs_of(T)
     sol = arm.solve(p, limits=False)
@@ -212,17 +260,17 @@ def compare_solution_sets(arm, q: npt.ArrayLike, seed: int = 0) -> Agreement:
             R = np.linalg.qr(rng.normal(size=(3, 3)))[0]
             pose[:3, :3] = R * np.sign(np.linalg.det(R))
             pose[:3, 3] = T[i, :3, 3]
-            theirs, f = _exact(robot, pose, robot.IK(pose))
+            theirs, f = _exact(robot, pose, robot.IK(pose), senses)
             flagged += f
             verdicts.append(_verdict(_unique(ours), _unique([s[:3] for s in theirs])))
         elif family in WHOLE_POSE:
-            theirs, f = _exact(robot, T[i], robot.IK(T[i]))
+            theirs, f = _exact(robot, T[i], robot.IK(T[i]), senses)
             flagged += f
             verdicts.append(_verdict(_unique(ours), _unique(theirs)))
         else:
             Tb = arm.table.fk(np.array(ours)) if ours else np.zeros((0, 4, 4))
             for k in range(len(ours)):
-                theirs, f = _exact(robot, Tb[k], robot.IK(Tb[k]))
+                theirs, f = _exact(robot, Tb[k], robot.IK(Tb[k]), senses)
                 flagged += f
                 same = [ours[j] for j in range(len(ours)) if np.abs(Tb[j] - Tb[k]).max() < 1e-7]
                 verdicts.append(_verdict(_unique(same), _unique(theirs)))

@@ -28,6 +28,8 @@ the pose fixes, not each: the branch is refused there (``degenerate``) within
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from analysis.kinematics.derive import subproblems as sp
@@ -38,6 +40,8 @@ __all__ = [
     "WRISTS",
     "WRIST_BAND",
     "WRIST_TOL_RAD",
+    "flipped",
+    "half_turn",
     "pick_noflip",
     "spherical",
     "ur_pitch",
@@ -97,20 +101,44 @@ def spherical(m, axes, R0T, cols, turns, tag: str):
     x = _turn_back(m, first, turns, apply_columns(cols, mat_vec(R0T, w5)))  # M w5
     alpha = m.let(f"wrist_along_{tag}", sp.dot(w4, v))
     gam = m.let(f"wrist_flip_{tag}", m.sqrt(sp.norm_sq(sp.cross(w4, v))))
-    n45 = tuple(np.cross(w4, w5))
-    sols, sines = [], []
-    for sign in (1.0, -1.0):
-        z = sp.add(sp.scale(alpha, w4), sp.scale(sign * gam, n45))
-        q5, c5, s5 = sp.pk1_cs(m, w5, w6, z)
-        q4, c4, s4 = sp.pk1_cs(m, w4, z, v)
-        y = _turn_back(m, (w4, w5), ((c4, s4), (c5, s5)), x)
-        q6 = m.wrap(sp.pk1(m, w6, w5, y))
-        sols.append((m.wrap(q4), m.wrap(q5), q6))
-        sines.append(s5)
-    picked = pick_noflip(m, sines[0], sols[0], sols[1])
+    z = sp.add(sp.scale(alpha, w4), sp.scale(gam, tuple(np.cross(w4, w5))))
+    q5, c5, s5 = sp.pk1_cs(m, w5, w6, z)
+    q4, c4, s4 = sp.pk1_cs(m, w4, z, v)
+    y = _turn_back(m, (w4, w5), ((c4, s4), (c5, s5)), x)
+    q6 = m.wrap(sp.pk1(m, w6, w5, y))
+    picked = pick_noflip(m, s5, (m.wrap(q4), m.wrap(q5), q6),
+                         flipped(m, (w4, w5, w6), q4, q5, q6))  # fmt: skip
     for w in WRISTS:
         picked[w] = tuple(m.let(f"theta{4 + k}_{tag}_{w}", q) for k, q in enumerate(picked[w]))
     return picked, gam
+
+
+def flipped(m, axes, q4, q5, q6) -> tuple:
+    """The other solution of a wrist whose middle axis is perpendicular to the two others
+    (``axes`` w4, w5, w6 at q = 0; ``q4, q5, q6`` one solution, q4 and q5 in (-3 pi, 3 pi)):
+    ``(q4 + pi, -q5 - 2 phi, q6 + pi)`` wrapped, ``phi`` the angle about w5 from w4 to w6
+    at q = 0 (0 where they are aligned, as on the PUMA).
+
+    Why: Rot(w4, pi) turns w5 round, so ``Rot(w4, pi) Rot(w5, a) = Rot(w5, -a) Rot(w4, pi)``,
+    and ``Rot(w4, pi) Rot(w6, pi) = Rot(w5, 2 phi)`` (two half turns about axes ``phi``
+    apart, both across w5): ``Rot(w4, q4 + pi) Rot(w5, -q5 - 2 phi) Rot(w6, q6 + pi)`` is
+    ``Rot(w4, q4) Rot(w5, q5) Rot(w6, q6)``. The two solutions of the subproblems (the
+    rotation about w5 that puts w6 on either of the two directions that meet the pose) are
+    these; deriving the second costs two additions instead of three atan2 and two square
+    roots.
+    """
+    w4, w5, w6 = (np.asarray(a, dtype=float) for a in axes)
+    phi = float(np.arctan2(np.dot(w5, np.cross(w4, w6)), np.dot(w4, w6)))
+    c2, s2 = exact_cos_sin(2.0 * phi)
+    two_phi = math.atan2(s2, c2)  # 2 phi in (-pi, pi], exactly 0 or pi where phi is square
+    return (half_turn(m, m.wrap(q4)), m.wrap(-m.wrap(q5) - two_phi), half_turn(m, q6))
+
+
+def half_turn(m, q):
+    """``q + pi`` wrapped to (-pi, pi] (``q`` in (-2 pi, 2 pi)): a joint of the other wrist
+    solution (:func:`flipped`; the UR wrist's q6 and pitch, the same relation with the
+    parallel axes as w4)."""
+    return m.wrap(q + np.pi)
 
 
 def ur_q5(m, u, w5, w6, a6_1, tag: str):
