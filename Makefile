@@ -137,10 +137,14 @@ $(BENCH_STAMP): $(STAMP) requirements-bench.lock
 # changed) and with one notebook changed, into a scratch folder (build/bench-report.json).
 # benchmarks/explorer_redraw.py: the explorer's change -> pose on screen in Chromium, the view's
 # in-place redraw against Plotly.update in the same browser (build/bench-explorer.json).
+# benchmarks/explorer_latency.py: typed value -> pose on screen, JupyterLab's explorer (a real
+# server and kernel) and the static page, median and p90, quiet and under one CPU-bound
+# process per core started by the bench (build/bench-latency.json; issue 31: Lab within 50 ms).
 bench: $(BENCH_STAMP) $(ST_ENGINE)
 	$(PY) benchmarks/run.py --out build/bench.json
 	$(PY) benchmarks/report_build.py --out build/bench-report.json
 	$(PY) benchmarks/explorer_redraw.py --out build/bench-explorer.json
+	$(PY) benchmarks/explorer_latency.py --out build/bench-latency.json
 
 # JupyterLab on copies of the notebooks in build/lab/ (analysis/app/lab.py): the stored ones are
 # nbval's references, which Lab's autosave would change (the explorer moved, widget state);

@@ -37,8 +37,10 @@ nb_output_stderr = "show"
 
 exclude_patterns = ["downloads/**", "figures/**", "**.ipynb_checkpoints"]  # report.py adds print.md for the site
 suppress_warnings = ["mystnb.unknown_mime_type"]
-numfig = True
-numfig_format = {"figure": "Figure %s"}
+# Figure numbers are written into the captions (analysis.app.site_notebooks.figure_numbers):
+# one number per figure on every page and in the PDF; Sphinx's numfig numbers a figure where
+# it stands (its notebook's page, the front page, the figures page: three numbers).
+numfig = False
 
 # --- MathJax 3, served locally ------------------------------------------------------------
 _MATHJAX = Path(str(distribution("sphinx-mathjax-offline").locate_file("sphinx-mathjax-offline")))

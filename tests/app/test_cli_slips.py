@@ -170,6 +170,21 @@ def test_batch_header_aliases_x_y_z_solve_as_x_mm_y_mm_z_mm(capsys, tmp_path):
     assert code == 2 and "x_mm (or x)" in err and "the header has: a, y, z" in err
 
 
+def test_a_bad_number_names_the_column_as_the_header_wrote_it(capsys, tmp_path):
+    """Under an alias (``z`` for ``z_mm``) a bad number, a coordinate beyond a REAL's range
+    and ``--strict``'s error name the column ``z``, as the header says; the full name where
+    the header has it."""
+    rows = _batch(capsys, tmp_path, "x,y_mm,z\n1,2,x\n1,2,1e39\n1,x,3\n")
+    assert "line 2 column z: 'x' is not a number" in rows[0]["reason"], rows[0]
+    assert "line 3 column z: z = 1e+39 mm is beyond" in rows[1]["reason"], rows[1]
+    assert "line 4 column y_mm: 'x'" in rows[2]["reason"], rows[2]
+    assert "z_mm" not in rows[0]["reason"] + rows[1]["reason"]
+    src = tmp_path / "strict.csv"
+    src.write_text("x,y_mm,z\n1,2,x\n")
+    code, _, err = run(capsys, "ik", "--input", str(src), "--output", "-", "--strict")
+    assert code == 2 and "line 2 column z: 'x' is not a number" in err, err
+
+
 @pytest.mark.parametrize(
     ("dialect", "read", "guess"), [("s7-200", "VD100:DINT", "st"), ("s7-300", "MD0:DINT", "st")]
 )

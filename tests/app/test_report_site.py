@@ -144,5 +144,48 @@ def test_front_page_renders_counts_tables_figures_and_evidence():
     assert "```{toctree}" in md and "notebooks/03_t" in md
 
 
+def test_a_figure_has_one_number_on_every_page_and_in_the_pdf():
+    """Figure numbers are the catalogue's (figures.md: by notebook, then saved order), written
+    into the captions: the same figure has the same number on its notebook's page, the front
+    page and the figures page (print.md, the PDF, is the front page and the figures page)."""
+    import re
+
+    import nbformat
+
+    captions = {"05-b": "B.", "03-a": "A.", "05-a": "C.", "12-z": "Z."}
+    assert site.figure_numbers(captions) == {"03-a": 1, "05-b": 2, "05-a": 3, "12-z": 4}
+    number = re.compile(
+        r"/figures/(\S+)\.png\n(?::name: \S+\n)?:alt: [^\n]*\n\n\*\*Figure (\d+)\.\*\*"
+    )
+    catalogue = site.figures_md(captions, {}, {})
+    assert [(m[1], int(m[2])) for m in number.finditer(catalogue)] == [
+        ("03-a", 1), ("05-b", 2), ("05-a", 3), ("12-z", 4)
+    ]  # fmt: skip
+    front = site.front_page_md(
+        [Verdict(title="T", verdict="v", evidence=(), figures=("12-z", "05-a"))],
+        captions, {}, {}, "intro", {},
+    )  # fmt: skip
+    assert [(m[1], int(m[2])) for m in number.finditer(front)] == [("12-z", 4), ("05-a", 3)]
+    nb = nbformat.v4.new_notebook()
+    nb.cells = [
+        nbformat.v4.new_markdown_cell("# 05 · x"),
+        nbformat.v4.new_code_cell(
+            "save_figure()",
+            outputs=[
+                nbformat.v4.new_output(
+                    "stream", text="['05-b.svg', '05-b.png']\n['05-a.svg', '05-a.png']\n"
+                )
+            ],
+        ),
+    ]
+    # numbered in the order the notebook shows them, not the file names' order
+    ordered = site.shown_order({"05-a": "C.", "05-b": "B."}, [nb])
+    assert site.figure_numbers(ordered) == {"05-b": 1, "05-a": 2}
+    page, placed = site.prepare_notebook(nb, "05_x.ipynb", captions)
+    shown = [(m[1], int(m[2])) for c in page.cells for m in number.finditer(c.source)]
+    assert placed == ["05-b", "05-a"] and shown == [("05-b", 2), ("05-a", 3)], shown
+    assert "numfig = False" in (site.SITE / "conf.py").read_text()  # no second number
+
+
 def test_inline_text_cannot_trigger_markup():
     assert site.md_inline("a*b_c [x] $y$ `z` |w|") == "a\\*b\\_c \\[x\\] \\$y\\$ \\`z\\` \\|w\\|"

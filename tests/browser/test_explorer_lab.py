@@ -22,28 +22,29 @@ go to ``build/browser`` (see conftest.py).
 
 from __future__ import annotations
 
-import contextlib
 import importlib.util
 import json
 import os
 import re
-import socket
-import subprocess
 import sys
 import time
-import urllib.request
 from pathlib import Path
 from urllib.parse import urlsplit
 
-import nbformat
 import pytest
 
 from analysis.app.explore_logic import FK_CAPTION, fk_line, plain_message, pose_report
-from analysis.app.lab import command as lab_command
-from analysis.app.lab import prepare
+from analysis.app.lab import serve as lab_server
+from analysis.app.lab import tail as _tail
 from analysis.app.report import CHROMIUM_FLAGS, NB_BACKEND
 
 from .conftest import LOCAL_HOSTS, PROJECT
+from .lab_ui import cleared_copies
+from .lab_ui import kernel_idle as _kernel_idle
+from .lab_ui import quiet as _quiet
+from .lab_ui import run_all as _run_all
+from .lab_ui import slider as _slider
+from .lab_ui import type_into as _type_into
 from .screen import STALE_RGB, assert_arm_on_screen
 from .screen import close as _close
 
@@ -51,13 +52,6 @@ NOTEBOOK = PROJECT / "notebooks" / "09_explore.ipynb"
 STORED = NOTEBOOK.read_bytes()  # what nbval compares: the Lab session must leave it as it is
 JUPYTER = Path(sys.executable).with_name("jupyter")  # lab_command runs this one
 NB7_COPY = "09_explore_notebook7.ipynb"  # the same cleared notebook, opened in Notebook 7
-START_TIMEOUT_S = 90  # JupyterLab's first start builds nothing, but loads ~100 extensions
-
-
-def _free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
 
 
 @pytest.fixture(scope="module")
@@ -66,95 +60,13 @@ def lab(chromium, tmp_path_factory):
     if not JUPYTER.exists():
         pytest.skip(f"no jupyter at {JUPYTER}: make venv installs JupyterLab")
     root = tmp_path_factory.mktemp("lab")
-    prepare(root, NOTEBOOK.parent)  # make lab's copies
-    nb = nbformat.read(root / NOTEBOOK.name, as_version=4)
-    for cell in nb.cells:  # every output on the page comes from this run
-        if cell.cell_type == "code":
-            cell.outputs, cell.execution_count = [], None
-    nb.metadata.pop("widgets", None)
-    nbformat.write(nb, root / NOTEBOOK.name)
-    nbformat.write(nb, root / NB7_COPY)  # its own session and kernel in Notebook 7
-    settings = root / "settings" / "@jupyterlab" / "apputils-extension"
-    settings.mkdir(parents=True)
-    (settings / "notification.jupyterlab-settings").write_text(
-        json.dumps({"checkForUpdates": False, "fetchNews": "false"})
-    )
-    # every cell in the DOM (no windowing): what is off screen can be scrolled to and checked
-    tracker = root / "settings" / "@jupyterlab" / "notebook-extension"
-    tracker.mkdir(parents=True)
-    (tracker / "tracker.jupyterlab-settings").write_text(
-        json.dumps({"windowingMode": "none", "autoStartDefaultKernel": True})
-    )
-    env = os.environ | {
-        "JUPYTER_CONFIG_DIR": str(root / "config"),
-        "JUPYTER_RUNTIME_DIR": str(root / "runtime"),
-        "JUPYTERLAB_SETTINGS_DIR": str(root / "settings"),
-        "JUPYTERLAB_WORKSPACES_DIR": str(root / "workspaces"),
-        "ANALYSIS_FIGURE_DIR": str(root / "figures"),
-        "MPLBACKEND": NB_BACKEND,
-    }
-    port = _free_port()
-    cmd = lab_command(
-        root,  # what make lab runs, on a copy in a temporary folder here
-        "--no-browser",
-        "--ServerApp.ip=127.0.0.1",
-        f"--ServerApp.port={port}",
-        "--ServerApp.port_retries=0",
-        "--IdentityProvider.token=",
-        "--ServerApp.password=",
-        "--LabApp.extension_manager=readonly",
-        "--ServerApp.terminals_enabled=False",
-    )
-    log = (root / "lab.log").open("w")
-    proc = subprocess.Popen(cmd, cwd=root, env=env, stdout=log, stderr=subprocess.STDOUT)
-    url = f"http://127.0.0.1:{port}/"
+    kernel = cleared_copies(root, NOTEBOOK, NB7_COPY)
+    env = {"ANALYSIS_FIGURE_DIR": str(root / "figures"), "MPLBACKEND": NB_BACKEND}
     try:
-        deadline = time.monotonic() + START_TIMEOUT_S
-        while True:
-            if proc.poll() is not None:
-                pytest.fail(f"jupyter lab exited {proc.returncode}: {_tail(root / 'lab.log')}")
-            with contextlib.suppress(OSError):
-                with urllib.request.urlopen(url + "api/status", timeout=2) as r:
-                    if r.status == 200:
-                        break
-            if time.monotonic() > deadline:
-                pytest.fail(f"jupyter lab not up in {START_TIMEOUT_S} s: {_tail(root / 'lab.log')}")
-            time.sleep(0.5)
-        for name in (NOTEBOOK.name, NB7_COPY):  # their kernels start while the browser loads
-            _start_session(url, name, nb.metadata.kernelspec.name)
-        yield url, root
-    finally:
-        proc.terminate()
-        try:
-            proc.wait(timeout=20)
-        except subprocess.TimeoutExpired:
-            proc.kill()
-            proc.wait()
-        log.close()
-
-
-def _start_session(url: str, path: str, kernel: str) -> None:
-    """Ask the server for ``path``'s session and kernel (what opening the notebook does; the
-    page then joins it, and the kernel's start overlaps JupyterLab's loading)."""
-    from http.cookiejar import CookieJar
-
-    jar = CookieJar()
-    opener = urllib.request.build_opener(urllib.request.HTTPCookieProcessor(jar))
-    opener.open(url + "lab", timeout=30).close()  # the page sets the _xsrf cookie
-    xsrf = next(c.value for c in jar if c.name == "_xsrf")
-    body = {"path": path, "name": path, "type": "notebook", "kernel": {"name": kernel}}
-    req = urllib.request.Request(
-        url + "api/sessions",
-        data=json.dumps(body).encode(),
-        method="POST",
-        headers={"Content-Type": "application/json", "X-XSRFToken": xsrf},
-    )
-    with opener.open(req, timeout=30) as r:
-        assert r.status == 201, (r.status, r.read()[:300])
-
-
-def _tail(path: Path, n: int = 2000) -> str:
-    return path.read_text(errors="replace")[-n:]
+        with lab_server(root, {NOTEBOOK.name: kernel, NB7_COPY: kernel}, env) as url:
+            yield url, root
+    except RuntimeError as exc:  # the server did not start
+        pytest.fail(str(exc))
 
 
 @pytest.fixture(scope="module")
@@ -208,42 +120,8 @@ def _message(page) -> str:
     return page.locator(".explorer-message").first.inner_text()
 
 
-def _slider(page, label: str):
-    """The ipywidgets slider whose description is ``label``."""
-    return page.locator(".widget-slider").filter(
-        has=page.locator(".widget-label", has_text=re.compile(rf"^{re.escape(label)}$"))
-    )
-
-
-def _type_into(page, label: str, value: float) -> None:
-    """Type ``value`` into the slider's readout box and press Enter, as a user would."""
-    readout = _slider(page, label).locator(".widget-readout")
-    readout.click()
-    page.keyboard.press("Control+A")
-    page.keyboard.type(f"{value:g}")
-    page.keyboard.press("Enter")
-
-
 def _camera(plot) -> dict:
     return plot.evaluate("el => el._fullLayout.scene._scene.getCamera().eye")
-
-
-def _quiet(page, timeout_ms: float = 20_000) -> None:
-    """Wait until the 3D view has nothing left to draw: the kernel's pose is for the
-    controls' current values and every redraw asked for is on screen (a redraw during a drag
-    would put the camera back where plotly last saved it)."""
-    from playwright.sync_api import TimeoutError as PlaywrightTimeout
-
-    try:
-        page.wait_for_function(
-            """() => { const w = document.querySelector('.arm3d-widget');
-            return w && w.arm3dKernelCurrent === true && !w.arm3dPending; }""",
-            timeout=timeout_ms,
-        )
-    except PlaywrightTimeout:
-        state = page.evaluate("""() => { const w = document.querySelector('.arm3d-widget');
-            return w && [w.arm3dKernelCurrent, w.arm3dPending, JSON.stringify(w.arm3dKeys)]; }""")
-        raise AssertionError(f"the 3D view still drawing: {state}") from None
 
 
 def _drag_view(page, plot, dx: float, dy: float) -> tuple[dict, dict]:
@@ -279,40 +157,6 @@ def _drag(page, box, dx: float, dy: float) -> None:
     page.mouse.up()
 
 
-def _kernel_idle(url: str, path: str) -> bool:
-    """The Jupyter server has a session for ``path`` whose kernel is idle (REST API)."""
-    with contextlib.suppress(OSError, ValueError):
-        with urllib.request.urlopen(url + "api/sessions", timeout=2) as r:
-            for sess in json.load(r):
-                if sess.get("path") == path:
-                    return (sess.get("kernel") or {}).get("execution_state") == "idle"
-    return False
-
-
-def _run_all(page, timeout_s: float = 90, ready=None) -> None:
-    """Run > Run All Cells once the kernel is idle (``ready()``; default JupyterLab's status
-    bar says so), taking the preferred kernel if asked which one to start, until a cell shows
-    that it runs."""
-    from playwright.sync_api import TimeoutError as PlaywrightTimeout
-
-    deadline = time.monotonic() + timeout_s
-    status = page.locator(".jp-StatusBar-Widget", has_text="| Idle")
-    ready = ready or status.count
-    started = page.locator(".jp-InputPrompt", has_text=re.compile(r"\[(\*|\d+)\]"))
-    while time.monotonic() < deadline:
-        dialog = page.locator(".jp-Dialog")
-        if dialog.count() and dialog.first.is_visible():
-            dialog.get_by_role("button", name="Select", exact=True).click()
-        elif ready():
-            page.get_by_role("menuitem", name="Run", exact=True).click()
-            page.get_by_role("menuitem", name=re.compile(r"^Run All Cells")).click()
-            with contextlib.suppress(PlaywrightTimeout):
-                started.first.wait_for(state="attached", timeout=10_000)
-                return
-        page.wait_for_timeout(250)
-    raise AssertionError(f"could not run the notebook within {timeout_s} s")
-
-
 # --- what the 3D view draws ------------------------------------------------------------------
 _DRAWN = """() => {
     const w = document.querySelector('.arm3d-widget');
@@ -329,6 +173,19 @@ _DRAWN = """() => {
 
 
 PLOT = ".arm3d-widget .js-plotly-plot"
+# the kernel's disagreement with the browser's pose: [mm, the note's text] ([None, ""]: none)
+_NOTE = """() => { const w = document.querySelector('.arm3d-widget');
+    const n = w.querySelector('.arm3d-disagree');
+    return [w.arm3dDisagreement ? w.arm3dDisagreement.mm : null,
+            n.style.display === 'none' ? '' : n.textContent]; }"""
+# the title plotly shows (its SVG text)
+_TITLE_SHOWN = "() => document.querySelector('.arm3d-widget .g-gtitle text.gtitle').textContent"
+# the browser's kinematics made wrong: the tool point drawn 5 mm further in x
+_SABOTAGE = """() => { const A = analysisArm3d; A.truePose = A.truePose || A.pose;
+    A.pose = (arm, args) => { const r = A.truePose(arm, args);
+        if (r.frames) { r.frames = r.frames.map(p => p.slice());
+            r.frames[r.frames.length - 1][0] += 5; }
+        return r; }; }"""
 PHASES: list = []  # per change: ms from the key press to draw(), plotly start, return, painted
 
 
@@ -475,13 +332,41 @@ def test_explorer_in_jupyterlab(lab, lab_page, shots):
         assert _close(drawn["target"], [target]), drawn["target"]
         _assert_tool_frame(drawn, arm, target, "front-up")  # the tool frame, drawn with it
         assert_arm_on_screen(page, PLOT, expect, previous=shown)  # the picture moved too
+        # the title on screen is the pose's (set in place, not by a relayout)
+        assert page.evaluate(_TITLE_SHOWN) == drawn["title"], page.evaluate(_TITLE_SHOWN)
         shown = expect
     page.wait_for_function(
         "() => document.querySelector('.explorer-message').innerText.includes('(250, 100, 600)')"
         " || document.querySelector('.explorer-message').innerText.includes('front-up')"
     )
+    _quiet(page)  # the kernel agreed with every pose the browser drew: no note
+    assert page.evaluate(_NOTE) == [None, ""], page.evaluate(_NOTE)
 
     step("1 typed")
+    # 1b. the kernel confirms: the browser's kinematics made wrong (the tool point 5 mm off in
+    # x), a typed value is drawn wrong at once, then the kernel's pose replaces it and the note
+    # says by how much; right again, the note goes
+    page.evaluate(_SABOTAGE)
+    _mark(page)
+    _type_into(page, "x [mm]", 240)
+    _drawn_after_change(page)
+    first = page.evaluate(
+        """() => document.querySelector('.arm3d-widget').arm3dDraws
+        .find(d => d.t > window.arm3dChangeAt)"""
+    )
+    expect = _fk_pose(arm, [240, 100, 600], "front-up")
+    assert first["source"] == "local", first  # drawn at once, from the browser's kinematics
+    assert abs(first["frames"][-1][0] - expect[-1][0] - 5.0) < 1e-6, first  # wrong by 5 mm
+    _quiet(page)
+    assert _close(_drawn(page)["arm"], expect)  # corrected by the kernel's pose
+    mm, note = page.evaluate(_NOTE)
+    assert mm == pytest.approx(5.0, abs=1e-6) and "5.000 mm apart" in note, (mm, note)
+    assert note and page.locator(".arm3d-disagree").first.is_visible()
+    page.evaluate("() => { analysisArm3d.pose = analysisArm3d.truePose; }")
+    _type_into(page, "x [mm]", 250)
+    _quiet(page)
+    assert page.evaluate(_NOTE) == [None, ""], page.evaluate(_NOTE)
+    assert _close(_drawn(page)["arm"], _fk_pose(arm, [250, 100, 600], "front-up"))
     # 2. a slider dragged with the mouse: the arm follows during the drag (drawn in the browser
     # from the printed kinematics at each move, before the button is released), then the
     # kernel's message and pose follow

@@ -174,6 +174,10 @@ def test_the_drawn_arm_follows_every_change(explorer_page, shots):
         drawn, ms = _change(page, label, v)
         latencies.append(ms)
         assert drawn["path"] == "in-place", drawn  # not a whole Plotly.update
+        shown = page.evaluate(
+            "() => document.querySelector('.static-explorer .g-gtitle text.gtitle').textContent"
+        )
+        assert shown == drawn["title"], (shown, drawn["title"])  # the title set in place
         now = _pose(arm, target)
         assert _close(drawn["arm"], now), (target, drawn)
         assert _close(drawn["target"], [target])

@@ -268,6 +268,18 @@ def test_the_schema_stays_strict_without_a_drive(tmp_path):
         load_arm(str(path))
 
 
+def test_joints_out_of_the_rows_order_are_refused(tmp_path):
+    """A [[joints]] entry names the joint its moving row names: entries swapped (theta2's
+    stop given to theta1) are refused, naming both, where they used to load."""
+    text = _text("planar2r").replace('name = "theta1"', 'name = "TMP"').replace(
+        'name = "theta2"', 'name = "theta1"').replace('name = "TMP"', 'name = "theta2"')
+    path = tmp_path / "arm.toml"
+    path.write_text(text)
+    with pytest.raises(DescriptionError, match=r"arm.toml: \[\[joints\]\] 1 name: 'theta2', "
+                       "but moving D-H row 1 names its joint 'theta1'"):  # fmt: skip
+        load_arm(str(path))
+
+
 def test_rows_name_the_joints_or_take_the_d_h_names(tmp_path):
     """Without [[joints]], each moving row's joint is named as the row names it, else
     theta<i> (the D-H table's name): revolute, one turn either way, no drive."""

@@ -241,7 +241,8 @@ def solve_csv(
 def _problems(arm: Arm, rec, values: np.ndarray, columns, path) -> list[str | None]:
     """Per record of a chunk: why it is not solved (a bad number as read, or a coordinate
     out of range), or None."""
-    ranges = _range_problems(arm, values, columns, rec.lines, path)
+    shown = tuple(rec.written.get(c, c) for c in columns)  # as the header wrote them
+    ranges = _range_problems(arm, values, shown, rec.lines, path)
     return [a or b for a, b in zip(rec.problems, ranges, strict=True)]
 
 

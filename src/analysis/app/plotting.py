@@ -26,6 +26,7 @@ __all__ = [
     "equal_axes_3d",
     "figure_dir",
     "plot_arm",
+    "plot_views",
     "rasterize_dense",
     "save_figure",
     "style",
@@ -224,3 +225,47 @@ def plot_arm(
     for axis in (ax.xaxis, ax.yaxis, ax.zaxis):  # few ticks: 3D tick labels crowd otherwise
         axis.set_major_locator(MaxNLocator(3))
     return ax
+
+
+def plot_views(
+    paths: dict[str, npt.ArrayLike],
+    dots: dict[str, npt.ArrayLike] | None = None,
+    *,
+    height: float = 4.4,
+    width: float = 7.4,
+) -> tuple[mpl.figure.Figure, tuple]:
+    """A top view (x, y) and a side view (x, z) of 3D paths [mm], at one scale in both
+    directions of each view and each panel as wide as its data at the same height (a view
+    whose y spans three times its x gets that share of the width, not a squeezed strip), with
+    at most 4 ticks along x and 6 along the other axis (no labels running into each other).
+    ``width`` [in]: no wider than the site's text column, where a wider figure is shrunk and
+    its 10 pt text falls under the 9 pt the site's layout test asks for.
+
+    ``paths`` {label: (n, 3) points}, drawn in turn, each narrower than the one before (paths
+    that coincide stay visible); ``dots`` {label: (m, 3) points} marked with dots in the same
+    colour. Returns the figure and its two axes (call under :func:`style`, then save)."""
+    from matplotlib.ticker import MaxNLocator
+
+    pts = {k: np.asarray(v, dtype=float).reshape(-1, 3) for k, v in paths.items()}
+    marks = {k: np.asarray(v, dtype=float).reshape(-1, 3) for k, v in (dots or {}).items()}
+    every = np.concatenate([*pts.values(), *marks.values()])
+    span = np.maximum(np.ptp(every, axis=0), 1.0) * 1.1  # [mm], with a margin
+    fig, axes = plt.subplots(
+        1, 2, figsize=(width, height), layout="constrained",
+        width_ratios=[span[0] / span[1], span[0] / span[2]],
+    )  # fmt: skip
+    widths = np.linspace(4.0, 1.5, len(pts)) if len(pts) > 1 else [1.5]
+    for k, (label, p) in enumerate(pts.items()):
+        colour = f"C{k}"
+        for ax, v in zip(axes, (1, 2), strict=True):
+            ax.plot(p[:, 0], p[:, v], color=colour, lw=widths[k], label=label)
+            if label in marks:
+                ax.plot(marks[label][:, 0], marks[label][:, v], "o", color=colour)
+    for ax, v, title in zip(axes, "yz", ("top view", "side view"), strict=True):
+        ax.set_xlabel("x [mm]")
+        ax.set_ylabel(f"{v} [mm]")
+        ax.set_title(title, fontsize=9)
+        ax.set_aspect("equal", adjustable="datalim")
+        ax.xaxis.set_major_locator(MaxNLocator(nbins=4))
+        ax.yaxis.set_major_locator(MaxNLocator(nbins=6))
+    return fig, tuple(axes)

@@ -248,7 +248,8 @@ def _write_sources(
     from analysis.app import site_content as site
     from analysis.app.frontpage import front_page_data
 
-    captions = site.figure_captions(fig_dir)
+    # numbered in the order the notebooks show them (site_notebooks.figure_numbers)
+    captions = site.shown_order(site.figure_captions(fig_dir), (nb for _, nb, _ in executed))
     missing = [s for s, c in captions.items() if not c]
     say(
         f"{len(captions)} figures saved"

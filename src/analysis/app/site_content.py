@@ -32,11 +32,13 @@ from analysis.app.site_notebooks import (
     WIDGET_MIME,
     figure_captions,
     figure_md,
+    figure_numbers,
     md_code,
     md_inline,
     md_role,
     prepare_notebook,
     saved_stems,
+    shown_order,
 )
 from analysis.escape import html_text
 
@@ -55,6 +57,7 @@ __all__ = [
     "prepare_notebook",
     "register_md",
     "saved_stems",
+    "shown_order",
     "static_explorer_html",
     "write_downloads",
 ]
@@ -230,6 +233,7 @@ def front_page_md(
     ``problems`` what failed in this build (shown first, in an error box).
     """
     papers = [s for s in sections if isinstance(s, PaperVerdict)]
+    numbers = figure_numbers(captions)
     out = ["# Audit of four robot-kinematics papers", ""]
     if papers:
         out += [glance_html(papers), ""]
@@ -270,7 +274,11 @@ def front_page_md(
                 where = (
                     f"{{ref}}`notebook {home.split('/')[-1][:2]} <fig-{stem}>`" if home else None
                 )
-                out.append(figure_md(stem, captions[stem], name=False, evidence=where))
+                out.append(
+                    figure_md(
+                        stem, captions[stem], name=False, number=numbers[stem], evidence=where
+                    )
+                )
         out += [_evidence(s.evidence, titles), ""]
     if CITATIONS_TOML.exists():
         out += ["## The four papers", ""]
@@ -323,8 +331,9 @@ def figures_md(captions: dict[str, str], homes: dict[str, str], titles: dict[str
         "downloads under each.",
         "",
     ]
+    numbers = figure_numbers(captions)  # the catalogue's order: these numbers in turn
     by_nb: dict[str, list[str]] = {}
-    for stem in captions:
+    for stem in numbers:
         by_nb.setdefault(stem[:2], []).append(stem)
     for num, stems in sorted(by_nb.items()):
         nb = next((t for t in titles if t.startswith(num)), None)
@@ -334,7 +343,9 @@ def figures_md(captions: dict[str, str], homes: dict[str, str], titles: dict[str
         for stem in stems:
             home = homes.get(stem)
             where = f"{{ref}}`notebook {num} <fig-{stem}>`" if home else None
-            out.append(figure_md(stem, captions[stem], name=False, evidence=where))
+            out.append(
+                figure_md(stem, captions[stem], name=False, number=numbers[stem], evidence=where)
+            )
     return "\n".join(out)
 
 

@@ -28,11 +28,13 @@ __all__ = [
     "MISSING_CAPTION",
     "figure_captions",
     "figure_md",
+    "figure_numbers",
     "md_code",
     "md_inline",
     "md_role",
     "prepare_notebook",
     "saved_stems",
+    "shown_order",
 ]
 
 PROJECT = Path(__file__).resolve().parents[3]
@@ -86,9 +88,40 @@ def md_inline(text: str) -> str:
     return re.sub(r"([\\`*_\[\]<>{}$|#])", r"\\\1", text)
 
 
-def figure_md(stem: str, caption: str, *, name: bool, evidence: str | None = None) -> str:
-    """A MyST figure: the PNG, its caption, SVG/PNG downloads, optionally where it comes from."""
+def shown_order(captions: dict[str, str], notebooks) -> dict[str, str]:
+    """``captions`` in the order the executed ``notebooks`` show their figures (notebook by
+    notebook, cell by cell), then any figure no notebook shows: what :func:`figure_numbers`
+    numbers (the file names' alphabetical order put a notebook's third figure first)."""
+    shown = [
+        stem
+        for nb in notebooks
+        for cell in nb.cells
+        if cell.cell_type == "code"
+        for stem in saved_stems(cell)
+        if stem in captions
+    ]
+    return {stem: captions[stem] for stem in dict.fromkeys([*shown, *captions])}
+
+
+def figure_numbers(captions: dict[str, str]) -> dict[str, int]:
+    """Each figure's one number, on every page of the site and in the PDF: its place in the
+    catalogue (``figures.md``: by notebook number, then in the order of ``captions``, which
+    :func:`shown_order` puts in the order the notebook shows them). Sphinx's ``numfig``
+    numbers a figure where it stands, so the same figure had one number on its notebook's
+    page, another on the front page and the figures page and a third in the PDF (which
+    starts from its own front page); ``docs/site/conf.py`` has ``numfig`` off and
+    :func:`figure_md` writes this number into the caption."""
+    order = sorted(captions, key=lambda stem: stem[:2])  # stable: the saved order kept
+    return {stem: k for k, stem in enumerate(order, 1)}
+
+
+def figure_md(
+    stem: str, caption: str, *, name: bool, number: int, evidence: str | None = None
+) -> str:
+    """A MyST figure: the PNG, its caption after its number (:func:`figure_numbers`),
+    SVG/PNG downloads, optionally where it comes from."""
     cap = md_inline(caption) if caption else f"**{MISSING_CAPTION} `{stem}`.**"
+    cap = f"**Figure {number}.** {cap}"
     alt = caption.replace("\n", " ") if caption else f"figure {stem} (no caption recorded)"
     # the PNG is the preview on the page; the vector file is the one download
     links = f"{{download}}`SVG </figures/{stem}.svg>`"
@@ -179,9 +212,10 @@ def prepare_notebook(
             else:
                 keep.append(o)
         cell.outputs = keep
+        numbers = figure_numbers(captions)
         cells.append(
             nbformat.v4.new_markdown_cell(
-                "\n".join(figure_md(s, captions[s], name=True) for s in stems)
+                "\n".join(figure_md(s, captions[s], name=True, number=numbers[s]) for s in stems)
             )
         )
         placed += stems

@@ -446,11 +446,16 @@ def _check_chain(file: str, rows: tuple, joints: tuple) -> None:
         raise DescriptionError(file, "[[joints]]", f"repeat the name {dup!r} (names: {names})")
     if not rows:
         return
-    moving = [r.get("kind", "revolute") for r in rows if r.get("kind", "revolute") != "fixed"]
+    moving = [r for r in rows if r.get("kind", "revolute") != "fixed"]
     if len(joints) != len(moving):
         raise DescriptionError(file, "[[joints]]", f"{len(joints)} joints for {len(moving)} "
                                "moving rows (revolute or prismatic)")  # fmt: skip
-    for j, kind in zip(joints, moving, strict=True):
+    for i, (j, row) in enumerate(zip(joints, moving, strict=True), 1):
+        kind = row.get("kind", "revolute")
         if j.kind != kind:
             raise DescriptionError(file, f"[[joints]] ({j.name}) kind",
                                    f"{j.kind!r}, but its D-H row is {kind!r}")  # fmt: skip
+        if row.get("joint", j.name) != j.name:  # entries out of order: limits on the wrong axis
+            raise DescriptionError(file, f"[[joints]] {i} name", f"{j.name!r}, but moving D-H "
+                                   f"row {i} names its joint {row['joint']!r} (the joints "
+                                   "follow the moving rows, in order)")  # fmt: skip

@@ -11,7 +11,7 @@ import re
 import stat
 import sys
 from collections.abc import Iterator, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import IO, Any
 
 import numpy as np
@@ -227,11 +227,13 @@ class _Table:
                 )
             where[name] = index
         written = list(names)
+        self.written: dict[str, str] = {}  # column -> its alias, as the header wrote it
         for canon, others in self.aliases.items():  # x -> x_mm where x_mm is not there
             given = [a for a in others if a in where]
             if canon not in where and len(given) == 1:
                 where[canon] = where.pop(given[0])
                 names[where[canon] - 1] = canon
+                self.written[canon] = given[0]
         missing = [n for n in self.required if n not in where]
         if missing:
             raise InputError(
@@ -351,6 +353,7 @@ class _Table:
             values = np.empty(len(cells))
         if good:
             return values
+        shown = self.written.get(name, name)  # the column as the header wrote it
         for i, cell in enumerate(cells):
             problem = _number_problem(cell)
             if problem is None:
@@ -358,10 +361,10 @@ class _Table:
                 continue
             line = _first_line([c[i] for c in columns], ends[i])
             if problems is None:
-                raise InputError(problem, self.path, line, name)
+                raise InputError(problem, self.path, line, shown)
             values[i] = np.nan
             if problems[i] is None:
-                problems[i] = str(InputError(problem, self.path, line, name))
+                problems[i] = str(InputError(problem, self.path, line, shown))
         return values
 
     def records(self, chunk_rows: int | None, chunk_bytes: int | None) -> Iterator[Records]:
@@ -377,7 +380,7 @@ class _Table:
                     for index, name in self.keep
                     if name in self.numeric
                 }
-                yield Records(ends, columns, numbers, problems or [None] * n)
+                yield Records(ends, columns, numbers, problems or [None] * n, self.written)
 
 
 @dataclass
@@ -397,12 +400,15 @@ class Records:
     problems : list of str or None
         Per record: None, or the one-line reason (file, line, column) of its first bad
         numeric cell.
+    written : dict of str to str
+        A column read under an alias -> its name as the header wrote it (``x_mm`` -> ``x``).
     """
 
     lines: list[int]
     cells: list[list[str]]
     numbers: dict[str, np.ndarray]
     problems: list[str | None]
+    written: dict[str, str] = field(default_factory=dict)
 
 
 def _number_problem(cell: str) -> str | None:
@@ -527,7 +533,7 @@ def iter_record_chunks(
     quoting, encoding) raise :class:`InputError` as :func:`read_table` does.
 
     ``aliases`` {column: other names}: a header without ``column`` but with exactly one of
-    its other names (``x`` for ``x_mm``) reads that one as ``column``.
+    its other names (``x`` for ``x_mm``) reads that one as ``column`` (named as written).
 
     Returns ``(header, chunks)``: the header's names as written, and the iterator.
     """

@@ -179,6 +179,27 @@
     return true;
   }
 
+  // The title set where plotly drew it, instead of Plotly.relayout: a relayout of the title
+  // re-runs plotly's layout drawing (the title, the modebar, the layout's styles), about 4 ms
+  // of the 8 ms a redraw of the arm took on the main thread (headless Chromium, software
+  // WebGL, measured by benchmarks/explorer_latency.py's phases). The text goes into the
+  // figure's layout (what any later plotly redraw starts from), its full layout and the SVG
+  // text node, as plotly writes it for a plain title (one text node, data-unformatted).
+  // Only a plain title (nothing plotly would parse: tags, entities, LaTeX) over a title plotly
+  // drew as plain text; otherwise false, and the caller relayouts.
+  function setTitle(gd, title) {
+    const el = gd.querySelector(".g-gtitle > text.gtitle");
+    const full = gd._fullLayout && gd._fullLayout.title;
+    const layout = gd.layout && gd.layout.title;
+    if (!el || !full || !layout || typeof layout !== "object" || /[<>&$]/.test(title)) return false;
+    if (el.childElementCount || el.getAttribute("data-math") !== "N" || el.textContent !== full.text) return false;
+    layout.text = title;
+    full.text = title;
+    el.setAttribute("data-unformatted", title);
+    el.textContent = title;
+    return true;
+  }
+
   /** The points of one joint-axes or frames trace (its `meta.arm3d`, written by
    * analysis.app.arm3d_frames.frame_spec) for the frames `T` (3x4 blocks [R | o], base first):
    * {x, y, z}, null between segments. As arm3d_frames.segments: per joint axis o -/+ L/2 z;
@@ -312,7 +333,8 @@
             return this.Plotly.update(this.div, styled, Object.assign({"title.text": title}, liveCamera(this.div)), idx);
           }
           const now = this.div._fullLayout.title && this.div._fullLayout.title.text;
-          return now === title ? undefined : this.Plotly.relayout(this.div, {"title.text": title});
+          if (now === title || setTitle(this.div, title)) return undefined;
+          return this.Plotly.relayout(this.div, {"title.text": title});
         })
         .then(() => { plotted = performance.now(); })
         .then(onScreen)

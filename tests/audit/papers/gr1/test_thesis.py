@@ -94,3 +94,35 @@ def test_fx2n_move(arm):
     moving = np.abs(np.diff(r["q_fx2n"], axis=0)) > 1e-12
     assert (moving.sum(axis=1) <= 2).all()
     assert r["max_apart_mm"] > 50 and r["length_fx2n_mm"] > r["length_cubic_mm"]
+
+
+@pytest.mark.parametrize(("old", "new", "on_path"), [
+    ('lhs = "theta(t_f)"', 'lhs = "theta(t_f/2)"', [False, True, False, False]),  # a via point
+    ('lhs = "Subs(Derivative(theta(t), t), t, t_f)"', 'lhs = "Subs(Derivative(theta(t), t), t, t_f/3)"', [False, False, False, True]),  # noqa: E501
+    ('lhs = "theta(t_f)"', 'lhs = "t_f"', None),  # not a constraint on the joint: refused
+])  # fmt: skip
+def test_cp_claim_is_decided_by_where_the_printed_constraints_hold(tmp_path, monkeypatch, old, new, on_path):  # noqa: E501
+    """gr1-claim-cp: the plan's constraints, read from eqs. 5.1-5.2's printed left-hand sides,
+    all hold at the end points (a PTP move, not CP); a constraint moved between the ends makes
+    the claim's check hold, so the register's row would explain nothing."""
+    from analysis.audit import register as reg
+    from analysis.audit.context import Context, bespoke, context
+    from analysis.audit.papers.gr1 import checks
+    from analysis.papers import load_file
+
+    assert context("gr1").domain("plan_constraints")["on_path"].tolist() == [False] * 4
+    src = (reg.data_dir() / "papers" / "gr1.toml").read_text(encoding="utf-8")
+    assert src.count(old) == 1, old
+    path = tmp_path / "gr1.toml"
+    path.write_text(src.replace(old, new), encoding="utf-8")
+    paper = load_file(path.resolve())
+    ctx = Context(paper, bespoke("gr1", paper))
+    monkeypatch.setattr(checks, "context", lambda _name: ctx)
+    if on_path is None:
+        with pytest.raises(ValueError, match=r"gr1:5.1b: t_f is not theta or its rate at a time"):
+            ctx.domain("plan_constraints")
+        return
+    assert ctx.domain("plan_constraints")["on_path"].tolist() == on_path
+    from analysis.audit.kinds import check
+
+    assert check({"kind": "claim"}, paper.record("c5.2.1-cp")["check"]["reading"], ctx).ok

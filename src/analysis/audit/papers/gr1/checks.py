@@ -329,6 +329,51 @@ def _cubic_acc():
     return {"jump_deg_s2": np.degrees(np.abs(acceleration_jumps("cubic", q[0], q[1], st.DURATION_S)))}  # noqa: E501
 
 
+@B.domain("plan_constraints")
+def _plan_constraints():
+    """The constraints sec. 5.4.2's plan puts on each joint's move (``c5.2.1-cp.constraints``:
+    the printed eqs. 5.1-5.2), each read from its printed left-hand side: the time it holds at
+    (theta or its derivative at 0 or t_f); ``on_path``: between the end points, which is what
+    the thesis's own sec. 5.3 calls a path constraint (CP) and PTP lacks."""
+    paper = _paper()
+    s = paper.symbols("cubic")
+    theta, on_path = s["theta"], []
+    for rid in paper.record("c5.2.1-cp")["constraints"]:
+        lhs = paper.parse(paper.record(rid)["lhs"], "cubic")
+        if isinstance(lhs, sp.Subs) and isinstance(lhs.expr, sp.Derivative) and lhs.expr.expr.func == theta:  # noqa: E501
+            at = lhs.point[0]
+        elif getattr(lhs, "func", None) == theta:
+            at = lhs.args[0]
+        else:
+            raise ValueError(f"gr1:{rid}: {lhs} is not theta or its rate at a time")
+        on_path.append(at not in (0, s["t_f"]))
+    return {"on_path": np.array(on_path)}
+
+
+@B.fact()
+def cp_path() -> dict:
+    """The corrected move's tool path (the cubics of sec. 5.4.2, Table 5-3's poses with the
+    orientation projected, gl.corrected_move): its largest distance [mm] from the straight
+    segment between its end positions, and that segment's length [mm]."""
+    from analysis.studies.trajectories import cubic_trajectory
+
+    q = gl.corrected_move()[0]
+    t = np.linspace(0.0, st.DURATION_S, 201)
+    P = st.gr1_arm().fk(cubic_trajectory(q[0], q[1], st.DURATION_S, t)[0])
+    off = st.nearest_point_distance(P, np.stack([P[0], P[-1]]))
+    return {"off_line_mm": float(off.max()), "chord_mm": float(np.linalg.norm(P[-1] - P[0]))}
+
+
+@B.domain("contents_pages")
+def _contents_pages():
+    """The contents' entries (``contents.pages``): is each heading on the page the contents
+    list for it?"""
+    rows = _paper().record("contents.pages")["entries"]
+    if any(len(r) != 3 or not all(isinstance(x, int) and x > 0 for x in r[1:]) for r in rows):
+        raise ValueError("gr1:contents.pages: each entry is [title, listed page, body page]")
+    return {"on_listed_page": np.array([listed == body for _, listed, body in rows])}
+
+
 @B.domain("presets")
 def _presets():
     """Table 2-3's presets against the pulses the text derives them as (|delta theta| of Table

@@ -83,49 +83,36 @@ def _pairs():
     return {"n_assemblies": n, "n_on_branch": on_branch}
 
 
-PRIOR_READING = {
-    "theory": ("screw theory",),
-    "builds": ("kinematic equations", "mechanism analysis"),
-    "robot": ("serial", "parallel", "hybrid"),
-    "proposes_method": (True, False),
-}
-"""The vocabulary a reading of a cited work (``prior_work.cited`` in ``data/papers/picker.toml``)
-and the novelty claim's own reading (``novelty.reads_as``) are written in: the fields compared."""
-_CITED_KEYS = {"ref", "location", "quote", "said", "method", "beyond_print", *PRIOR_READING}
-
-
-def prior_methods(paper) -> dict:
-    """Each work the introduction reviews, as recorded: is our reading of it (theory, what it
-    builds, the robot's class, whether it proposes a method) the novelty claim's reading of the
-    paper's own contribution? ValueError, naming the work, for a reading that is not anchored
-    in the printed text (its quote right after its citation mark, its entry in the list) or
-    that leaves the vocabulary (:data:`PRIOR_READING`)."""
-    prior, claim = paper.record("prior_work"), paper.record("novelty")["reads_as"]
-    if set(claim) != set(PRIOR_READING):
-        raise ValueError(f"picker:novelty reads_as has {sorted(claim)}; expected {sorted(PRIOR_READING)}")  # noqa: E501
-    same, keys = [], []
-    for c in prior["cited"]:
-        where = f"picker:prior_work cited [{c.get('ref')}]"
-        if set(c) != _CITED_KEYS:
-            raise ValueError(f"{where}: keys {sorted(set(c) ^ _CITED_KEYS)} unknown or missing")
-        if f"[{c['ref']}]" + c["quote"] not in prior.text.replace("等[", "["):
-            raise ValueError(f"{where}: the quote is not the text right after [{c['ref']}]")
-        paper.record(f"references.{c['ref']}")  # the entry, as printed
-        for k, allowed in PRIOR_READING.items():
-            if c[k] not in allowed or type(c[k]) is not type(allowed[0]):
-                raise ValueError(f"{where}: {k} = {c[k]!r} not in {allowed}")
-        if not c["beyond_print"].strip():
-            raise ValueError(f"{where}: say what the reading adds to the printed text")
-        same.append(all(c[k] == claim[k] for k in PRIOR_READING))
-        keys.append(c["ref"])
-    return {"same_method": np.array(same), "key": np.array(keys)}
-
-
 @B.domain("prior_methods")
 def _prior():
     """The works the introduction reviews ([14]-[18]), each as our reading of the text's words
-    for it records it (:func:`prior_methods`): the same method as the paper's contribution?"""
+    for it records it (:func:`analysis.audit.papers.picker.readings.prior_methods`): the same
+    method as the paper's contribution?"""
+    from analysis.audit.papers.picker.readings import prior_methods
+
     return prior_methods(context("picker").paper)
+
+
+@B.domain("structure_claims")
+def _structure():
+    """Sec. 2's and conclusion 1's claims for the parallelogram arm (stiffness, a large work
+    stroke from a small drive stroke, strength under vibration), each as recorded with what
+    would show it: is it reported anywhere in the paper, and could the test hardware of sec. 4,
+    as our reading of each device records it, have measured it?"""
+    from analysis.audit.papers.picker.readings import structure_claims
+
+    return structure_claims(context("picker").paper)
+
+
+@B.fact()
+def test_hardware() -> dict:
+    """The test platform of sec. 4 as recorded (``test_platform.devices``): how many devices,
+    and what any of them measures."""
+    from analysis.audit.papers.picker.readings import test_devices
+
+    devices = test_devices(context("picker").paper)
+    measures = sorted({m for d in devices for m in d["measures"]})
+    return {"devices": len(devices), "measures": ", ".join(measures) or "nothing"}
 
 
 @B.domain("r3")

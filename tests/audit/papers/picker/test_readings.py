@@ -1,4 +1,6 @@
-"""Seed 002's novelty claim against the works its introduction reviews (``pick-claim-novelty``).
+"""Seed 002's findings that rest on readings recorded as data: the novelty claim against the
+works its introduction reviews (``pick-claim-novelty``), and the claims for the arm's structure
+against the test hardware (``pick-claim-structure``).
 
 Each cited work is recorded as our reading of the text's words for it (``prior_work.cited`` in
 data/papers/picker.toml), and the claim of novelty as its own reading (``novelty.reads_as``);
@@ -17,7 +19,7 @@ import pytest
 
 from analysis.audit import register as reg
 from analysis.audit.context import Context, bespoke, context
-from analysis.audit.papers.picker import checks
+from analysis.audit.papers.picker import checks, readings
 from analysis.papers import load, load_file
 
 SRC = (reg.data_dir() / "papers" / "picker.toml").read_text(encoding="utf-8")
@@ -43,7 +45,7 @@ def _copy(tmp_path, *edits):
 
 
 def _same(paper) -> dict[int, bool]:
-    d = checks.prior_methods(paper)
+    d = readings.prior_methods(paper)
     return dict(zip(d["key"].tolist(), d["same_method"].tolist(), strict=True))
 
 
@@ -80,7 +82,7 @@ def test_the_verdict_follows_the_reading_not_the_words(tmp_path):
 ])  # fmt: skip
 def test_a_reading_not_anchored_in_the_text_is_refused_naming_the_work(tmp_path, edit, message):
     with pytest.raises(ValueError, match=message):
-        checks.prior_methods(_copy(tmp_path, edit))
+        readings.prior_methods(_copy(tmp_path, edit))
 
 
 def test_a_reading_that_clears_18_turns_the_register_red(tmp_path, monkeypatch):
@@ -94,3 +96,28 @@ def test_a_reading_that_clears_18_turns_the_register_red(tmp_path, monkeypatch):
     assert any(f.startswith("explains nothing: pick-claim-novelty/abstract") and "(@novelty)" in f for f in found), found  # noqa: E501
     monkeypatch.undo()  # (before the real context computes the domain: it caches it)
     assert context("picker").domain("prior_methods")["same_method"].sum() == 1
+
+
+def test_no_structure_claim_is_shown_or_measurable_by_the_test_hardware(tmp_path):
+    d = readings.structure_claims(load("picker"))
+    assert d["shown"].tolist() == [False] * 3 and d["measurable"].tolist() == [False] * 3
+    assert {m for x in readings.test_devices(load("picker")) for m in x["measures"]} == {"marker position"}  # noqa: E501
+    # an encoder readback on the prototype makes the stroke measurable, not the stiffness
+    enc = _copy(tmp_path, (None, 'measures = []\n  beyond_print = "The prototype', 'measures = ["joint value"]\n  beyond_print = "The prototype'))  # noqa: E501
+    assert readings.structure_claims(enc)["measurable"].tolist() == [False, True, False]
+    # a property reported in a record of the paper is shown; a place that is none is refused
+    shown = _copy(tmp_path, (None, 'reported_in = []\n  beyond_print = "A stiffness', 'reported_in = ["experiment"]\n  beyond_print = "A stiffness'))  # noqa: E501
+    assert readings.structure_claims(shown)["shown"].tolist() == [True, False, False]
+    nowhere = _copy(tmp_path, (None, 'reported_in = []\n  beyond_print = "A stiffness', 'reported_in = ["table9"]\n  beyond_print = "A stiffness'))  # noqa: E501
+    with pytest.raises(ValueError, match="no record 'table9'"):
+        readings.structure_claims(nowhere)
+
+
+@pytest.mark.parametrize(("old", "new", "message"), [
+    ('quote = "增加整個手臂的剛度"', 'quote = "增加整個手臂的強度"', r"'stiffness': the quote '增加整個手臂的強度' is not printed"),  # noqa: E501
+    ('needs = ["force", "acceleration"]', 'needs = ["stress"]', r"'strength under vibration picking': needs \['stress'\]"),  # noqa: E501
+    ('measures = ["marker position"]', 'measures = ["position"]', r"'three-dimensional coordinate measuring instrument': measures"),  # noqa: E501
+])  # fmt: skip
+def test_a_hardware_reading_not_anchored_in_the_text_is_refused(tmp_path, old, new, message):
+    with pytest.raises(ValueError, match=message):
+        readings.structure_claims(_copy(tmp_path, (None, old, new)))
