@@ -1,8 +1,9 @@
 """The machine program on the ST engine against awlsim's scan of the same arm, in one run
 (issue 29 item 7).
 
-For each arm: a 10 s scenario at 4 ms cycles (2,501 cycles: power up, home, a move, a new
-target mid-move, the stop circuit opened and closed, Reset, the move resumed) on the ST
+For each arm: a 10 s scenario at 4 ms cycles (2,501 cycles: power up, home from off home, a
+move, a new target mid-move, the stop circuit opened and closed, Reset, the move resumed) on
+the ST
 engine (``analysis.plc.st_engine.run_machine``: a process, compile, bind the axes, every
 cycle's scan and trace row), timed as a whole (wall) and inside ``Instance::scan`` alone
 (the driver's ``scan_ns``): machine scans per second. Beside it, awlsim's scans per second
@@ -18,16 +19,25 @@ import time
 
 
 def _ten_seconds(arm) -> list[tuple[float, str, float]]:
-    """A 10 s scenario: the retarget scenario's rows, then the stop circuit opened and closed,
-    Reset and a Start back to the first target, the last row at 8 s (+ 2 s settle)."""
+    """A 10 s scenario, the last row at 8 s (+ 2 s settle): power up and home (the retarget
+    scenario's rows up to its first Start, which comes once every axis is homed: about 5.6 s
+    for the arms with reference switches, the axes powering up 2 s of their homing approach
+    off home), then within the next 1.6 s: the move, its second target 0.4 s in, the stop
+    circuit opened at 0.8 s and closed at 1.1 s, Reset, a Start back to the first target."""
     from analysis.plc.machine.scenarios import scenarios
 
     sc = scenarios(arm)
-    rows = [r for r in sc["retarget"].rows if r[0] < 5.0]
+    rows = sc["retarget"].rows
+    starts = [t for t, n, v in rows if n == "Start" and v == 1.0]
+    t0, t1 = starts[0], starts[1]
+    boot = [r for r in rows if r[0] <= t0 + 0.1]
+    second = [(t0 + 0.4 + (t - t1), n, v) for t, n, v in rows if t1 - 0.06 <= t <= t1 + 0.1]
     first = [r for r in sc["move"].rows if r[1].startswith("Target")]
-    rows += [(5.5, "StopOK", 0.0), (6.0, "StopOK", 1.0), (6.2, "Reset", 1.0), (6.3, "Reset", 0.0)]
-    rows += [(6.5, n, v) for _, n, v in first]
-    rows += [(6.6, "Start", 1.0), (6.7, "Start", 0.0), (8.0, "Start", 0.0)]
+    k = t0 + 0.8
+    rows = [*boot, *second, (k, "StopOK", 0.0), (k + 0.3, "StopOK", 1.0), (k + 0.5, "Reset", 1.0),
+            (k + 0.6, "Reset", 0.0), *((k + 0.7, n, v) for _, n, v in first),
+            (k + 0.8, "Start", 1.0), (k + 0.9, "Start", 0.0), (8.0, "Start", 0.0)]  # fmt: skip
+    assert max(t for t, _, _ in rows) == 8.0, "the scenario outgrew its 10 s"
     return sorted(rows, key=lambda r: r[0])
 
 

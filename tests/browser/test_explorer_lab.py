@@ -308,6 +308,15 @@ def test_explorer_in_jupyterlab(lab, lab_page, shots):
     plot.scroll_into_view_if_needed()
     assert_arm_on_screen(page, PLOT, row1)
     page.screenshot(path=shots / "lab-explorer.png", full_page=False)
+    # WebGL rendered in software (headless Chromium, --disable-gpu): the view's scene without
+    # multisampling, which took most of each redraw's time (js/arm3d_view.js)
+    soft, aa = page.evaluate(
+        """() => { const v = document.querySelector('.arm3d-widget');
+        const gd = v.querySelector('.js-plotly-plot');
+        return [v.arm3dSoftwareGL, gd._fullLayout.scene._scene.glplot.gl
+            .getContextAttributes().antialias]; }"""
+    )
+    assert soft and aa is False, (soft, aa)
 
     step("open and run")
     # 1. typed changes: the drawn arm moves to FK(IK(target)) at once; latency measured

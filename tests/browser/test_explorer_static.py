@@ -83,6 +83,14 @@ _LAYOUT = """() => { const q = s => document.querySelector('.static-explorer ' +
             q('.explorer-table-wrap').height]; }"""
 
 
+# the renderer's name if the view found WebGL rendered in software, and whether its scene's
+# context multisamples
+_SOFTWARE_GL = """sel => { const v = document.querySelector(sel);
+    const gd = v.querySelector('.js-plotly-plot');
+    return [v.arm3dSoftwareGL, gd._fullLayout.scene._scene.glplot.gl.getContextAttributes()
+        .antialias]; }"""
+
+
 def _change(page, label: str, value: float) -> tuple[dict, float]:
     """Type ``value`` into the number box of slider ``label`` (a change event, as a user's
     Enter); return what is drawn next and the ms from the change to it on screen."""
@@ -165,6 +173,10 @@ def test_the_drawn_arm_follows_every_change(explorer_page, shots):
     assert "45.00, 10.21, -155.13" in first["title"] and "(500, 113, -1724)" in first["message"]
     page.locator(".explorer-plot").scroll_into_view_if_needed()
     page.screenshot(path=shots / "site-explorer.png")
+    # WebGL rendered in software (headless Chromium, --disable-gpu): the view's scene without
+    # multisampling, which took most of each redraw's time (js/arm3d_view.js)
+    soft, aa = page.evaluate(_SOFTWARE_GL, ".explorer-plot")
+    assert soft and aa is False, (soft, aa)
     latencies = []
     target = [100.0, 100.0, 600.0]
     before = _pose(arm, target)
@@ -378,7 +390,7 @@ def test_the_drawn_tool_frame_is_fk_json(explorer_page):
         np.testing.assert_allclose(o, doc["position_mm"], atol=1e-9, rtol=0)
         np.testing.assert_allclose(R, doc["rotation"], atol=1e-9, rtol=0)
         arm = load_arm(name)
-        n_axes = len(frames["joint"]["pts"]) // 3
+        n_axes = len(frames["joint"]["pts"]) // 7  # start, tip, barb, gap, tip, barb, gap
         assert n_axes == arm.n_joints, (name, n_axes)
         drawn[(name, q_deg[0])] = (frames, page.evaluate(_DRAWN)["arm"])
         page.locator(".static-explorer .explorer-fk").uncheck()

@@ -104,6 +104,45 @@
     return Object.assign({plotGlPixelRatio: ratio}, config || {});
   }
 
+  // WebGL without multisampling where the browser renders WebGL in software (no GPU:
+  // SwiftShader, llvmpipe; headless Chromium, virtual machines, remote desktops): there every
+  // frame's 4x multisampled raster and its read-back to the compositor are most of the time
+  // from a typed value to the pose on screen (a trace of Lab's explorer: the main thread's
+  // work 8-10 ms, the commit waiting 28-110 ms for the GPU process at load 14 on 2 cores),
+  // and without it the static explorer's median went from 42 to 30 ms and its p90 from 90
+  // to 39 ms (same browser, alternating blocks; benchmarks/explorer_latency.py measures the
+  // explorers). With a GPU nothing changes. plotly.js creates the scene's context itself
+  // with antialias on, so the context request of a canvas inside a view (.arm3d-view: the
+  // canvas is in its container when gl-plot3d asks) is given antialias off; every other
+  // canvas on the page is left alone.
+  let softwareGL = null;
+  /** The renderer's name when WebGL is rendered in software, else "" (asked once). */
+  function softwareRenderer() {
+    if (softwareGL !== null) return softwareGL;
+    softwareGL = "";
+    try {
+      const gl = document.createElement("canvas").getContext("webgl");
+      const info = gl && gl.getExtension("WEBGL_debug_renderer_info");
+      const name = info ? String(gl.getParameter(info.UNMASKED_RENDERER_WEBGL)) : "";
+      if (/swiftshader|llvmpipe|softpipe|software/i.test(name)) softwareGL = name;
+      const lose = gl && gl.getExtension("WEBGL_lose_context");
+      if (lose) lose.loseContext();
+    } catch (e) { /* no WebGL: plotly says so */ }
+    return softwareGL;
+  }
+  function noMultisampling() {
+    const proto = globalThis.HTMLCanvasElement && HTMLCanvasElement.prototype;
+    if (!proto || proto.arm3dGetContext || !softwareRenderer()) return;
+    const getContext = proto.getContext;
+    proto.arm3dGetContext = getContext;
+    proto.getContext = function (kind, attrs) {
+      if (/webgl/.test(String(kind)) && this.closest && this.closest(".arm3d-view")) {
+        attrs = Object.assign({}, attrs, {antialias: false});
+      }
+      return getContext.call(this, kind, attrs);
+    };
+  }
+
   // A trace's WebGL objects (line, markers, ...) as plotly.js 4 names them on its scene trace.
   const GL_PARTS = ["linePlot", "scatterPlot", "textMarkers", "errorBars", "delaunayMesh"];
 
@@ -202,8 +241,9 @@
 
   /** The points of one joint-axes or frames trace (its `meta.arm3d`, written by
    * analysis.app.arm3d_frames.frame_spec) for the frames `T` (3x4 blocks [R | o], base first):
-   * {x, y, z}, null between segments. As arm3d_frames.segments: per joint axis o -/+ L/2 z;
-   * per triad o -> o + L x, o -> o + L y, o -> o + L z. No frames: empty. */
+   * {x, y, z}, null between segments. As arm3d_frames.segments: per joint axis o -/+ L/2 z
+   * and an arrowhead at its + end; per triad o -> o + L x, o -> o + L y, o -> o + L z. No
+   * frames: empty. */
   function segments(spec, T) {
     const x = [], y = [], z = [];
     const put = (p) => { x.push(p[0]); y.push(p[1]); z.push(p[2]); };
@@ -214,8 +254,10 @@
       const M = T[f];
       const o = [M[0][3], M[1][3], M[2][3]];
       const along = (k, s) => [0, 1, 2].map((r) => o[r] + s * M[r][k]);
-      if (spec.kind === "axes") {
-        put(along(2, -0.5 * L)); put(along(2, 0.5 * L)); put(gap);
+      if (spec.kind === "axes") { // start, tip, barb, gap, tip, barb, gap (arm3d_frames.HEAD)
+        const tip = along(2, 0.5 * L);
+        const barb = (s) => [0, 1, 2].map((r) => tip[r] - spec.head[0] * L * M[r][2] + s * spec.head[1] * L * M[r][0]);
+        put(along(2, -0.5 * L)); put(tip); put(barb(1)); put(gap); put(tip); put(barb(-1)); put(gap);
       } else {
         for (let k = 0; k < 3; k++) { put(o); put(along(k, L)); put(gap); }
       }
@@ -247,6 +289,8 @@
       this.div.className = "arm3d-view";
       el.appendChild(this.div);
       el.arm3dDraws = [];
+      noMultisampling();
+      el.arm3dSoftwareGL = softwareRenderer(); // what the browser tests read
       this.queue = Promise.resolve();
       this.inPlace = true; // false: every redraw through Plotly.update (benchmarks/explorer_redraw.py)
       this.reset(figure);
@@ -263,7 +307,7 @@
       // the joint axes, link frames and tool frame (traces with meta.arm3d: arm3d_frames), and
       // their own colours (put back after a greyed pose)
       this.frameTraces = fig.data.map((t, i) => [i, t]).filter(([, t]) => t.meta && t.meta.arm3d)
-        .map(([i, t]) => ({i, spec: t.meta.arm3d, colours: {line: t.line.color, marker: t.marker.color}}));
+        .map(([i, t]) => ({i, spec: t.meta.arm3d, colours: {line: t.line.color, marker: t.line.color}}));
       const armTrace = fig.data[this.arm] || {};
       this.colours = {
         line: (armTrace.line && armTrace.line.color) || "#1f77b4",

@@ -19,9 +19,10 @@ here):
   profile (:func:`.profile.min_time`: axes that jump fail) and at most 1.5 times the
   synchronised profile (:func:`.profile.sync_time`), and the joints arrive within one cycle
   of each other;
-- :func:`check_stop`: after the stop, each axis comes to rest within
-  :func:`.profile.stop_distance` (the jerk-limited braking distance from its velocity and
-  acceleration) plus one cycle at its velocity, and never moves again;
+- :func:`check_stop`: after the stop (and after the halt of a re-plan), each axis comes to
+  rest within :func:`.profile.stop_distance` (the jerk-limited braking distance from its
+  velocity and acceleration) plus one cycle at its velocity without moving back on the way,
+  and (a stop) never moves again;
 - :func:`check_still`: no axis moves at all in a window (a refused command);
 - :func:`check_short_way`: no move turns an unlimited joint more than half a turn;
 - :func:`check_outputs`: an output has a value at a time (Status 101, Homed, ...).
@@ -115,6 +116,9 @@ class Expect:
     faulted: tuple[int, float] | None = None
     """(axis index, time): that axis' drive fails then (it stops dead: its limits and braking
     are not the program's)."""
+    halt_t: float | None = None
+    """A re-plan halts every axis then (MC_Halt): each comes to rest within its braking
+    distance and never moves back on the way (:func:`check_stop`, up to its rest)."""
     homed_t: float | None = None
     """Every axis is homed by then (:func:`check_homed`); its homing is held to the limits as
     every move is (:func:`check_limits`), not to the synchronised profile (:func:`check_sync`)."""
@@ -260,7 +264,7 @@ def scenarios(arm, seed: int = 29) -> dict[str, Scenario]:
         "retarget",
         "a new target mid-move (re-planned from where the axes stop)",
         (*boot, *_start(t0, ta, spec), *_start(mid, tb, spec), (t2, "Start", 0.0)),
-        Expect(final=jb, sync="last"),
+        Expect(final=jb, sync="last", halt_t=mid),
     )
     far = tuple(x * 10.0 if k < 3 else x for k, x in enumerate(ta))
     out["unreachable"] = _refused(
@@ -454,6 +458,8 @@ def check(
     if e.stop_t is not None:
         out += check_stop(trace, spec, e.stop_t, e.stop_until,
                           skip=e.faulted[0] if e.faulted else None)  # fmt: skip
+    if e.halt_t is not None:  # up to the halt's rest only: the re-planned move follows
+        out += check_stop(trace, spec, e.halt_t, e.halt_t + trace.cycle_s)
     out += check_short_way(trace, spec)
     if e.sync:
         segs = motion_segments(trace)
