@@ -330,6 +330,25 @@ def threads() -> int:
 
 _LOCAL = threading.local()
 
+BLOCK = 4096
+"""Targets per kernel call on large inputs: the kernel writes into per-thread scratch rows
+that stay in the L2 cache, which are then copied out row by row. Written straight into the
+caller's rows, one store stream per output (66 for a six-axis arm) far apart, the kernel ran
+at 180-580 ns per target on one thread (PUMA 560, 200,000 targets, varying with where the
+rows fall) against 120 ns in cache; through the scratch rows, 210 ns steadily (measured,
+Python's copies included)."""
+
+
+def _scratch_out(dtype, idx: int) -> np.ndarray:
+    """A per-thread scratch output row of :data:`BLOCK` values (``idx``: which output)."""
+    rows = getattr(_LOCAL, "out_rows", None)
+    if rows is None:
+        rows = _LOCAL.out_rows = {}
+    key = (idx, np.dtype(dtype).str)
+    if key not in rows:
+        rows[key] = np.empty(BLOCK, dtype=dtype)
+    return rows[key]
+
 
 def _scratch(rows: int, cols: int) -> np.ndarray:
     """A per-thread scratch buffer for the input copy, kept between calls: memory that was
@@ -395,7 +414,16 @@ class Kernel:
             else:
                 np.copyto(buf[:, :k], inputs[s:e].T)
                 bad += int(k * k_in - (np.abs(buf[:, :k]) <= lim[:, None]).sum())
-            self.fn(k, *(buf[j, :k] for j in range(k_in)), *scal, *(o[s:e] for o in outs))
+            if k <= BLOCK:
+                self.fn(k, *(buf[j, :k] for j in range(k_in)), *scal, *(o[s:e] for o in outs))
+                continue
+            scratch = [_scratch_out(o.dtype, idx) for idx, o in enumerate(outs)]
+            for b in range(0, k, BLOCK):  # through cache-resident rows (BLOCK's docstring)
+                f = min(b + BLOCK, k)
+                self.fn(f - b, *(buf[j, b:f] for j in range(k_in)), *scal,
+                        *(x[: f - b] for x in scratch))  # fmt: skip
+                for o, x in zip(outs, scratch, strict=True):
+                    o[s + b : s + f] = x[: f - b]
         return bad
 
 
