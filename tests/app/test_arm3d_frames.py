@@ -86,9 +86,16 @@ def test_segments_draw_axes_and_triads():
     assert tool.shape == (9, 3) and np.isnan(tool[2::3]).all()
     np.testing.assert_allclose(tool[0::3], np.broadcast_to(T[-1, :3, 3], (3, 3)))
     np.testing.assert_allclose((tool[1::3] - tool[0::3]) / L, T[-1, :3, :3].T, atol=1e-12)
-    axes = segments(spec["joint"], T)  # centred on the joint, along its z
-    np.testing.assert_allclose((axes[0::3] + axes[1::3]) / 2, T[:3, :3, 3], atol=1e-9)
-    np.testing.assert_allclose(axes[1] - axes[0], spec["joint"]["length"] * T[0, :3, 2])
+    axes = segments(spec["joint"], T)  # centred on the joint, along its z, + end's arrowhead
+    La, (back, side) = spec["joint"]["length"], spec["joint"]["head"]
+    start, tip = axes[0::7], axes[1::7]
+    assert axes.shape == (7 * 3, 3) and np.isnan(axes[3::7]).all() and np.isnan(axes[6::7]).all()
+    np.testing.assert_allclose((start + tip) / 2, T[:3, :3, 3], atol=1e-9)
+    np.testing.assert_allclose(tip - start, La * T[:3, :3, 2], atol=1e-9)
+    np.testing.assert_array_equal(axes[4::7], tip)
+    for barb, sign in ((axes[2::7], 1), (axes[5::7], -1)):
+        want = tip - back * La * T[:3, :3, 2] + sign * side * La * T[:3, :3, 0]
+        np.testing.assert_allclose(barb, want, atol=1e-9)
     batch = segments(spec["link"], frame_transforms(arm, np.stack([q, q])))
     np.testing.assert_array_equal(batch[1], segments(spec["link"], T))
     with pytest.raises(ValueError, match="span_mm = 0"):

@@ -390,7 +390,7 @@ def test_the_drawn_tool_frame_is_fk_json(explorer_page):
         np.testing.assert_allclose(o, doc["position_mm"], atol=1e-9, rtol=0)
         np.testing.assert_allclose(R, doc["rotation"], atol=1e-9, rtol=0)
         arm = load_arm(name)
-        n_axes = len(frames["joint"]["pts"]) // 3
+        n_axes = len(frames["joint"]["pts"]) // 7  # start, tip, barb, gap, tip, barb, gap
         assert n_axes == arm.n_joints, (name, n_axes)
         drawn[(name, q_deg[0])] = (frames, page.evaluate(_DRAWN)["arm"])
         page.locator(".static-explorer .explorer-fk").uncheck()

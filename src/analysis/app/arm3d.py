@@ -346,33 +346,41 @@ def trajectory_figure(
     T = frame_transforms(arm, q[idx])  # (k, frames, 4, 4)
     extra = [segments(spec, T) for _, spec in drawn]  # (k, m, 3) each
 
-    def xyz(p) -> dict:
-        return dict(zip("xyz", ([None if v != v else v for v in _round(p[:, c])]
-                                for c in range(3)), strict=True))  # fmt: skip
-
     labels = [f"{v:.2f}" for v in t[idx]]
-
-    def note(k: int) -> dict:  # the line under the title at sample k (plotly's text markup)
-        text = html.escape(str(notes[k]), quote=False)
-        return {"annotations": [{"text": text, "x": 0.02, "y": 1.0, "xref": "paper",
-                                 "yref": "paper", "xanchor": "left", "yanchor": "top",
-                                 "showarrow": False}]}  # fmt: skip
-
     fig.frames = [
         go.Frame(
-            data=[go.Scatter3d(**xyz(p)), *(go.Scatter3d(**xyz(e[i])) for e in extra)],
+            data=[go.Scatter3d(**_xyz(p)), *(go.Scatter3d(**_xyz(e[i])) for e in extra)],
             traces=arm_at + [k for k, _ in drawn],
             name=label,
-            layout=note(idx[i]) if notes is not None else None,
+            layout=_note(notes[idx[i]]) if notes is not None else None,
         )
         for i, (p, label) in enumerate(zip(pts, labels, strict=True))
     ]
     if notes is not None:
-        fig.update_layout(note(idx[0]))
+        fig.update_layout(_note(notes[idx[0]]))
         fig.update_layout(legend={"y": 0.9})  # below the note
+    fig.update_layout(_player(labels))
+    return fig
+
+
+def _xyz(p) -> dict:
+    """Points (m, 3) as a trace's x, y, z lists, rounded (:func:`_round`), NaN as a gap."""
+    return dict(zip("xyz", ([None if v != v else v for v in _round(p[:, c])]
+                            for c in range(3)), strict=True))  # fmt: skip
+
+
+def _note(text: str) -> dict:
+    """The layout of a line under the title (plain text, escaped for plotly's markup)."""
+    return {"annotations": [{"text": html.escape(str(text), quote=False), "x": 0.02, "y": 1.0,
+                             "xref": "paper", "yref": "paper", "xanchor": "left",
+                             "yanchor": "top", "showarrow": False}]}  # fmt: skip
+
+
+def _player(labels: list[str]) -> dict:
+    """A time slider (a step per animation frame, by its label) and play / pause buttons."""
     still = {"mode": "immediate", "frame": {"duration": 0, "redraw": True},
              "transition": {"duration": 0}}  # fmt: skip
-    fig.update_layout(
+    return dict(
         sliders=[{
             "active": 0, "currentvalue": {"prefix": "t = ", "suffix": " s"},
             "pad": {"t": 10}, "len": 0.75, "x": 0.25,
@@ -390,7 +398,6 @@ def trajectory_figure(
             ],
         }],
     )  # fmt: skip
-    return fig
 
 
 def figure_bundle(fig: go.Figure, key: str, text: str) -> dict[str, object]:

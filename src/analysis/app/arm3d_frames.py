@@ -19,8 +19,11 @@ What is drawn
 * **joint axes**: each joint's axis as a short line through its joint, along the z axis
   that the D-H convention turns or slides it about (standard D-H, ``A_i = Rz(theta_i)
   Tz(d_i) ...``: joint i acts along ``z_{i-1}`` through the origin of frame i-1; modified D-H,
-  ``A_i = Rx Tx Rz(theta_i) Tz(d_i)``: along ``z_i`` through the origin of frame i), a marker
-  on its positive end; revolute axes solid orange, prismatic ones dashed purple;
+  ``A_i = Rx Tx Rz(theta_i) Tz(d_i)``: along ``z_i`` through the origin of frame i), an
+  arrowhead of two short lines on its positive end; revolute axes solid orange, prismatic ones
+  dashed purple. Lines only: a plotly marker is a glyph mesh that took 17 ms of every redraw
+  of the explorer in software WebGL (headless Chromium, load 12: 49 against 31 ms from a
+  change to the pose on screen), lines about 1 ms;
 * **link frames**: the x, y, z axes (red, green, blue) of the base frame and of every frame
   but the last, short; in the legend, shown by a click (hidden at first: with the joint
   axes and the tool frame they crowd a small view, and a frame's x axis runs along the next
@@ -53,6 +56,9 @@ XYZ_COLOURS = ("#e8201a", "#1c9e2c", "#1a3cff")
 arm's #1f77b4 that the browser tests tell them apart)."""
 AXIS_COLOURS = {"revolute": "#ff7f0e", "prismatic": "#9b4dca"}
 """Joint axes: revolute orange, prismatic purple (dashed)."""
+HEAD = (0.16, 0.07)
+"""A joint axis' arrowhead: each barb goes back ``HEAD[0]`` and aside ``HEAD[1]`` of the
+axis' length from its tip."""
 LENGTHS = {"axis": 0.18, "link": 0.07, "tool": 0.13}
 """Lengths drawn, as fractions of the workspace box's largest span: a joint axis, a link
 frame's axes, the tool frame's axes."""
@@ -110,7 +116,7 @@ def frame_spec(arm, span_mm: float) -> list[dict]:
         frames = [i + shift for i, row in enumerate(table.rows) if row.kind == kind]
         if frames:
             spec.append({"name": f"joint axes ({kind})", "kind": "axes", "joint": kind,
-                         "frames": frames, "length": LENGTHS["axis"] * span_mm,
+                         "frames": frames, "length": LENGTHS["axis"] * span_mm, "head": list(HEAD),
                          "width": 6})  # fmt: skip
     n = len(table.rows)
     spec.append({"name": f"link frames {_LEGEND}", "kind": "triads", "frames": list(range(n)),
@@ -122,31 +128,32 @@ def frame_spec(arm, span_mm: float) -> list[dict]:
 
 def segments(spec: dict, T: npt.ArrayLike) -> npt.NDArray[np.float64]:
     """The points of one trace of :func:`frame_spec` for frames ``T`` (..., k, 4, 4), shape
-    (..., m, 3), NaN rows between segments (a gap in the line): per joint axis the points
-    ``o - L/2 z`` and ``o + L/2 z`` of its frame; per triad ``o, o + L x``, ``o, o + L y``,
-    ``o, o + L z``. ``js/arm3d_view.js``'s ``segments`` computes the same."""
+    (..., m, 3), NaN rows between segments (a gap in the line): per joint axis ``o - L/2 z``,
+    the tip ``o + L/2 z`` and the arrowhead's barbs ``tip - HEAD[0] L z +- HEAD[1] L x`` (its
+    frame's x and z), as ``start, tip, barb+, gap, tip, barb-, gap``; per triad ``o, o + L x,
+    gap, o, o + L y, gap, o, o + L z, gap``. ``js/arm3d_view.js``'s ``segments`` computes the
+    same."""
     T = np.asarray(T, dtype=float)[..., spec["frames"], :, :]  # (..., f, 4, 4)
     o, L = T[..., :3, 3], float(spec["length"])
     gap = np.full(o.shape, np.nan)
     if spec["kind"] == "axes":
-        z = T[..., :3, 2]
-        pts = np.stack([o - 0.5 * L * z, o + 0.5 * L * z, gap], axis=-2)  # (..., f, 3, 3)
+        x, z = T[..., :3, 0], T[..., :3, 2]
+        tip, back, side = o + 0.5 * L * z, HEAD[0] * L * z, HEAD[1] * L * x
+        pts = np.stack(
+            [o - 0.5 * L * z, tip, tip - back + side, gap, tip, tip - back - side, gap], axis=-2
+        )  # (..., f, 7, 3) fmt: skip
     else:
         ends = [o + L * T[..., :3, k] for k in range(3)]
         pts = np.stack([p for e in ends for p in (o, e, gap)], axis=-2)  # (..., f, 9, 3)
     return pts.reshape(*pts.shape[:-3], -1, 3)
 
 
-def _colours(spec: dict) -> dict:
-    """Per-point line and marker colours and marker sizes of a trace (the gap points
-    included): a joint axis one colour, its marker on the positive end; a triad red, green,
-    blue by axis."""
-    f = len(spec["frames"])
+def _colours(spec: dict) -> str | list[str]:
+    """The line colour of a trace: a joint axis one colour; a triad red, green, blue by axis,
+    per point (the gap points included)."""
     if spec["kind"] == "axes":
-        c = AXIS_COLOURS[spec["joint"]]
-        return {"line": c, "marker": c, "size": [0, 6, 0] * f}
-    per = [c for c in XYZ_COLOURS for _ in range(3)] * f
-    return {"line": per, "marker": per, "size": 0}
+        return AXIS_COLOURS[spec["joint"]]
+    return [c for c in XYZ_COLOURS for _ in range(3)] * len(spec["frames"])
 
 
 def frame_traces(spec: list[dict], T: npt.ArrayLike | None, rounding) -> list:
@@ -163,10 +170,9 @@ def frame_traces(spec: list[dict], T: npt.ArrayLike | None, rounding) -> list:
         out.append(
             go.Scatter3d(
                 x=xyz[0], y=xyz[1], z=xyz[2], name=s["name"], meta={"arm3d": s},
-                mode="lines+markers" if s["kind"] == "axes" else "lines",
-                line={"color": style["line"], "width": s["width"],
+                mode="lines",
+                line={"color": style, "width": s["width"],
                       "dash": "dash" if s.get("joint") == "prismatic" else "solid"},
-                marker={"color": style["marker"], "size": style["size"], "symbol": "diamond"},
                 connectgaps=False, hoverinfo="skip", visible=s.get("visible", True),
             )
         )  # fmt: skip

@@ -42,9 +42,10 @@ MAX_TRACE_ROWS = MAX_CYCLES + 1
 MAX_TRACE_BYTES = 256 << 20
 """The largest trace file read [bytes] (a run of MAX_TRACE_ROWS cycles of a six-axis arm
 with its outputs is about 200 MB)."""
-SHOWN = ("Status", "Busy", "Done", "Homed", "Error", "Gripper", "GripperClosed")
+SHOWN = ("Status", "Busy", "Done", "Homed", "Error", "Gripper")
 """The outputs shown under the title at each frame, in this order, where the trace has them
-(the machine program's outputs: :data:`analysis.plc.machine.spec.MACHINE_OUTPUTS`)."""
+(the machine program's outputs, :data:`analysis.plc.machine.spec.MACHINE_OUTPUTS`, but
+GripperClosed, the gripper's state after its dwell: with it the line overran a 560 px view)."""
 _WORDS = {"TRUE": True, "FALSE": False}
 
 

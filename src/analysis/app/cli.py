@@ -26,6 +26,7 @@ from collections.abc import Sequence
 from analysis.app.cli_audit import add_errata, add_report
 from analysis.app.cli_common import PROG, HelpFormatter, Parser, to_json
 from analysis.app.cli_kin import add_arms, add_fk, add_ik
+from analysis.app.cli_play import add_play
 from analysis.app.cli_plc import add_stl, add_stl_run
 from analysis.app.cli_urdf import add_urdf
 
@@ -65,6 +66,7 @@ def build_parser() -> argparse.ArgumentParser:
     add_arms(sub)
     add_report(sub)
     add_urdf(sub, HelpFormatter)  # analysis.app.cli_urdf
+    add_play(sub, HelpFormatter)  # analysis.app.cli_play
     return parser
 
 

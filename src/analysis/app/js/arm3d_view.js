@@ -241,8 +241,9 @@
 
   /** The points of one joint-axes or frames trace (its `meta.arm3d`, written by
    * analysis.app.arm3d_frames.frame_spec) for the frames `T` (3x4 blocks [R | o], base first):
-   * {x, y, z}, null between segments. As arm3d_frames.segments: per joint axis o -/+ L/2 z;
-   * per triad o -> o + L x, o -> o + L y, o -> o + L z. No frames: empty. */
+   * {x, y, z}, null between segments. As arm3d_frames.segments: per joint axis o -/+ L/2 z
+   * and an arrowhead at its + end; per triad o -> o + L x, o -> o + L y, o -> o + L z. No
+   * frames: empty. */
   function segments(spec, T) {
     const x = [], y = [], z = [];
     const put = (p) => { x.push(p[0]); y.push(p[1]); z.push(p[2]); };
@@ -253,8 +254,10 @@
       const M = T[f];
       const o = [M[0][3], M[1][3], M[2][3]];
       const along = (k, s) => [0, 1, 2].map((r) => o[r] + s * M[r][k]);
-      if (spec.kind === "axes") {
-        put(along(2, -0.5 * L)); put(along(2, 0.5 * L)); put(gap);
+      if (spec.kind === "axes") { // start, tip, barb, gap, tip, barb, gap (arm3d_frames.HEAD)
+        const tip = along(2, 0.5 * L);
+        const barb = (s) => [0, 1, 2].map((r) => tip[r] - spec.head[0] * L * M[r][2] + s * spec.head[1] * L * M[r][0]);
+        put(along(2, -0.5 * L)); put(tip); put(barb(1)); put(gap); put(tip); put(barb(-1)); put(gap);
       } else {
         for (let k = 0; k < 3; k++) { put(o); put(along(k, L)); put(gap); }
       }
@@ -304,7 +307,7 @@
       // the joint axes, link frames and tool frame (traces with meta.arm3d: arm3d_frames), and
       // their own colours (put back after a greyed pose)
       this.frameTraces = fig.data.map((t, i) => [i, t]).filter(([, t]) => t.meta && t.meta.arm3d)
-        .map(([i, t]) => ({i, spec: t.meta.arm3d, colours: {line: t.line.color, marker: t.marker.color}}));
+        .map(([i, t]) => ({i, spec: t.meta.arm3d, colours: {line: t.line.color, marker: t.line.color}}));
       const armTrace = fig.data[this.arm] || {};
       this.colours = {
         line: (armTrace.line && armTrace.line.color) || "#1f77b4",
