@@ -50,7 +50,7 @@ def eaik_agreement(n_arms: int = 20, n_q: int = 50, seed: int = 2026) -> dict:
         for fam in FAMILIES:
             for conv in ("standard", "modified"):
                 for k in range(n_arms):
-                    path = Path(folder) / f"{fam}-{conv}-{k}.toml"
+                    path = Path(folder) / f"a{fam[0]}{conv[0]}{k}.toml"  # an identifier
                     path.write_text(random_arm(rng, fam, conv, path.stem), encoding="utf-8")
                     cases.append((f"{fam} {conv}", load_arm(str(path))))
         for key, arm in cases:
