@@ -210,3 +210,26 @@ def test_dash_is_stdio_for_every_output_option_or_refused(capsys, tmp_path, monk
     code, _, err = run(capsys, "report", "--out", "-")
     assert code == 2 and "--out -" in err
     assert not (tmp_path / "-").exists()
+
+
+@pytest.mark.parametrize("scenario", [False, True])
+def test_stl_run_without_the_engine_is_one_line(capsys, tmp_path, monkeypatch, scenario):
+    """The ST engine not built (or built from other sources) is said in one line naming
+    ``make st-engine``, exit 2: not a traceback (a fresh clone before ``make st-engine``)."""
+    from analysis.plc import st_engine
+
+    for env in (st_engine.ENGINE_ENV, st_engine.MACHINE_ENGINE_ENV):
+        monkeypatch.setenv(env, str(tmp_path / "not-built"))
+    prog, mp = tmp_path / "g.st", tmp_path / "g.json"
+    assert run(capsys, "stl", "--dialect", "st", "-o", str(prog), "--map", str(mp))[0] == 0
+    argv = ["stl-run", str(prog), "--dialect", "st", "--map", str(mp)]
+    if scenario:
+        sc = tmp_path / "s.csv"
+        sc.write_text("t_s,name,value\n0,Enable,TRUE\n", encoding="utf-8")
+        argv += ["--scenario", str(sc), "--trace", str(tmp_path / "t.csv")]
+    else:
+        argv += ["--set", "Enable=TRUE", "--read", "Homed"]
+    code, out, err = run(capsys, *argv)
+    assert code == 2 and out == ""
+    assert err.count("\n") == 1 and "not-built" in err and "make st-engine" in err, err
+    assert not (tmp_path / "t.csv").exists()

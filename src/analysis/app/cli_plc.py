@@ -165,7 +165,12 @@ def _decode(raw: bytes, path: str) -> str:
 
 def _cmd_stl_run(args: argparse.Namespace) -> int:
     if args.dialect in ("st", "plcopen-xml"):
-        return _cmd_stl_run_st(args)
+        from analysis.plc.st_engine import EngineMissing
+
+        try:
+            return _cmd_stl_run_st(args)
+        except EngineMissing as exc:  # not built, or built from other sources: one line
+            raise ValueError(str(exc)) from None
     for opt in ("scenario", "trace", "map", "program_name", "start"):
         if getattr(args, opt) is not None:
             raise ValueError(f"--{opt.replace('_name', '')} applies to --dialect st and "

@@ -226,8 +226,7 @@ class _Table:
                     name,
                 )
             where[name] = index
-        written = list(names)
-        self.written: dict[str, str] = {}  # column -> its alias, as the header wrote it
+        written, self.written = list(names), {}  # .written: column -> alias, as written
         for canon, others in self.aliases.items():  # x -> x_mm where x_mm is not there
             given = [a for a in others if a in where]
             if canon not in where and len(given) == 1:

@@ -12,13 +12,13 @@ the stop comes while the axis accelerates, the acceleration must first ramp down
 Measured on the ST engine (pyplcopen 0.21.0 with the project's patch, 4 ms, every axis
 moving at the stop of the ``stop`` scenario, which comes at cruise; :func:`stop_distances`,
 the figures held by ``tests/plc/machine/test_stop_bounds.py``): the rest distance is 1.36 to
-3.06 times the issue's bound on the grabber, 1.39 to 2.30 on the palletizer, 1.38 to 4.30 on
-the picker, 1.38 to 2.29 on the GR-1, and 0.87 to 0.992 times the jerk-limited bound
+3.02 times the issue's bound on the grabber, 1.38 to 2.30 on the palletizer, 1.38 to 4.30 on
+the picker, 1.38 to 2.29 on the GR-1, and 0.87 to 0.99 times the jerk-limited bound
 (:func:`.profile.stop_distance` from the velocity and acceleration at the stop, with the
 joint's deceleration and jerk limits, plus one cycle at that velocity). The jerk-limited
 bound is the assertion; the issue's would fail on every arm however well the program
 stopped. A bare MC_Stop from a cruise at 90 deg/s (360 deg/s^2, 3600 deg/s^3) comes to rest
-at 15.84 deg at 4 ms and 15.75 at 1 ms, the continuous braking distance v^2/2a + v a/2j
+at 15.762 deg at 4 ms and 15.75 at 1 ms, the continuous braking distance v^2/2a + v a/2j
 being 15.75 deg; the issue's bound is 11.61 deg.
 
 No overrun (:func:`check_stop`: no step back on the way to rest). pyplcopen 0.21.0's MC_Stop
@@ -29,7 +29,8 @@ and comes back: 0.04% to 3.7% of the braking distance on the machines (0.71% on 
 cruise above 0.09 deg at 4 ms, 1.5% and 3.6% with a 10 or 100 times larger jerk. A reversal
 at the end of a stop is a defect on a real arm, so the engine is built with a patch
 (``tools/st-engine/pyplcopen-0.21.0-motion.patch``, applied by ``make st-engine``) that
-brakes on a whole-cycle jerk-limited velocity ramp to rest: the rest is where the ramp ends,
+brakes on a whole-cycle jerk-limited velocity ramp to rest (of those ramps, the one that
+travels least): the rest is where the ramp ends,
 within the bound, and no axis moves back. The same patch ramps velocity commands, which the
 homing searches use (unpatched, a search started at its velocity in one cycle: 31 times the
 acceleration limit, 1562 times the jerk limit), so :func:`check_limits` holds acceleration
