@@ -339,6 +339,12 @@ rows fall) against 120 ns in cache; through the scratch rows, 210 ns steadily (m
 Python's copies included)."""
 
 
+BLOCK_OUTPUTS = 32
+"""Kernels with more outputs than this go through the scratch rows (:data:`BLOCK`); fewer
+streams are written straight (the grabber's 22: 79 M targets/s straight, 34 M through the
+scratch rows, whose copies then cost more than they save; measured)."""
+
+
 def _scratch_out(dtype, idx: int) -> np.ndarray:
     """A per-thread scratch output row of :data:`BLOCK` values (``idx``: which output)."""
     rows = getattr(_LOCAL, "out_rows", None)
@@ -414,7 +420,7 @@ class Kernel:
             else:
                 np.copyto(buf[:, :k], inputs[s:e].T)
                 bad += int(k * k_in - (np.abs(buf[:, :k]) <= lim[:, None]).sum())
-            if k <= BLOCK:
+            if k <= BLOCK or len(outs) <= BLOCK_OUTPUTS:
                 self.fn(k, *(buf[j, :k] for j in range(k_in)), *scal, *(o[s:e] for o in outs))
                 continue
             scratch = [_scratch_out(o.dtype, idx) for idx, o in enumerate(outs)]
