@@ -162,11 +162,19 @@ def test_a_dh_table_alone_answers_every_command_but_pulses(pair, capsys, tmp_pat
     rows = [*targets.tolist(), [9e5] * targets.shape[1]]  # and one out of reach
     src.write_text(",".join(input_columns(arm)) + "\n" + "".join(
         ",".join(map(repr, r)) + "\n" for r in rows))  # fmt: skip
-    tables = []
+    tables, said = [], []
     for p, out in ((drive, tmp_path / "d.csv"), (bare, tmp_path / "b.csv")):
-        assert run(capsys, "ik", "--input", src, "--output", out, "--arm", p, "--branch",
-                   "all")[0] == 0  # fmt: skip
+        code, doc, _ = run(capsys, "ik", "--input", src, "--output", out, "--arm", p,
+                           "--branch", "all", "--json")  # fmt: skip
+        assert code == 0
+        said.append(json.loads(doc))
         tables.append(list(csv.DictReader(io.StringIO(out.read_text()))))
+    # the summary says whether pulse columns were written, and is otherwise the same
+    assert said[0].pop("pulses") is True and said[1].pop("pulses") is False
+    assert {k: v for k, v in said[0].items() if k not in ("output", "arm")} == {
+        k: v for k, v in said[1].items() if k not in ("output", "arm")}
+    err = run(capsys, "ik", "--input", src, "--output", tmp_path / "t.csv", "--arm", bare)[2]
+    assert err.rstrip().endswith("(no drive given: no pulse columns)"), err
     pulses = [f"c{j + 1}" for j in range(arm.n_joints)]
     assert set(pulses) <= set(tables[0][0]) and not set(pulses) & set(tables[1][0])
     assert [{k: v for k, v in r.items() if k not in pulses} for r in tables[0]] == tables[1]

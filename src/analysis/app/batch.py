@@ -235,6 +235,7 @@ def solve_csv(
         "targets": total,
         "solved": solved,
         "status": {k: counts.get(k, 0) for k in STATUS_TEXT.values() if counts.get(k, 0)},
+        "pulses": arm.has_drive,  # False: no drive given, no c1..cn columns written
     }
 
 

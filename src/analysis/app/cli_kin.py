@@ -109,6 +109,7 @@ def cmd_ik(args: argparse.Namespace) -> int:
             f"{summary['targets']} targets, {summary['solved']} solved"
             + "".join(f", {n} {s}" for s, n in summary["status"].items() if s != "ok")
             + f" -> {summary['output']}"
+            + ("" if summary["pulses"] else " (no drive given: no pulse columns)")
         )
         if args.json:
             print(to_json(summary))
