@@ -118,13 +118,14 @@ def read_trace(path, arm) -> Trace:
         raise InputError("the trace is not a regular file", path)
     if st.st_size > MAX_TRACE_BYTES:
         raise InputError(f"the trace has {st.st_size} bytes: at most {MAX_TRACE_BYTES}", path)
-    head = list(read_table(path, allow_extra=True))  # every column as text
     n = arm.n_joints
-    _joint_columns(head, n, where)
     joints = ["t_s", *(f"q{j}" for j in range(1, n + 1)), *(f"v{j}" for j in range(1, n + 1))]
     plc = [PLC_COLUMN.format(j) for j in range(1, n + 1)]  # what the PLC reads (stl-run)
+    # one read: the arm's columns as numbers where the header has them, the rest as text
+    cols = read_table(path, optional=joints + plc, numeric=joints + plc, allow_extra=True)
+    head = list(cols)
+    _joint_columns(head, n, where)
     plc = plc if all(h in head for h in plc) else []
-    cols = read_table(path, required=joints + plc, numeric=joints + plc, allow_extra=True)
     rows = len(cols["t_s"])
     if not 2 <= rows <= MAX_TRACE_ROWS:
         raise ValueError(f"{where}: {rows} rows; a run to play has 2 .. {MAX_TRACE_ROWS}")
